@@ -1,0 +1,44 @@
+#include "dem/load_cell.hpp"
+
+#include <Eigen/Geometry>
+#include <btBulletDynamicsCommon.h>
+
+namespace icedem {
+namespace {
+Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+}  // namespace
+
+void LoadCell::accumulate(const btDispatcher& dispatcher, const btRigidBody* structure,
+                          const Eigen::Vector3d& reference) {
+  contacts_ = 0;
+  const int n = dispatcher.getNumManifolds();
+  for (int i = 0; i < n; ++i) {
+    const btPersistentManifold* m = const_cast<btDispatcher&>(dispatcher).getManifoldByIndexInternal(i);
+    const bool is_body0 = m->getBody0() == structure;
+    if (!is_body0 && m->getBody1() != structure) continue;
+    // impulses act on body 0; the structure feels the opposite when it is body 1
+    const double sign = is_body0 ? 1.0 : -1.0;
+    for (int k = 0; k < m->getNumContacts(); ++k) {
+      const btManifoldPoint& p = m->getContactPoint(k);
+      const btVector3 j = p.m_normalWorldOnB * p.m_appliedImpulse +
+                          p.m_lateralFrictionDir1 * p.m_appliedImpulseLateral1 +
+                          p.m_lateralFrictionDir2 * p.m_appliedImpulseLateral2;
+      if (j.isZero()) continue;
+      const Eigen::Vector3d impulse = sign * to_eigen(j);
+      const Eigen::Vector3d at = to_eigen(is_body0 ? p.getPositionWorldOnA() : p.getPositionWorldOnB());
+      impulse_ += impulse;
+      angular_impulse_ += (at - reference).cross(impulse);
+      ++contacts_;
+    }
+  }
+}
+
+LoadReading LoadCell::finish(double dt) {
+  LoadReading r{impulse_ / dt, angular_impulse_ / dt, contacts_};
+  impulse_.setZero();
+  angular_impulse_.setZero();
+  contacts_ = 0;
+  return r;
+}
+
+}  // namespace icedem

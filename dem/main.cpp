@@ -1,1 +1,116 @@
-int main() { return 0; }
+// The `icedem` command (DESIGN.md, "Interfaces other tools rely on"):
+//   icedem run SCENARIO.toml [-o OUT.h5] [--set key.path=value ...] [--summary-json FILE]
+//   icedem check SCENARIO.toml [--set ...]     validate only
+//   icedem keys                                 every scenario key (markdown)
+//   icedem stl SCENARIO.toml -o hull.stl        the structure's surface
+// Exit codes: 0 success, 2 bad input, 3 numerical failure, 130 interrupted, 1 other.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "dem/cone_geometry.hpp"
+#include "dem/errors.hpp"
+#include "dem/initial_state.hpp"
+#include "dem/scenario.hpp"
+#include "dem/simulation.hpp"
+
+using namespace icedem;
+
+namespace {
+
+std::string joined_command_line(int argc, char** argv) {
+  std::string s;
+  for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
+  return s;
+}
+
+void write_json(const std::string& path, const nlohmann::json& j) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(fmt::format("{}: cannot write the summary JSON", path));
+  out << j.dump(2) << "\n";
+}
+
+int run_command(const std::string& scenario_path, std::string output, const std::vector<std::string>& sets,
+                const std::string& summary_path, bool quiet, const std::string& command_line) {
+  const Scene scene = load_scene(scenario_path, sets);
+  if (output.empty()) output = std::filesystem::path(scenario_path).stem().string() + ".h5";
+  RunOptions options{output, !quiet, command_line};
+  const RunSummary summary = run_simulation(scene, options);
+  std::cout << summary_table(summary) << std::flush;
+  if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
+  return summary.status == "interrupted" ? kExitInterrupted : kExitOk;
+}
+
+int check_command(const std::string& scenario_path, const std::vector<std::string>& sets) {
+  const Scene scene = load_scene(scenario_path, sets);
+  const Layout layout = scene_layout(scene);  // also validates layout files and concentration
+  std::cout << fmt::format("{}: ok ({} floes, concentration {:.2f} %, {:.0f} s at dt {} s)\n", scenario_path,
+                           layout.floes.size(), 100 * layout.achieved_concentration, scene.time.duration,
+                           scene.time.dt);
+  return kExitOk;
+}
+
+int stl_command(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& output) {
+  const Scene scene = load_scene(scenario_path, sets);
+  const TriangleMesh mesh = hull_surface(scene.structure.profile, scene.structure.segments);
+  write_stl(mesh, output, "structure");
+  std::cout << fmt::format("{}: {} triangles, enclosed volume {:.6f} m^3 (structure frame: axis = y, "
+                           "waterline y = 0)\n", output, mesh.triangles.size(), mesh_volume(mesh));
+  return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"icedem: a conical structure towed through managed ice floes (non-smooth DEM on Bullet)"};
+  app.require_subcommand(1);
+  std::string scenario, output, summary_path;
+  std::vector<std::string> sets;
+  bool quiet = false;
+
+  CLI::App* run = app.add_subcommand("run", "simulate a scenario and write the HDF5 results");
+  run->add_option("scenario", scenario, "scenario TOML file")->required();
+  run->add_option("-o,--output", output, "HDF5 output file (default: <scenario name>.h5)");
+  run->add_option("--set", sets, "override a scenario key, e.g. --set friction.ice_ice=0.3")->take_all();
+  run->add_option("--summary-json", summary_path, "write the run summary as JSON to this file");
+  run->add_flag("-q,--quiet", quiet, "no progress line");
+
+  CLI::App* check = app.add_subcommand("check", "validate a scenario (and its floe layout) only");
+  check->add_option("scenario", scenario, "scenario TOML file")->required();
+  check->add_option("--set", sets, "override a scenario key")->take_all();
+
+  app.add_subcommand("keys", "print every scenario key with unit, default, range and meaning");
+
+  CLI::App* stl = app.add_subcommand("stl", "write the structure's surface as an ASCII STL");
+  stl->add_option("scenario", scenario, "scenario TOML file")->required();
+  stl->add_option("--set", sets, "override a scenario key")->take_all();
+  stl->add_option("-o,--output", output, "STL file")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+
+  try {
+    if (*run) return run_command(scenario, output, sets, summary_path, quiet, joined_command_line(argc, argv));
+    if (*check) return check_command(scenario, sets);
+    if (*stl) return stl_command(scenario, sets, output);
+    std::cout << keys_markdown();
+    return kExitOk;
+  } catch (const InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const NumericalError& e) {
+    std::cerr << "\nerror: " << e.what() << "\n(the output file keeps every step before the failure, "
+              << "marked status = failed)\n";
+    return kExitNumerical;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitRuntime;
+  }
+}

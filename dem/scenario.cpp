@@ -1,0 +1,344 @@
+#include "dem/scenario.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "dem/constants.hpp"
+#include "dem/errors.hpp"
+
+namespace icedem {
+namespace {
+
+namespace fs = std::filesystem;
+
+// "file:line" for a TOML node
+std::string origin_of(const std::string& file, const toml::node& node) {
+  return fmt::format("{}:{}", file, node.source().begin.line);
+}
+
+// short text of a TOML node as the user wrote it, for messages
+std::string show(const toml::node& node) {
+  std::ostringstream s;
+  if (auto* str = node.as_string())
+    s << '"' << str->get() << '"';
+  else if (node.is_table())
+    s << "a table";
+  else
+    node.visit([&](auto&& n) { s << n; });
+  return s.str();
+}
+
+std::optional<double> number(const toml::node& n) {
+  if (auto* f = n.as_floating_point()) return f->get();
+  if (auto* i = n.as_integer()) return static_cast<double>(i->get());
+  return std::nullopt;
+}
+
+bool in_range(const KeySpec& s, double v) {
+  if (!std::isfinite(v)) return false;
+  if (s.min_exclusive ? !(v > s.min) : !(v >= s.min)) return false;
+  return v <= s.max;
+}
+
+// Convert one TOML node to the key's type; nullopt if the type or range is wrong.
+std::optional<KeyValue> convert(const KeySpec& s, const toml::node& n) {
+  switch (s.type) {
+    case KeyType::kReal: {
+      auto v = number(n);
+      if (!v || !in_range(s, *v)) return std::nullopt;
+      return KeyValue{*v};
+    }
+    case KeyType::kInteger: {
+      auto* i = n.as_integer();
+      if (!i || !in_range(s, static_cast<double>(i->get()))) return std::nullopt;
+      return KeyValue{static_cast<std::int64_t>(i->get())};
+    }
+    case KeyType::kBoolean: {
+      auto* b = n.as_boolean();
+      if (!b) return std::nullopt;
+      return KeyValue{b->get()};
+    }
+    case KeyType::kString: {
+      auto* str = n.as_string();
+      if (!str) return std::nullopt;
+      return KeyValue{str->get()};
+    }
+    case KeyType::kChoice: {
+      auto* str = n.as_string();
+      if (!str) return std::nullopt;
+      for (const auto& c : s.choices)
+        if (c == str->get()) return KeyValue{c};
+      return std::nullopt;
+    }
+    case KeyType::kVector3: {
+      auto* a = n.as_array();
+      if (!a || a->size() != 3) return std::nullopt;
+      Vector3Value v{};
+      for (std::size_t i = 0; i < 3; ++i) {
+        auto x = number(*a->get(i));
+        if (!x || !in_range(s, *x)) return std::nullopt;
+        v[i] = *x;
+      }
+      return KeyValue{v};
+    }
+    case KeyType::kPairList: {
+      auto* a = n.as_array();
+      if (!a || a->size() < 2) return std::nullopt;
+      PairList list;
+      for (std::size_t i = 0; i < a->size(); ++i) {
+        auto* pair = a->get(i)->as_array();
+        if (!pair || pair->size() != 2) return std::nullopt;
+        auto p0 = number(*pair->get(0)), p1 = number(*pair->get(1));
+        if (!p0 || !p1 || !in_range(s, *p0) || !in_range(s, *p1)) return std::nullopt;
+        list.push_back({*p0, *p1});
+      }
+      return KeyValue{list};
+    }
+  }
+  return std::nullopt;
+}
+
+std::string unknown_key_message(const std::string& where, const std::string& path, bool section) {
+  std::string msg = fmt::format("{}: unknown {} '{}'", where, section ? "section" : "key", path);
+  const std::string hint = nearest_key(path);
+  if (!hint.empty()) msg += fmt::format(" (did you mean '{}'?)", hint);
+  msg += "; `icedem keys` lists every key";
+  return msg;
+}
+
+// Set one key from a TOML node, or throw naming where it came from.
+void assign(Scenario& sc, const std::string& path, const toml::node& node, const std::string& where) {
+  const KeySpec* spec = find_key(path);
+  if (!spec) throw InputError(unknown_key_message(where, path, false));
+  auto value = convert(*spec, node);
+  if (!value)
+    throw InputError(fmt::format("{}: {} = {}: expected {}", where, path, show(node),
+                                 describe_expected(*spec)));
+  sc.keys[path] = ResolvedKey{*value, where};
+}
+
+// Walk a parsed table, flattening it to dotted paths.
+void walk(Scenario& sc, const toml::table& table, const std::string& prefix, const std::string& file) {
+  for (auto&& [key, node] : table) {
+    const std::string path = prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
+    if (const toml::table* sub = node.as_table()) {
+      if (find_key(path)) {
+        // a key was given as a table: a type error, reported by assign()
+        assign(sc, path, node, origin_of(file, node));
+      }
+      if (!is_section(path)) throw InputError(unknown_key_message(origin_of(file, node), path, true));
+      walk(sc, *sub, path, file);
+    } else {
+      assign(sc, path, node, origin_of(file, node));
+    }
+  }
+}
+
+void apply_override(Scenario& sc, const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(fmt::format("--set {}: expected key.path=value", text));
+  std::string path = text.substr(0, eq), raw = text.substr(eq + 1);
+  auto trim = [](std::string& s) {
+    s.erase(0, s.find_first_not_of(" \t"));
+    s.erase(s.find_last_not_of(" \t") + 1);
+  };
+  trim(path);
+  trim(raw);
+  const std::string where = "--set " + path + "=" + raw;
+  const KeySpec* spec = find_key(path);
+  if (!spec) throw InputError(unknown_key_message(where, path, is_section(path)));
+  // parse the value as TOML; a bare word is taken as a string for text keys
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + raw);
+  } catch (const toml::parse_error&) {
+    if (spec->type != KeyType::kString && spec->type != KeyType::kChoice)
+      throw InputError(fmt::format("{}: '{}' is not a valid value; expected {}", where, raw,
+                                   describe_expected(*spec)));
+    parsed = toml::table{{"v", raw}};
+  }
+  assign(sc, path, *parsed.get("v"), where);
+}
+
+template <typename T>
+const T& get(const Scenario& sc, const std::string& path) {
+  return std::get<T>(sc.keys.at(path).value);
+}
+double real(const Scenario& sc, const std::string& path) { return get<double>(sc, path); }
+int integer(const Scenario& sc, const std::string& path) {
+  return static_cast<int>(get<std::int64_t>(sc, path));
+}
+
+[[noreturn]] void fail(const Scenario& sc, const std::string& path, const std::string& problem) {
+  const ResolvedKey& k = sc.keys.at(path);
+  throw InputError(fmt::format("{}: {} = {}: {}", k.origin, path, format_value(k.value), problem));
+}
+
+}  // namespace
+
+std::string Scenario::resolved_text() const {
+  std::ostringstream out;
+  out << "# resolved scenario: every key, with defaults filled in\n";
+  std::string section;
+  for (const KeySpec& spec : scenario_keys()) {
+    const auto dot = spec.path.find('.');
+    const std::string sec = dot == std::string::npos ? "" : spec.path.substr(0, dot);
+    const std::string name = dot == std::string::npos ? spec.path : spec.path.substr(dot + 1);
+    if (sec != section) {
+      out << "\n[" << sec << "]\n";
+      section = sec;
+    }
+    out << name << " = " << format_value(keys.at(spec.path).value);
+    if (!spec.unit.empty() && spec.unit != "-") out << "  # " << spec.unit;
+    out << "\n";
+  }
+  return out.str();
+}
+
+Scenario parse_scenario(const std::string& toml_text, const std::string& display_name,
+                        const std::string& base_dir, const std::vector<std::string>& overrides) {
+  Scenario sc;
+  sc.path = display_name;
+  sc.base_dir = base_dir;
+  for (const KeySpec& spec : scenario_keys()) sc.keys[spec.path] = ResolvedKey{spec.default_value, "default"};
+
+  toml::table table;
+  try {
+    table = toml::parse(toml_text, display_name);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}: TOML syntax error: {}", display_name, e.source().begin.line,
+                                 e.description()));
+  }
+  walk(sc, table, "", display_name);
+  for (const std::string& o : overrides) apply_override(sc, o);
+  return sc;
+}
+
+Scenario read_scenario(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot open scenario file", path));
+  std::stringstream text;
+  text << in.rdbuf();
+  const fs::path parent = fs::absolute(fs::path(path)).parent_path();
+  return parse_scenario(text.str(), path, parent.string(), overrides);
+}
+
+Scene make_scene(const Scenario& sc) {
+  Scene s;
+  s.source_path = sc.path;
+  s.resolved_text = sc.resolved_text();
+  s.seed = static_cast<std::uint64_t>(get<std::int64_t>(sc, "seed"));
+
+  s.time = {real(sc, "time.dt"), real(sc, "time.duration"), integer(sc, "time.substeps")};
+  if (s.time.duration < s.time.dt) fail(sc, "time.duration", "must be at least one time step (time.dt)");
+
+  s.solver = {integer(sc, "solver.iterations"), get<bool>(sc, "solver.split_impulse"),
+              real(sc, "solver.contact_erp")};
+
+  // structure profile: y strictly increasing, radii >= 0, some radius > 0
+  s.structure.speed = real(sc, "structure.speed");
+  s.structure.start_x = real(sc, "structure.start_x");
+  s.structure.start_z = real(sc, "structure.start_z");
+  s.structure.segments = integer(sc, "structure.segments");
+  const PairList& profile = get<PairList>(sc, "structure.profile");
+  bool any_radius = false;
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    if (profile[i][1] < 0) fail(sc, "structure.profile", fmt::format("station {} has a negative radius", i + 1));
+    if (i > 0 && !(profile[i][0] > profile[i - 1][0]))
+      fail(sc, "structure.profile",
+           fmt::format("station heights must increase from keel to deck (station {} is not above "
+                       "station {})", i + 1, i));
+    any_radius = any_radius || profile[i][1] > 0;
+    s.structure.profile.push_back({profile[i][0], profile[i][1]});
+  }
+  if (!any_radius) fail(sc, "structure.profile", "at least one station needs a radius > 0");
+
+  s.channel = {real(sc, "channel.start_x"), real(sc, "channel.length"), real(sc, "channel.width"),
+               get<bool>(sc, "channel.end_wall"), real(sc, "tank.width"), real(sc, "tank.depth")};
+  if (s.channel.width > s.channel.tank_width)
+    fail(sc, "channel.width", fmt::format("wider than the tank (tank.width = {} m)", s.channel.tank_width));
+
+  s.ice = {real(sc, "ice.floe_size"),        real(sc, "ice.thickness"),
+           real(sc, "ice.concentration"),    real(sc, "ice.density"),
+           real(sc, "ice.elastic_modulus"),  real(sc, "ice.bending_strength"),
+           real(sc, "ice.compressive_strength"), real(sc, "ice.shear_strength"),
+           real(sc, "ice.poisson_ratio")};
+  s.water = {real(sc, "water.density"),          real(sc, "water.gravity"),
+             real(sc, "water.drag_coefficient"), real(sc, "water.skin_friction_coefficient"),
+             real(sc, "water.heave_damping_ratio"), real(sc, "water.roll_pitch_damping_ratio")};
+  if (s.ice.density >= s.water.density)
+    fail(sc, "ice.density", fmt::format("ice must be lighter than water (water.density = {} kg/m^3)",
+                                        s.water.density));
+  if (s.ice.floe_size >= s.channel.width)
+    fail(sc, "ice.floe_size", fmt::format("floes must be smaller than the channel (channel.width = {} m)",
+                                          s.channel.width));
+
+  // layout file paths are relative to the scenario file
+  std::string file = get<std::string>(sc, "layout.file");
+  if (!file.empty()) {
+    fs::path p(file);
+    if (p.is_relative()) p = fs::path(sc.base_dir) / p;
+    if (!fs::exists(p)) fail(sc, "layout.file", fmt::format("no such file ({})", p.string()));
+    file = p.string();
+  }
+  s.layout = {file, real(sc, "layout.max_yaw_deg") * kPi / 180.0, integer(sc, "layout.sweeps"),
+              real(sc, "layout.min_gap")};
+
+  s.friction = {real(sc, "friction.ice_ice"), real(sc, "friction.ice_structure")};
+
+  const std::string& flow = get<std::string>(sc, "flow.model");
+  s.flow.model = flow == "still"     ? FlowModel::kStill
+                 : flow == "uniform" ? FlowModel::kUniform
+                 : flow == "coupled" ? FlowModel::kCoupled
+                                     : FlowModel::kPotential;
+  const Vector3Value& u = get<Vector3Value>(sc, "flow.velocity");
+  s.flow.velocity = Eigen::Vector3d(u[0], u[1], u[2]);
+  if (s.flow.model == FlowModel::kCoupled)
+    fail(sc, "flow.model",
+         "the OpenFOAM coupling is not part of this build yet; use \"still\", \"uniform\" or \"potential\"");
+
+  const std::string& fracture = get<std::string>(sc, "fracture.mode");
+  s.fracture = {fracture == "on" ? FractureMode::kOn : fracture == "auto" ? FractureMode::kAuto
+                                                                           : FractureMode::kOff,
+                real(sc, "fracture.element_size"), real(sc, "fracture.cfm"), real(sc, "fracture.erp")};
+  if (s.fracture.mode == FractureMode::kOn)
+    fail(sc, "fracture.mode", "breakable ice elements are not part of this build yet; use \"off\"");
+  if (s.fracture.mode == FractureMode::kAuto) {
+    // "auto" keeps floes smaller than the characteristic length rigid (paper: 0.3 m < l_c);
+    // l_c = (D / (rho_w g))^(1/4), D = E h^3 / (12 (1 - nu^2)) (physics-targets.md 2)
+    const double D = s.ice.elastic_modulus * std::pow(s.ice.thickness, 3) /
+                     (12.0 * (1.0 - s.ice.poisson_ratio * s.ice.poisson_ratio));
+    const double lc = std::pow(D / (s.water.density * s.water.gravity), 0.25);
+    if (s.ice.floe_size >= lc)
+      fail(sc, "fracture.mode",
+           fmt::format("\"auto\" would make these {} m floes breakable (characteristic length {:.3f} m), "
+                       "and breakable ice is not part of this build yet; use \"off\"",
+                       s.ice.floe_size, lc));
+    s.fracture.mode = FractureMode::kOff;
+  }
+
+  s.activation = {get<bool>(sc, "activation.sleeping"),
+                  get<std::string>(sc, "activation.islands") == "bullet" ? IslandMode::kBullet
+                                                                         : IslandMode::kContact,
+                  real(sc, "activation.linear_threshold"), real(sc, "activation.angular_threshold"),
+                  real(sc, "activation.time")};
+  s.output = {real(sc, "output.snapshot_interval")};
+  s.stats = {real(sc, "stats.window_start_travel"), real(sc, "stats.window_end_travel"),
+             real(sc, "stats.lowpass_hz")};
+  if (s.stats.window_end_travel > 0 && s.stats.window_end_travel <= s.stats.window_start_travel)
+    fail(sc, "stats.window_end_travel", "must be beyond stats.window_start_travel (or 0 for the end of the run)");
+  return s;
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  return make_scene(read_scenario(path, overrides));
+}
+
+}  // namespace icedem

@@ -1,0 +1,302 @@
+#include "dem/scenario_keys.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <fmt/format.h>
+
+namespace icedem {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+KeySpec real(std::string path, std::string unit, double def, double min, double max,
+             std::string doc, bool min_exclusive = false) {
+  KeySpec k{std::move(path), KeyType::kReal, std::move(unit), def, min, max, min_exclusive, {},
+            std::move(doc)};
+  return k;
+}
+KeySpec positive(std::string path, std::string unit, double def, double max, std::string doc) {
+  return real(std::move(path), std::move(unit), def, 0.0, max, std::move(doc), true);
+}
+KeySpec integer(std::string path, std::int64_t def, double min, double max, std::string doc) {
+  return KeySpec{std::move(path), KeyType::kInteger, "-", def, min, max, false, {}, std::move(doc)};
+}
+KeySpec boolean(std::string path, bool def, std::string doc) {
+  return KeySpec{std::move(path), KeyType::kBoolean, "-", def, -kInf, kInf, false, {}, std::move(doc)};
+}
+KeySpec text(std::string path, std::string def, std::string doc) {
+  return KeySpec{std::move(path), KeyType::kString, "", std::move(def), -kInf, kInf, false, {},
+                 std::move(doc)};
+}
+KeySpec choice(std::string path, std::string def, std::vector<std::string> choices, std::string doc) {
+  return KeySpec{std::move(path), KeyType::kChoice, "", std::move(def), -kInf, kInf, false,
+                 std::move(choices), std::move(doc)};
+}
+
+// The key table. Defaults reproduce the seed paper's smaller-floe test (Table 3)
+// with the analytic flow; sources of the non-paper defaults are given in `doc`.
+std::vector<KeySpec> make_keys() {
+  std::vector<KeySpec> k;
+  k.push_back(integer("seed", 1, 0, 9.0e18, "random seed of the floe layout; same seed, same run"));
+
+  // time
+  k.push_back(positive("time.dt", "s", 0.02, 1.0, "solver time step (paper Table 3: 0.02 s)"));
+  k.push_back(positive("time.duration", "s", 300.0, 1.0e6, "simulated time"));
+  k.push_back(integer("time.substeps", 1, 1, 1000,
+                      "Bullet steps per time step (dt/substeps each); outputs stay at dt"));
+
+  // solver
+  k.push_back(integer("solver.iterations", 10, 1, 100000,
+                      "projected Gauss-Seidel iterations per step (Bullet default 10)"));
+  k.push_back(boolean("solver.split_impulse", true,
+                      "correct contact penetration with a separate position impulse, so measured "
+                      "contact impulses carry no Baumgarte push (see README, load cell)"));
+  k.push_back(real("solver.contact_erp", "-", 0.2, 0.0, 1.0,
+                   "fraction of contact penetration corrected per step"));
+
+  // structure
+  k.push_back(real("structure.speed", "m/s", 0.07, 0.0, 10.0,
+                   "prescribed surge speed of the carriage (paper: 0.07 m/s)"));
+  k.push_back(real("structure.start_x", "m", 2.0, -1.0e4, 1.0e4,
+                   "x of the structure axis at t = 0 (paper: 2 m)"));
+  k.push_back(real("structure.start_z", "m", 0.0, -1.0e4, 1.0e4, "z of the structure axis"));
+  {
+    // Table 2: waterline breadth 1.228 m, maximum 1.472 m at depth-moulded 0.565 m
+    // (0.122 m above the waterline), draft 0.443 m -> a 45-degree cone; below the
+    // waterline it is continued straight to the keel (physics-targets.md 4a, [U]).
+    KeySpec p{"structure.profile", KeyType::kPairList, "m",
+              PairList{{-0.443, 0.171}, {0.0, 0.614}, {0.122, 0.736}}, 0.0, 100.0, false, {},
+              "hull profile as [height y, radius] stations from keel to deck (Table 2 cone)"};
+    p.min = -100.0;
+    k.push_back(p);
+  }
+  k.push_back(integer("structure.segments", 48, 8, 720,
+                      "polygon sides approximating each circular station of the hull"));
+
+  // channel and tank
+  k.push_back(real("channel.start_x", "m", 6.0, -1.0e4, 1.0e4,
+                   "x where the floe field begins (paper: floes in x >= 6 m)"));
+  k.push_back(positive("channel.length", "m", 24.0, 1.0e4, "length of the floe field (paper: ~24 m)"));
+  k.push_back(positive("channel.width", "m", 4.8, 1.0e3,
+                       "width between the mother-ice edges, centred on z = 0 (paper: 4.8 m)"));
+  k.push_back(boolean("channel.end_wall", true, "mother ice closes the far end of the channel"));
+  k.push_back(positive("tank.width", "m", 6.0, 1.0e3, "tank breadth (Table 1: 6 m)"));
+  k.push_back(positive("tank.depth", "m", 1.8, 1.0e3, "water depth (Table 1: 1.8 m)"));
+
+  // ice
+  k.push_back(positive("ice.floe_size", "m", 0.3, 100.0, "side of the square floes (paper: 0.3 / 0.6 m)"));
+  k.push_back(positive("ice.thickness", "m", 0.033, 10.0, "ice thickness (Table 3: 0.033 m)"));
+  k.push_back(real("ice.concentration", "-", 0.75, 0.0, 0.9,
+                   "area fraction of the channel covered by floes (paper: 0.75)", true));
+  k.push_back(positive("ice.density", "kg/m^3", 930.0, 1.0e4, "ice density (Table 3)"));
+  k.push_back(positive("ice.elastic_modulus", "Pa", 60.0e6, 1.0e12, "elastic modulus (Table 3)"));
+  k.push_back(positive("ice.bending_strength", "Pa", 36.4e3, 1.0e9, "bending strength (Table 3)"));
+  k.push_back(positive("ice.compressive_strength", "Pa", 145.6e3, 1.0e9,
+                       "compressive strength (Table 3: 4 x bending)"));
+  k.push_back(positive("ice.shear_strength", "Pa", 72.8e3, 1.0e9, "shear strength (Table 3: 2 x bending)"));
+  k.push_back(real("ice.poisson_ratio", "-", 0.33, 0.0, 0.5, "Poisson ratio (characteristic length)"));
+
+  // layout
+  k.push_back(text("layout.file", "",
+                   "CSV or JSON file of floes (centre, yaw, polygon); empty: generate square floes. "
+                   "Relative paths are relative to the scenario file"));
+  k.push_back(real("layout.max_yaw_deg", "deg", 15.0, 0.0, 45.0,
+                   "largest floe rotation about the vertical in a generated layout"));
+  k.push_back(integer("layout.sweeps", 30, 0, 100000,
+                      "Monte-Carlo relaxation sweeps that randomise a generated layout"));
+  k.push_back(real("layout.min_gap", "m", 0.002, 0.0, 1.0,
+                   "smallest clearance between generated floes (keeps them out of contact at t = 0)"));
+
+  // friction (Coulomb; combined by material pair, not Bullet's product rule)
+  k.push_back(real("friction.ice_ice", "-", 0.5, 0.0, 5.0,
+                   "ice-ice friction f_ii, also floe against mother ice (paper: 0.3/0.5/0.7)"));
+  k.push_back(real("friction.ice_structure", "-", 0.2, 0.0, 5.0,
+                   "ice-structure friction f_is (paper: 0.1/0.2/0.3)"));
+
+  // water
+  k.push_back(positive("water.density", "kg/m^3", 1000.0, 1.0e4, "water density (Table 3)"));
+  k.push_back(positive("water.gravity", "m/s^2", 9.81, 100.0, "gravitational acceleration"));
+  k.push_back(real("water.drag_coefficient", "-", 1.0, 0.0, 10.0,
+                   "form drag C_d of wetted faces facing the relative flow (bluff edge, "
+                   "physics-targets 5)"));
+  k.push_back(real("water.skin_friction_coefficient", "-", 0.0092, 0.0, 1.0,
+                   "skin friction C_f of wetted faces (laminar Blasius 1.328/sqrt(Re), Re = 2.1e4)"));
+  k.push_back(real("water.heave_damping_ratio", "-", 0.5, 0.0, 10.0,
+                   "heave damping as a fraction of critical (radiation damping; assumption)"));
+  k.push_back(real("water.roll_pitch_damping_ratio", "-", 0.5, 0.0, 10.0,
+                   "roll and pitch damping as a fraction of critical (assumption)"));
+
+  // flow
+  k.push_back(choice("flow.model", "potential", {"still", "uniform", "potential", "coupled"},
+                     "water velocity model: still water, uniform current, potential flow around the "
+                     "structure (cylinder of the local radius), or coupled OpenFOAM"));
+  {
+    KeySpec v{"flow.velocity", KeyType::kVector3, "m/s", Vector3Value{0.0, 0.0, 0.0}, -100.0, 100.0,
+              false, {}, "current velocity [x, y, z] for flow.model = \"uniform\""};
+    k.push_back(v);
+  }
+
+  // fracture
+  k.push_back(choice("fracture.mode", "off", {"off", "on", "auto"},
+                     "breakable ice elements: off (rigid floes), on, or auto (only floes larger "
+                     "than the characteristic length)"));
+  k.push_back(positive("fracture.element_size", "m", 0.15, 100.0,
+                       "side of the square ice elements (paper: 0.15 / 0.20 m)"));
+  k.push_back(real("fracture.cfm", "-", 1.0e-10, 0.0, 1.0e6,
+                   "constraint force mixing of the element joints (Bullet units)"));
+  k.push_back(real("fracture.erp", "-", 0.8, 0.0, 1.0, "error reduction of the element joints (paper: 0.8)"));
+
+  // activation (skip what the scene does not need)
+  k.push_back(boolean("activation.sleeping", true,
+                      "let bodies at rest sleep (no solve, no water forces) until touched"));
+  k.push_back(choice("activation.islands", "contact", {"contact", "bullet"},
+                     "how sleeping islands are built: from touching contacts, or Bullet's "
+                     "bounding-box overlap (which makes a 75 % field one island)"));
+  k.push_back(positive("activation.linear_threshold", "m/s", 0.005, 10.0,
+                       "speed below which a body may fall asleep (Bullet default 0.8 is for games)"));
+  k.push_back(positive("activation.angular_threshold", "rad/s", 0.02, 100.0,
+                       "angular speed below which a body may fall asleep"));
+  k.push_back(positive("activation.time", "s", 1.0, 1.0e4,
+                       "time below both thresholds before a body sleeps"));
+
+  // output
+  k.push_back(real("output.snapshot_interval", "s", 1.0, 0.0, 1.0e6,
+                   "interval of body-pose snapshots in the HDF5 file; 0: none"));
+
+  // statistics
+  k.push_back(real("stats.window_start_travel", "m", 2.456, 0.0, 1.0e4,
+                   "analysis window starts after the structure travels this far beyond its first "
+                   "ice contact (default 2 waterline breadths)"));
+  k.push_back(real("stats.window_end_travel", "m", 0.0, 0.0, 1.0e4,
+                   "window ends this far beyond first contact; 0: at the end of the run"));
+  k.push_back(real("stats.lowpass_hz", "Hz", 0.0, 0.0, 1.0e3,
+                   "low-pass cut-off applied to the surge load before statistics; 0: none"));
+  return k;
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t subst = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, subst});
+    }
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+std::string format_number(double v) {
+  // shortest text that reads back to the same double
+  std::string s = fmt::format("{}", v);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+}  // namespace
+
+const std::vector<KeySpec>& scenario_keys() {
+  static const std::vector<KeySpec> keys = make_keys();
+  return keys;
+}
+
+const KeySpec* find_key(const std::string& path) {
+  for (const KeySpec& k : scenario_keys())
+    if (k.path == path) return &k;
+  return nullptr;
+}
+
+bool is_section(const std::string& path) {
+  const std::string prefix = path + ".";
+  for (const KeySpec& k : scenario_keys())
+    if (k.path.compare(0, prefix.size(), prefix) == 0) return true;
+  return false;
+}
+
+std::string nearest_key(const std::string& path) {
+  std::string best;
+  std::size_t best_d = std::numeric_limits<std::size_t>::max();
+  auto consider = [&](const std::string& candidate) {
+    const std::size_t d = edit_distance(path, candidate);
+    if (d < best_d) best_d = d, best = candidate;
+  };
+  for (const KeySpec& k : scenario_keys()) {
+    consider(k.path);
+    const auto dot = k.path.find('.');
+    if (dot != std::string::npos) consider(k.path.substr(0, dot));
+  }
+  // a hint is only useful when it is close: allow a third of the length, at least 2 edits
+  const std::size_t allowed = std::max<std::size_t>(2, path.size() / 3);
+  return best_d <= allowed ? best : "";
+}
+
+std::string describe_expected(const KeySpec& s) {
+  std::string range;
+  const bool has_min = std::isfinite(s.min), has_max = std::isfinite(s.max);
+  if (has_min && has_max)
+    range = fmt::format(" in {}{}, {}]", s.min_exclusive ? "(" : "[", s.min, s.max);
+  else if (has_min)
+    range = fmt::format(" {} {}", s.min_exclusive ? ">" : ">=", s.min);
+  const std::string unit = s.unit.empty() || s.unit == "-" ? "" : " (" + s.unit + ")";
+  switch (s.type) {
+    case KeyType::kReal: return "a number" + range + unit;
+    case KeyType::kInteger: return "a whole number" + range;
+    case KeyType::kBoolean: return "true or false";
+    case KeyType::kString: return "a string";
+    case KeyType::kChoice: {
+      std::string list;
+      for (const auto& c : s.choices) list += (list.empty() ? "\"" : ", \"") + c + "\"";
+      return "one of " + list;
+    }
+    case KeyType::kVector3: return "an array of 3 numbers [x, y, z]" + range + unit;
+    case KeyType::kPairList: return "an array of at least 2 [a, b] number pairs" + range + unit;
+  }
+  return "";
+}
+
+std::string format_value(const KeyValue& value) {
+  struct Visitor {
+    std::string operator()(double v) const { return format_number(v); }
+    std::string operator()(std::int64_t v) const { return std::to_string(v); }
+    std::string operator()(bool v) const { return v ? "true" : "false"; }
+    std::string operator()(const std::string& v) const {
+      std::string out = "\"";
+      for (char c : v) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+      }
+      return out + "\"";
+    }
+    std::string operator()(const Vector3Value& v) const {
+      return "[" + format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]) + "]";
+    }
+    std::string operator()(const PairList& v) const {
+      std::string out = "[";
+      for (std::size_t i = 0; i < v.size(); ++i)
+        out += (i ? ", [" : "[") + format_number(v[i][0]) + ", " + format_number(v[i][1]) + "]";
+      return out + "]";
+    }
+  };
+  return std::visit(Visitor{}, value);
+}
+
+std::string keys_markdown() {
+  std::ostringstream out;
+  out << "# Scenario keys\n\n"
+      << "Generated by `icedem keys` from dem/scenario_keys.cpp; do not edit by hand.\n"
+      << "Every key is optional; a scenario file overrides the defaults below, and\n"
+      << "`icedem run FILE --set key.path=value` overrides the file.\n\n"
+      << "| key | unit | default | allowed | meaning |\n|---|---|---|---|---|\n";
+  for (const KeySpec& k : scenario_keys()) {
+    std::string value = format_value(k.default_value);
+    out << "| `" << k.path << "` | " << (k.unit.empty() ? "" : k.unit) << " | `" << value
+        << "` | " << describe_expected(k) << " | " << k.doc << " |\n";
+  }
+  return out.str();
+}
+
+}  // namespace icedem

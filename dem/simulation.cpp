@@ -1,0 +1,210 @@
+#include "dem/simulation.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+
+#include <LinearMath/btScalar.h>
+#include <fmt/format.h>
+
+#include "dem/errors.hpp"
+#include "dem/initial_state.hpp"
+#include "dem/progress.hpp"
+#include "dem/recorder.hpp"
+#include "dem/statistics.hpp"
+#include "dem/step.hpp"
+
+namespace icedem {
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted = true; }
+
+// Ctrl-C ends the step loop cleanly instead of killing the process mid-write
+class InterruptGuard {
+ public:
+  InterruptGuard() {
+    g_interrupted = false;
+    previous_ = std::signal(SIGINT, on_interrupt);
+    previous_term_ = std::signal(SIGTERM, on_interrupt);
+  }
+  ~InterruptGuard() {
+    std::signal(SIGINT, previous_);
+    std::signal(SIGTERM, previous_term_);
+  }
+
+ private:
+  void (*previous_)(int);
+  void (*previous_term_)(int);
+};
+
+RunMeta run_meta(const Scene& scene, const RunOptions& options) {
+  RunMeta m;
+  m.scenario_text = scene.resolved_text;
+  m.scenario_path = scene.source_path;
+  m.command_line = options.command_line;
+  m.version = ICEDEM_VERSION;
+  m.bullet_version = fmt::format("{}.{:02d}", BT_BULLET_VERSION / 100, BT_BULLET_VERSION % 100);
+  m.precision = sizeof(btScalar) == 8 ? "double" : "float";
+  m.seed = scene.seed;
+  return m;
+}
+
+std::vector<BodyOutline> body_outlines(const Scene& scene, const World& world) {
+  std::vector<BodyOutline> out;
+  for (const FloeBody& f : world.floes())
+    out.push_back(BodyOutline{f.floe_id, f.shape->outline, scene.ice.thickness});
+  return out;
+}
+
+std::vector<BodyPose> body_poses(const World& world) {
+  std::vector<BodyPose> poses;
+  poses.reserve(world.floes().size());
+  for (const FloeBody& f : world.floes()) {
+    const btTransform& t = f.body->getCenterOfMassTransform();
+    const btQuaternion q = t.getRotation();
+    poses.push_back(BodyPose{Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z()),
+                             Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()), f.body->isActive()});
+  }
+  return poses;
+}
+
+// Load time series kept in memory for the statistics at the end.
+struct LoadHistory {
+  std::vector<double> time, surge, heave, sway;
+};
+
+// The analysis window starts a stated travel distance after the first ice
+// contact (stats.window_start_travel; default 2 waterline breadths, cf. the
+// paper's window after the structure has advanced into the ice, Fig. 9).
+void compute_statistics(const Scene& scene, const LoadHistory& h, RunSummary& s) {
+  if (s.first_contact_s < 0) {
+    s.statistics_note = "the structure never touched the ice";
+    return;
+  }
+  const double v = scene.structure.speed;
+  const double t0 = v > 0 ? s.first_contact_s + scene.stats.window_start_travel / v : s.first_contact_s;
+  const double t1 = scene.stats.window_end_travel > 0 && v > 0
+                        ? s.first_contact_s + scene.stats.window_end_travel / v
+                        : 0.0;
+  // peaks at least half a floe passage apart (physics-targets.md 7)
+  const double separation = v > 0 ? 0.5 * scene.ice.floe_size / v : 1.0;
+  try {
+    s.surge = load_statistics(h.time, h.surge, t0, t1, scene.stats.lowpass_hz, separation);
+  } catch (const InputError& e) {
+    s.statistics_note = fmt::format("the analysis window ({:.1f} s onwards) holds no data: {}", t0, e.what());
+    return;
+  }
+  s.has_statistics = true;
+  double fy = 0, fz = 0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < h.time.size(); ++i)
+    if (h.time[i] >= s.surge.window_start && h.time[i] <= s.surge.window_end) fy += h.heave[i], fz += h.sway[i], ++n;
+  s.mean_fy_N = n ? fy / n : 0.0;
+  s.mean_fz_N = n ? fz / n : 0.0;
+}
+
+void write_statistics(Recorder& rec, const RunSummary& s) {
+  std::map<std::string, double> a{{"steps", double(s.steps)},
+                                  {"sim_time_s", s.sim_time_s},
+                                  {"wall_time_s", s.wall_time_s},
+                                  {"mean_awake", s.mean_awake},
+                                  {"breaks", double(s.breaks)},
+                                  {"first_contact_s", s.first_contact_s}};
+  if (s.has_statistics) {
+    a.insert({{"mean_fx_N", s.surge.mean}, {"max_fx_N", s.surge.max}, {"std_fx_N", s.surge.std},
+              {"min_fx_N", s.surge.min}, {"mean_fy_N", s.mean_fy_N}, {"mean_fz_N", s.mean_fz_N},
+              {"window_start_s", s.surge.window_start}, {"window_end_s", s.surge.window_end},
+              {"window_s", s.surge.window_s}, {"lowpass_hz", s.surge.lowpass_hz},
+              {"peaks", double(s.surge.peaks)}, {"peak_interval_s", s.surge.peak_interval_s}});
+  }
+  rec.set_attributes("/stats", a);
+  if (!s.has_statistics) rec.set_attribute("/stats", "note", s.statistics_note);
+}
+
+}  // namespace
+
+RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  auto wall = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+
+  RunSummary summary;
+  summary.scenario = scene.source_path;
+  summary.output = options.output;
+
+  // initial conditions
+  const Layout layout = scene_layout(scene);
+  State state = initial_state(scene, layout.floes);
+  summary.floes = static_cast<int>(layout.floes.size());
+  summary.achieved_concentration = layout.achieved_concentration;
+
+  Recorder recorder(options.output, run_meta(scene, options), body_outlines(scene, *state.world));
+  recorder.set_attributes("/layout", {{"floes", double(layout.floes.size())},
+                                      {"achieved_concentration", layout.achieved_concentration},
+                                      {"target_concentration", scene.ice.concentration},
+                                      {"channel_area_m2", layout.channel_area}});
+  recorder.set_attribute("/layout", "source", scene.layout.file.empty() ? "generated" : scene.layout.file);
+
+  const long total_steps = std::lround(scene.time.duration / scene.time.dt);
+  const long snapshot_every =
+      scene.output.snapshot_interval > 0 ? std::max(1L, std::lround(scene.output.snapshot_interval / scene.time.dt)) : 0;
+  if (snapshot_every) recorder.append_snapshot(0.0, body_poses(*state.world));
+
+  LoadHistory history;
+  history.time.reserve(total_steps);
+  history.surge.reserve(total_steps);
+  Progress progress(total_steps * scene.time.dt, options.progress);
+  InterruptGuard interrupt_guard;
+  double awake_sum = 0.0, last_flush = 0.0;
+  summary.status = "complete";
+
+  try {
+    while (state.step < total_steps) {
+      if (g_interrupted) {
+        summary.status = "interrupted";
+        summary.message = fmt::format("interrupted at t = {:.2f} s; the file holds the run so far", state.time);
+        break;
+      }
+      step(scene, state);
+
+      // record
+      const LoadReading& load = state.load;
+      recorder.append(LoadSample{state.time, load.force, load.moment, state.structure_position,
+                                 load.contacts, state.awake_floes});
+      history.time.push_back(state.time);
+      history.surge.push_back(-load.force.x());  // resisting towing, positive
+      history.heave.push_back(load.force.y());
+      history.sway.push_back(load.force.z());
+      awake_sum += state.awake_floes;
+      if (snapshot_every && state.step % snapshot_every == 0)
+        recorder.append_snapshot(state.time, body_poses(*state.world));
+
+      // report, and keep the file readable every few seconds
+      progress.update(state.time, -load.force.x(), state.awake_floes);
+      if (wall() - last_flush > 5.0) {
+        recorder.flush();
+        last_flush = wall();
+      }
+    }
+  } catch (const NumericalError& e) {
+    progress.done();
+    summary.wall_time_s = wall();
+    recorder.finish("failed", e.what(), summary.wall_time_s);
+    throw;
+  }
+  progress.done();
+
+  summary.steps = state.step;
+  summary.sim_time_s = state.time;
+  summary.mean_awake = state.step ? awake_sum / state.step : 0.0;
+  summary.first_contact_s = state.first_contact_time ? *state.first_contact_time : -1.0;
+  compute_statistics(scene, history, summary);
+  summary.wall_time_s = wall();
+  write_statistics(recorder, summary);
+  recorder.finish(summary.status, summary.message, summary.wall_time_s);
+  return summary;
+}
+
+}  // namespace icedem

@@ -1,0 +1,78 @@
+#include "dem/step.hpp"
+
+#include "dem/health_check.hpp"
+#include "dem/load_cell.hpp"
+#include "dem/water_forces.hpp"
+
+namespace icedem {
+namespace {
+
+Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+Eigen::Isometry3d pose_of(const btRigidBody& body) {
+  const btTransform& t = body.getCenterOfMassTransform();
+  const btQuaternion q = t.getRotation();
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()).toRotationMatrix();
+  pose.translation() = to_eigen(t.getOrigin());
+  return pose;
+}
+
+// prescribed carriage motion: the kinematic structure reaches x(t + h) at the
+// end of the coming Bullet step, and the flow model follows it
+void move_structure(const Scene& scene, State& state, double t_next) {
+  state.structure_position = structure_position_at(scene, t_next);
+  state.structure_velocity = Eigen::Vector3d(scene.structure.speed, 0.0, 0.0);
+  state.world->set_structure_target(state.structure_position);
+  state.flow->set_structure(state.structure_position, state.structure_velocity);
+}
+
+// buoyancy, drag and damping on awake floes (sleeping ones are at rest and get
+// neither gravity nor water forces from Bullet's integration)
+void apply_water_forces(const Scene& scene, State& state) {
+  const WaterParams water = water_params(scene.water);
+  for (FloeBody& floe : state.world->floes()) {
+    btRigidBody& body = *floe.body;
+    if (!body.isActive()) continue;
+    BodyMotion motion{pose_of(body), to_eigen(body.getLinearVelocity()), to_eigen(body.getAngularVelocity())};
+    const Wrench w = water_wrench(floe.shape->prism, motion, *state.flow, water, floe.shape->damping);
+    body.applyCentralForce(btVector3(w.force.x(), w.force.y(), w.force.z()));
+    body.applyTorque(btVector3(w.torque.x(), w.torque.y(), w.torque.z()));
+  }
+}
+
+// Bullet: collide, solve contacts with PGS, integrate (one internal step of h)
+void advance_bullet(State& state, double h) { state.world->dynamics().stepSimulation(h, 0); }
+
+// contact impulses on the structure of the Bullet step just taken
+void read_load_cell(State& state, LoadCell& cell) {
+  cell.accumulate(*state.world->dynamics().getDispatcher(), state.world->structure(),
+                  state.structure_position);
+}
+
+}  // namespace
+
+Eigen::Vector3d structure_position_at(const Scene& scene, double t) {
+  return {scene.structure.start_x + scene.structure.speed * t, 0.0, scene.structure.start_z};
+}
+
+void step(const Scene& scene, State& state) {
+  const double h = scene.time.dt / scene.time.substeps;
+  const double t0 = state.time;
+  LoadCell cell;
+  for (int k = 1; k <= scene.time.substeps; ++k) {
+    const double t_next = t0 + k * h;
+    move_structure(scene, state, t_next);
+    apply_water_forces(scene, state);
+    advance_bullet(state, h);
+    read_load_cell(state, cell);
+    state.time = t_next;
+  }
+  state.load = cell.finish(scene.time.dt);
+  state.awake_floes = state.world->awake_floes();
+  if (!state.first_contact_time && state.load.contacts > 0) state.first_contact_time = state.time;
+  ++state.step;
+  check_health(scene, state);
+}
+
+}  // namespace icedem

@@ -1,0 +1,67 @@
+#include "dem/summary.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace icedem {
+
+std::string summary_table(const RunSummary& s) {
+  const double rtf = s.wall_time_s > 0 ? s.sim_time_s / s.wall_time_s : 0.0;
+  std::string out;
+  out += fmt::format("icedem run: {}  ->  {}  [{}]\n", s.scenario, s.output, s.status);
+  if (!s.message.empty()) out += fmt::format("  {}\n", s.message);
+  out += fmt::format("  floes {:d} (concentration {:.2f} %), steps {:d}, simulated {:.1f} s in {:.1f} s wall "
+                     "({:.1f}x real time, {:.0f} steps/s), awake floes {:.1f} on average\n",
+                     s.floes, 100 * s.achieved_concentration, s.steps, s.sim_time_s, s.wall_time_s, rtf,
+                     s.wall_time_s > 0 ? s.steps / s.wall_time_s : 0.0, s.mean_awake);
+  if (!s.has_statistics) {
+    out += fmt::format("  no load statistics: {}\n", s.statistics_note);
+    return out;
+  }
+  const LoadStatistics& st = s.surge;
+  out += fmt::format("  first ice contact at {:.1f} s; analysis window {:.1f} - {:.1f} s ({:.1f} s{})\n",
+                     s.first_contact_s, st.window_start, st.window_end, st.window_s,
+                     st.lowpass_hz > 0 ? fmt::format(", low-pass {} Hz", st.lowpass_hz) : "");
+  out += fmt::format("  surge load (resisting towing): mean {:.2f} N   max {:.2f} N   std {:.2f} N\n",
+                     st.mean, st.max, st.std);
+  out += fmt::format("  load peaks {:d}, mean spacing {} s; breaks {:d}\n", st.peaks,
+                     std::isfinite(st.peak_interval_s) ? fmt::format("{:.2f}", st.peak_interval_s) : "n/a",
+                     s.breaks);
+  return out;
+}
+
+nlohmann::json summary_json(const RunSummary& s) {
+  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  const bool ok = s.has_statistics;
+  nlohmann::json j;
+  j["scenario"] = s.scenario;
+  j["output"] = s.output;
+  j["status"] = s.status;
+  j["message"] = s.message;
+  j["statistics_note"] = s.statistics_note;
+  j["mean_fx_N"] = ok ? num(s.surge.mean) : nullptr;
+  j["max_fx_N"] = ok ? num(s.surge.max) : nullptr;
+  j["std_fx_N"] = ok ? num(s.surge.std) : nullptr;
+  j["mean_fy_N"] = ok ? num(s.mean_fy_N) : nullptr;
+  j["mean_fz_N"] = ok ? num(s.mean_fz_N) : nullptr;
+  j["window_s"] = ok ? num(s.surge.window_s) : nlohmann::json(0.0);
+  j["window_start_s"] = ok ? num(s.surge.window_start) : nullptr;
+  j["window_end_s"] = ok ? num(s.surge.window_end) : nullptr;
+  j["lowpass_hz"] = ok ? num(s.surge.lowpass_hz) : nullptr;
+  j["peaks"] = ok ? s.surge.peaks : 0;
+  j["peak_interval_s"] = ok ? num(s.surge.peak_interval_s) : nullptr;
+  j["first_contact_s"] = s.first_contact_s >= 0 ? num(s.first_contact_s) : nullptr;
+  j["breaks"] = s.breaks;
+  j["steps"] = s.steps;
+  j["sim_time_s"] = s.sim_time_s;
+  j["wall_time_s"] = s.wall_time_s;
+  j["realtime_factor"] = s.wall_time_s > 0 ? num(s.sim_time_s / s.wall_time_s) : nullptr;
+  j["steps_per_second"] = s.wall_time_s > 0 ? num(s.steps / s.wall_time_s) : nullptr;
+  j["floes"] = s.floes;
+  j["achieved_concentration"] = s.achieved_concentration;
+  j["mean_awake"] = s.mean_awake;
+  return j;
+}
+
+}  // namespace icedem

@@ -1,0 +1,292 @@
+#include "dem/world.hpp"
+
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+#include "dem/cone_geometry.hpp"
+#include "dem/constants.hpp"
+
+namespace icedem {
+namespace {
+
+btVector3 to_bt(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
+
+// Coulomb friction of a contact pair. Bullet multiplies the two bodies'
+// coefficients by default, which would make f_ii = 0.5 act as 0.25. Here each
+// body carries its coefficient *against ice*: ice-ice contacts use f_ii (ice's
+// own value), ice against the structure or a boundary uses that body's value.
+btScalar combined_friction(const btCollisionObject* a, const btCollisionObject* b) {
+  return a->getUserIndex() == kIce ? b->getFriction() : a->getFriction();
+}
+
+// restitution is zero for every body (paper, Table 3); max keeps it explicit
+btScalar combined_restitution(const btCollisionObject* a, const btCollisionObject* b) {
+  return std::max(a->getRestitution(), b->getRestitution());
+}
+
+// area moments of a polygon about its centroid: {A, Sxx = int x^2, Szz = int z^2, Sxz = int xz}
+Eigen::Vector4d area_moments(const Polygon& p) {
+  double a = 0, sxx = 0, szz = 0, sxz = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Eigen::Vector2d& u = p[i];
+    const Eigen::Vector2d& v = p[(i + 1) % p.size()];
+    const double c = u.x() * v.y() - v.x() * u.y();
+    a += c / 2;
+    sxx += c * (u.x() * u.x() + u.x() * v.x() + v.x() * v.x()) / 12;
+    szz += c * (u.y() * u.y() + u.y() * v.y() + v.y() * v.y()) / 12;
+    sxz += c * (u.x() * v.y() + 2 * u.x() * u.y() + 2 * v.x() * v.y() + v.x() * u.y()) / 24;
+  }
+  const double s = a < 0 ? -1.0 : 1.0;  // either vertex order
+  return {s * a, s * sxx, s * szz, s * sxz};
+}
+
+// yaw that turns the outline frame into the principal frame of its area moments
+double principal_yaw(const Polygon& outline) {
+  const Eigen::Vector4d m = area_moments(outline);
+  const double scale = m[1] + m[2];
+  if (std::abs(m[3]) <= 1e-12 * scale && std::abs(m[1] - m[2]) <= 1e-12 * scale) return 0.0;
+  Eigen::Matrix2d tensor;
+  tensor << m[1], m[3], m[3], m[2];
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(tensor);
+  const Eigen::Vector2d e1 = eig.eigenvectors().col(1);  // the long axis becomes body x
+  return std::atan2(-e1.y(), e1.x());  // body +x maps to (cos, -sin) under yaw (polygon.hpp)
+}
+
+// an axis-aligned rectangle centred at the origin: its half extents, else none
+bool rectangle_half_extents(const Polygon& p, double& hx, double& hz) {
+  if (p.size() != 4) return false;
+  hx = std::abs(p[0].x());
+  hz = std::abs(p[0].y());
+  const double tol = 1e-9 * (hx + hz);
+  for (const Eigen::Vector2d& v : p)
+    if (std::abs(std::abs(v.x()) - hx) > tol || std::abs(std::abs(v.y()) - hz) > tol) return false;
+  return hx > 0 && hz > 0;
+}
+
+}  // namespace
+
+World::World(const Scene& scene) : scene_(scene) {
+  collision_config_ = std::make_unique<btDefaultCollisionConfiguration>();
+  dispatcher_ = std::make_unique<btCollisionDispatcher>(collision_config_.get());
+  broadphase_ = std::make_unique<btDbvtBroadphase>();
+  solver_ = std::make_unique<btSequentialImpulseConstraintSolver>();
+  dynamics_ = std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                              collision_config_.get());
+  dynamics_->setGravity(btVector3(0, -scene.water.gravity, 0));
+
+  // sleeping islands from touching contacts (see contact_islands.hpp for why)
+  if (scene.activation.islands == IslandMode::kContact) {
+    island_manager_ = std::make_unique<ContactIslandManager>();
+    dynamics_->replace_island_manager(island_manager_.get());
+  }
+
+  btContactSolverInfo& info = dynamics_->getSolverInfo();
+  info.m_numIterations = scene.solver.iterations;
+  info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+  info.m_restitution = 0;
+  info.m_splitImpulse = scene.solver.split_impulse;
+  // Bullet only splits penetrations deeper than 4 cm by default, i.e. never for
+  // 33 mm ice; a zero threshold splits every penetrating contact
+  info.m_splitImpulsePenetrationThreshold = 0;
+  info.m_erp = scene.solver.contact_erp;   // Baumgarte, when split impulse is off
+  info.m_erp2 = scene.solver.contact_erp;  // split-impulse position correction
+
+  gCalculateCombinedFrictionCallback = &combined_friction;
+  gCalculateCombinedRestitutionCallback = &combined_restitution;
+  // a body sleeps after this long below its thresholds (a process-wide Bullet global)
+  gDeactivationTime = scene.activation.time;
+}
+
+World::~World() {
+  // bodies out of the world before the world goes
+  for (auto& body : bodies_) dynamics_->removeRigidBody(body.get());
+}
+
+void World::add_structure(std::unique_ptr<btCollisionShape> shape, const Eigen::Vector3d& position) {
+  btTransform pose;
+  pose.setIdentity();
+  pose.setOrigin(to_bt(position));
+  auto motion = std::make_unique<btDefaultMotionState>(pose);
+  btRigidBody::btRigidBodyConstructionInfo ci(0.0, motion.get(), shape.get());
+  auto body = std::make_unique<btRigidBody>(ci);
+  // kinematic: moved by us, infinite mass for the solver, never asleep
+  body->setCollisionFlags(body->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+  body->setActivationState(DISABLE_DEACTIVATION);
+  body->setFriction(scene_.friction.ice_structure);
+  body->setRestitution(0);
+  body->setUserIndex(kStructure);
+  dynamics_->addRigidBody(body.get());
+  structure_ = body.get();
+  shapes_.push_back(std::move(shape));
+  motion_states_.push_back(std::move(motion));
+  bodies_.push_back(std::move(body));
+}
+
+void World::add_profile_structure() {
+  auto compound = std::make_unique<btCompoundShape>();
+  btTransform identity;
+  identity.setIdentity();
+  for (const auto& piece : hull_pieces(scene_.structure.profile, scene_.structure.segments)) {
+    auto hull = std::make_unique<btConvexHullShape>();
+    for (const Eigen::Vector3d& p : piece) hull->addPoint(to_bt(p), false);
+    hull->recalcLocalAabb();
+    hull->setMargin(kDefaultCollisionMargin);
+    compound->addChildShape(identity, hull.get());
+    shapes_.push_back(std::move(hull));
+  }
+  add_structure(std::move(compound),
+                Eigen::Vector3d(scene_.structure.start_x, 0.0, scene_.structure.start_z));
+}
+
+btRigidBody* World::add_static_box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half,
+                                   Material material) {
+  auto shape = std::make_unique<btBoxShape>(to_bt(half));
+  shape->setMargin(kDefaultCollisionMargin);
+  btTransform pose;
+  pose.setIdentity();
+  pose.setOrigin(to_bt(centre));
+  btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, shape.get());
+  ci.m_startWorldTransform = pose;
+  auto body = std::make_unique<btRigidBody>(ci);
+  body->setFriction(scene_.friction.ice_ice);  // mother ice is ice
+  body->setRestitution(0);
+  body->setUserIndex(material);
+  dynamics_->addRigidBody(body.get());
+  btRigidBody* raw = body.get();
+  shapes_.push_back(std::move(shape));
+  bodies_.push_back(std::move(body));
+  return raw;
+}
+
+void World::add_boundaries() {
+  const ChannelSettings& c = scene_.channel;
+  const double h = scene_.ice.thickness;
+  const double draft = h * scene_.ice.density / scene_.water.density;
+  const double y_ice = h / 2 - draft;  // centre of a floating sheet
+  const double x0 = std::min(scene_.structure.start_x, c.start_x) - 2.0;  // tank start, behind the carriage
+  const double x_end = c.start_x + c.length;
+  const double x1 = x_end + 1.0;
+  const double side = (c.tank_width - c.width) / 2;  // mother ice left along each wall
+
+  // mother ice along both sides of the channel: fixed sheets at the waterline
+  if (side > 0)
+    for (double sign : {-1.0, 1.0})
+      add_static_box({(x0 + x1) / 2, y_ice, sign * (c.width / 2 + side / 2)},
+                     {(x1 - x0) / 2, h / 2, side / 2}, kBoundary);
+  // mother ice closing the far end of the channel
+  if (c.end_wall) add_static_box({x_end + 0.5, y_ice, 0.0}, {0.5, h / 2, c.width / 2}, kBoundary);
+
+  // tank walls, ends and floor (floes pushed under the ice must not fall out)
+  const double wall = 0.1, top = 0.5;
+  const double ymid = (top - c.tank_depth) / 2, yhalf = (top + c.tank_depth) / 2;
+  for (double sign : {-1.0, 1.0})
+    add_static_box({(x0 + x1) / 2, ymid, sign * (c.tank_width / 2 + wall)},
+                   {(x1 - x0) / 2 + 2 * wall, yhalf, wall}, kBoundary);
+  add_static_box({x0 - wall, ymid, 0.0}, {wall, yhalf, c.tank_width / 2}, kBoundary);
+  add_static_box({x1 + wall, ymid, 0.0}, {wall, yhalf, c.tank_width / 2}, kBoundary);
+  add_static_box({(x0 + x1) / 2, -c.tank_depth - wall, 0.0},
+                 {(x1 - x0) / 2 + 2 * wall, wall, c.tank_width / 2 + 2 * wall}, kBoundary);
+}
+
+const FloeShape& World::shape_for(const Polygon& outline) {
+  std::vector<double> key;
+  for (const Eigen::Vector2d& v : outline) key.insert(key.end(), {v.x(), v.y()});
+  if (auto it = shape_cache_.find(key); it != shape_cache_.end()) return *it->second;
+
+  const double h = scene_.ice.thickness;
+  auto s = std::make_unique<FloeShape>();
+  // body axes along the principal axes of the outline, so Bullet's diagonal inertia is right
+  s->principal_yaw = principal_yaw(outline);
+  for (const Eigen::Vector2d& v : outline) s->outline.push_back(rotate(v, -s->principal_yaw));
+  s->prism = make_prism(s->outline, h);
+
+  const Eigen::Vector4d m = area_moments(s->outline);
+  s->mass = scene_.ice.density * m[0] * h;
+  const double rho_h = scene_.ice.density * h;
+  const double plate = s->mass * h * h / 12;  // thickness contribution about horizontal axes
+  s->inertia = {rho_h * m[2] + plate, rho_h * (m[1] + m[2]), rho_h * m[1] + plate};
+
+  s->damping = damping_coefficients(s->prism, s->mass, std::min(s->inertia.x(), s->inertia.z()),
+                                    water_params(scene_.water));
+
+  // boxes keep their outer size under a margin and collide box-box (several points at
+  // once); other convex outlines become hulls (the margin adds 1 mm around them)
+  double hx, hz;
+  if (rectangle_half_extents(s->outline, hx, hz)) {
+    s->collision = std::make_unique<btBoxShape>(btVector3(hx, h / 2, hz));
+  } else {
+    auto hull = std::make_unique<btConvexHullShape>();
+    for (const Eigen::Vector3d& p : s->prism.vertices) hull->addPoint(to_bt(p), false);
+    hull->recalcLocalAabb();
+    s->collision = std::move(hull);
+  }
+  s->collision->setMargin(kDefaultCollisionMargin);
+
+  FloeShape* raw = s.get();
+  floe_shapes_.push_back(std::move(s));
+  shape_cache_[key] = raw;
+  return *raw;
+}
+
+int World::add_floe(const Floe& floe) {
+  const FloeShape& shape = shape_for(floe.shape);
+  const double h = scene_.ice.thickness;
+  const double draft = h * scene_.ice.density / scene_.water.density;  // Archimedes, flat prism
+
+  btTransform pose;
+  pose.setIdentity();
+  pose.setOrigin(btVector3(floe.centre.x(), h / 2 - draft, floe.centre.y()));
+  pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + shape.principal_yaw));
+
+  auto motion = std::make_unique<btDefaultMotionState>(pose);
+  btRigidBody::btRigidBodyConstructionInfo ci(shape.mass, motion.get(), shape.collision.get(),
+                                              to_bt(shape.inertia));
+  auto body = std::make_unique<btRigidBody>(ci);
+  body->setFriction(scene_.friction.ice_ice);
+  body->setRestitution(0);
+  body->setUserIndex(kIce);
+  body->setSleepingThresholds(scene_.activation.linear_threshold, scene_.activation.angular_threshold);
+  dynamics_->addRigidBody(body.get());
+  // floes start at rest at their equilibrium draft: asleep until something touches them
+  body->setActivationState(scene_.activation.sleeping ? ISLAND_SLEEPING : DISABLE_DEACTIVATION);
+
+  const int index = static_cast<int>(floes_.size());
+  floes_.push_back(FloeBody{body.get(), index, &shape});
+  motion_states_.push_back(std::move(motion));
+  bodies_.push_back(std::move(body));
+  return index;
+}
+
+void World::add_floes(const std::vector<Floe>& floes) {
+  floes_.reserve(floes_.size() + floes.size());
+  for (const Floe& f : floes) add_floe(f);
+}
+
+void World::set_structure_target(const Eigen::Vector3d& position) {
+  btTransform pose;
+  pose.setIdentity();
+  pose.setOrigin(to_bt(position));
+  structure_->getMotionState()->setWorldTransform(pose);
+}
+
+int World::awake_floes() const {
+  int n = 0;
+  for (const FloeBody& f : floes_) n += f.body->isActive() ? 1 : 0;
+  return n;
+}
+
+WaterParams water_params(const WaterSettings& w) {
+  return WaterParams{w.density, w.gravity, w.drag_coefficient, w.skin_friction_coefficient,
+                     w.heave_damping_ratio, w.roll_pitch_damping_ratio};
+}
+
+std::unique_ptr<World> build_world(const Scene& scene, const std::vector<Floe>& floes) {
+  auto world = std::make_unique<World>(scene);
+  world->add_profile_structure();
+  world->add_boundaries();
+  world->add_floes(floes);
+  return world;
+}
+
+}  // namespace icedem

@@ -1,0 +1,35 @@
+// Sleeping islands built from touching contacts.
+//
+// Bullet decides which bodies may sleep per "island", and builds islands from
+// broadphase pairs, i.e. from overlapping bounding boxes enlarged by the contact
+// threshold. At 75 % ice concentration neighbouring floes' boxes overlap, so the
+// whole field is one island and one moving floe keeps all ~1000 awake
+// (bullet-notes.md: 936 of 960 awake). Here two bodies share an island only if
+// their contact manifold holds at least one contact point, i.e. they touch or
+// are about to. Every manifold the solver uses has points, so every solved
+// contact still joins its bodies; floes that merely sit near each other sleep
+// independently, and a sleeping floe is woken when an awake one touches it.
+#pragma once
+
+#include <BulletCollision/CollisionDispatch/btSimulationIslandManager.h>
+#include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
+
+namespace icedem {
+
+class ContactIslandManager : public btSimulationIslandManager {
+ public:
+  /// Tag bodies and unite those joined by a manifold with contact points
+  /// (replaces Bullet's union over broadphase pairs).
+  void updateActivationState(btCollisionWorld* world, btDispatcher* dispatcher) override;
+};
+
+/// A btDiscreteDynamicsWorld whose island manager can be replaced (Bullet keeps
+/// it in a protected member with no setter).
+class DynamicsWorld : public btDiscreteDynamicsWorld {
+ public:
+  using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
+  /// Use `manager` (not owned; must outlive the world) instead of the built-in one.
+  void replace_island_manager(btSimulationIslandManager* manager);
+};
+
+}  // namespace icedem

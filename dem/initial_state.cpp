@@ -1,0 +1,53 @@
+#include "dem/initial_state.hpp"
+
+#include <stdexcept>
+
+#include "dem/step.hpp"
+
+namespace icedem {
+
+Channel scene_channel(const Scene& scene) {
+  const ChannelSettings& c = scene.channel;
+  return Channel{c.start_x, c.start_x + c.length, -c.width / 2, c.width / 2};
+}
+
+Layout scene_layout(const Scene& scene) {
+  if (!scene.layout.file.empty()) return read_layout_file(scene.layout.file, scene_channel(scene));
+  LayoutParams p;
+  p.channel = scene_channel(scene);
+  p.floe_size = scene.ice.floe_size;
+  p.concentration = scene.ice.concentration;
+  p.seed = scene.seed;
+  p.max_yaw = scene.layout.max_yaw;
+  p.sweeps = scene.layout.sweeps;
+  p.min_gap = scene.layout.min_gap;
+  return generate_square_layout(p);
+}
+
+std::unique_ptr<FlowField> make_flow(const Scene& scene) {
+  switch (scene.flow.model) {
+    case FlowModel::kStill: return std::make_unique<StillWater>();
+    case FlowModel::kUniform: return std::make_unique<UniformFlow>(scene.flow.velocity);
+    case FlowModel::kPotential: {
+      std::vector<std::pair<double, double>> stations;
+      for (const ProfileStation& s : scene.structure.profile) stations.emplace_back(s.y, s.radius);
+      return std::make_unique<ConePotentialFlow>(stations);
+    }
+    case FlowModel::kCoupled: break;
+  }
+  // make_scene rejects "coupled" until the OpenFOAM coupler exists
+  throw std::logic_error("make_flow: flow model not available in this build");
+}
+
+State initial_state(const Scene& scene, const std::vector<Floe>& floes) {
+  State state;
+  state.world = build_world(scene, floes);
+  state.flow = make_flow(scene);
+  state.structure_position = structure_position_at(scene, 0.0);
+  state.structure_velocity = Eigen::Vector3d(scene.structure.speed, 0.0, 0.0);
+  state.flow->set_structure(state.structure_position, state.structure_velocity);
+  state.awake_floes = state.world->awake_floes();
+  return state;
+}
+
+}  // namespace icedem

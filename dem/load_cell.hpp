@@ -1,0 +1,47 @@
+// The load cell: the ice load on the kinematic structure, from contact impulses.
+//
+// After each Bullet step, every contact manifold that involves the structure is
+// read. A contact point's total impulse is the normal impulse along its normal
+// plus both friction impulses along their directions; Bullet applies it to
+// body 0 and its opposite to body 1, so the sign flips when the structure is
+// body 1 (bullet-notes.md). Summed over points and divided by the step length it
+// is the force of the ice on the structure; the moment is taken about the
+// structure's reference point (its axis at the waterline), like the paper's
+// six-component load cell.
+//
+// With split impulse on (solver.split_impulse), penetration is corrected by a
+// separate pseudo-impulse that does not enter these impulses, so the load holds
+// no position-correction push.
+#pragma once
+
+#include <Eigen/Core>
+
+class btDispatcher;
+class btRigidBody;
+
+namespace icedem {
+
+/// The ice load over one step, tank frame.
+struct LoadReading {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N, by the ice on the structure
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // N m, about the reference point
+  int contacts = 0;                                  // contact points on the structure (last substep)
+};
+
+/// Accumulates contact impulses over the substeps of one step.
+class LoadCell {
+ public:
+  /// Add the impulses of the Bullet step just taken (moment about `reference`, m).
+  void accumulate(const btDispatcher& dispatcher, const btRigidBody* structure,
+                  const Eigen::Vector3d& reference);
+
+  /// The mean force and moment over a step of length dt (s); resets the cell.
+  LoadReading finish(double dt);
+
+ private:
+  Eigen::Vector3d impulse_ = Eigen::Vector3d::Zero();         // N s
+  Eigen::Vector3d angular_impulse_ = Eigen::Vector3d::Zero(); // N m s
+  int contacts_ = 0;
+};
+
+}  // namespace icedem

@@ -1,0 +1,138 @@
+// The Scene: the immutable, validated, SI input of one run.
+//
+// Built once from the scenario file (dem/scenario.hpp) and never changed while
+// stepping; everything that changes lives in the State (dem/state.hpp). Field
+// meanings and defaults are declared in dem/scenario_keys.cpp.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace icedem {
+
+/// One station of the structure's hull profile.
+struct ProfileStation {
+  double y;       // m, height above the still-water line (negative below)
+  double radius;  // m
+};
+
+struct TimeSettings {
+  double dt;        // s, output and control step
+  double duration;  // s, simulated time
+  int substeps;     // Bullet steps per dt
+};
+
+struct SolverSettings {
+  int iterations;       // PGS iterations per Bullet step
+  bool split_impulse;   // position correction kept out of the contact impulses
+  double contact_erp;   // -, fraction of penetration corrected per step
+};
+
+struct StructureSettings {
+  double speed;                         // m/s, surge, prescribed
+  double start_x;                       // m, axis position at t = 0
+  double start_z;                       // m
+  std::vector<ProfileStation> profile;  // keel to deck, y increasing
+  int segments;                         // polygon sides per station
+};
+
+struct ChannelSettings {
+  double start_x;    // m, floes in x >= start_x
+  double length;     // m
+  double width;      // m, centred on z = 0
+  bool end_wall;     // mother ice at x = start_x + length
+  double tank_width; // m
+  double tank_depth; // m, water depth
+};
+
+struct IceSettings {
+  double floe_size;             // m, side of square floes
+  double thickness;             // m
+  double concentration;         // -, area fraction
+  double density;               // kg/m^3
+  double elastic_modulus;       // Pa
+  double bending_strength;      // Pa
+  double compressive_strength;  // Pa
+  double shear_strength;        // Pa
+  double poisson_ratio;         // -
+};
+
+struct LayoutSettings {
+  std::string file;  // absolute path of a floe file, or "" to generate
+  double max_yaw;    // rad
+  int sweeps;        // Monte-Carlo sweeps
+  double min_gap;    // m
+};
+
+struct FrictionSettings {
+  double ice_ice;        // -, also floe against mother ice
+  double ice_structure;  // -
+};
+
+struct WaterSettings {
+  double density;                    // kg/m^3
+  double gravity;                    // m/s^2
+  double drag_coefficient;           // -
+  double skin_friction_coefficient;  // -
+  double heave_damping_ratio;        // -
+  double roll_pitch_damping_ratio;   // -
+};
+
+enum class FlowModel { kStill, kUniform, kPotential, kCoupled };
+struct FlowSettings {
+  FlowModel model;
+  Eigen::Vector3d velocity;  // m/s, uniform current
+};
+
+enum class FractureMode { kOff, kOn, kAuto };
+struct FractureSettings {
+  FractureMode mode;
+  double element_size;  // m
+  double cfm;           // -, Bullet units
+  double erp;           // -
+};
+
+enum class IslandMode { kContact, kBullet };
+struct ActivationSettings {
+  bool sleeping;             // bodies at rest may sleep
+  IslandMode islands;        // how sleeping islands are formed
+  double linear_threshold;   // m/s
+  double angular_threshold;  // rad/s
+  double time;               // s below thresholds before sleeping
+};
+
+struct OutputSettings {
+  double snapshot_interval;  // s, 0 = no snapshots
+};
+
+struct StatsSettings {
+  double window_start_travel;  // m beyond first contact
+  double window_end_travel;    // m beyond first contact, 0 = end of run
+  double lowpass_hz;           // Hz, 0 = unfiltered
+};
+
+/// Everything one run needs, validated and in SI units.
+struct Scene {
+  std::string source_path;    // scenario file as given
+  std::string resolved_text;  // every key with its resolved value, as TOML
+  std::uint64_t seed;
+  TimeSettings time;
+  SolverSettings solver;
+  StructureSettings structure;
+  ChannelSettings channel;
+  IceSettings ice;
+  LayoutSettings layout;
+  FrictionSettings friction;
+  WaterSettings water;
+  FlowSettings flow;
+  FractureSettings fracture;
+  ActivationSettings activation;
+  OutputSettings output;
+  StatsSettings stats;
+};
+
+}  // namespace icedem

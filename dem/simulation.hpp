@@ -1,0 +1,23 @@
+// One run: initial state, the step loop with recording and progress, and the
+// statistics and summary at the end. A run stopped by Ctrl-C or a numerical
+// blow-up still leaves a readable HDF5 file, marked "interrupted" or "failed".
+#pragma once
+
+#include <string>
+
+#include "dem/scene.hpp"
+#include "dem/summary.hpp"
+
+namespace icedem {
+
+struct RunOptions {
+  std::string output = "out.h5";  // HDF5 file to write
+  bool progress = true;           // progress line on stderr
+  std::string command_line;       // recorded in /meta
+};
+
+/// Run the scene to the end (or until interrupted). Throws NumericalError after
+/// marking the file "failed"; returns status "interrupted" after Ctrl-C.
+RunSummary run_simulation(const Scene& scene, const RunOptions& options);
+
+}  // namespace icedem

@@ -1,0 +1,31 @@
+// The State: everything that changes during a run (the Scene does not).
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include <Eigen/Core>
+
+#include "dem/flow_field.hpp"
+#include "dem/load_cell.hpp"
+#include "dem/world.hpp"
+
+namespace icedem {
+
+struct State {
+  std::unique_ptr<World> world;     // Bullet bodies; poses and velocities change every step
+  std::unique_ptr<FlowField> flow;  // water velocity model; follows the structure
+
+  double time = 0.0;  // s, simulated; written by step()
+  long step = 0;      // completed steps; written by step()
+
+  Eigen::Vector3d structure_position = Eigen::Vector3d::Zero();  // m, axis at the waterline
+  Eigen::Vector3d structure_velocity = Eigen::Vector3d::Zero();  // m/s
+
+  LoadReading load;    // ice load of the last step; written by read_load_cell
+  int awake_floes = 0;  // floes simulated in the last step
+
+  std::optional<double> first_contact_time;  // s, first step with ice on the structure
+};
+
+}  // namespace icedem

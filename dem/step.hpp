@@ -1,0 +1,18 @@
+// One time step of the simulation, as a list of stages.
+#pragma once
+
+#include "dem/scene.hpp"
+#include "dem/state.hpp"
+
+namespace icedem {
+
+/// Advance the state by scene.time.dt: per Bullet substep, move the structure,
+/// apply water forces, let Bullet collide/solve/integrate and read the load
+/// cell; then average the load over the step and check for blow-ups.
+/// Throws NumericalError on a blow-up.
+void step(const Scene& scene, State& state);
+
+/// Where the structure's reference point is at time t (prescribed carriage motion).
+Eigen::Vector3d structure_position_at(const Scene& scene, double t);
+
+}  // namespace icedem

@@ -1,0 +1,44 @@
+// The run summary: a one-screen table and the JSON file that sweeps read.
+//
+// JSON keys (DESIGN.md, stable): mean_fx_N, max_fx_N, std_fx_N, window_s, breaks,
+// steps, sim_time_s, wall_time_s; more keys are added, none removed. "fx" is the
+// surge load as the paper plots it: the force resisting towing, positive.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "dem/statistics.hpp"
+
+namespace icedem {
+
+struct RunSummary {
+  std::string scenario;  // scenario path
+  std::string output;    // HDF5 path
+  std::string status;    // complete | interrupted | failed
+  std::string message;   // error or note, "" if none
+
+  bool has_statistics = false;  // false if the window held no data
+  std::string statistics_note;  // why there are no statistics
+  LoadStatistics surge{};       // surge load over the analysis window
+  double mean_fy_N = 0.0;       // mean heave load over the window (ice on structure, + up)
+  double mean_fz_N = 0.0;       // mean sway load over the window
+  double first_contact_s = -1;  // s, first ice contact (-1: none)
+
+  long steps = 0;
+  double sim_time_s = 0.0;
+  double wall_time_s = 0.0;
+  int floes = 0;
+  double achieved_concentration = 0.0;
+  double mean_awake = 0.0;  // floes simulated per step, averaged over the run
+  int breaks = 0;           // joint failures (0 with rigid floes)
+};
+
+/// A short human-readable table.
+std::string summary_table(const RunSummary& s);
+
+/// The summary as JSON (NaN becomes null).
+nlohmann::json summary_json(const RunSummary& s);
+
+}  // namespace icedem

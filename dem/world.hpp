@@ -1,0 +1,121 @@
+// The Bullet world of one run: solver set-up, the kinematic structure, the
+// fixed boundaries (mother ice, tank) and the floating floes.
+//
+// Every Bullet choice the physics depends on is made here, once, with its reason
+// (see also ../shared/reference/bullet-notes.md):
+//  - double precision (BT_USE_DOUBLE_PRECISION, set by CMake);
+//  - friction combined per material pair, not Bullet's product rule;
+//  - two friction directions per contact (SOLVER_USE_2_FRICTION_DIRECTIONS);
+//  - restitution 0 everywhere (paper, Table 3);
+//  - collision margins of a millimetre (Bullet's 0.04 m exceeds the ice thickness);
+//  - sleeping thresholds for a 0.07 m/s tow, and islands built from touching
+//    contacts rather than bounding-box overlap (dem/contact_islands.hpp);
+//  - split-impulse penetration recovery, so contact impulses measured by the
+//    load cell hold no position-correction push (solver.split_impulse).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+#include <btBulletDynamicsCommon.h>
+
+#include "dem/contact_islands.hpp"
+#include "dem/floe_layout.hpp"
+#include "dem/hydrostatics.hpp"
+#include "dem/scene.hpp"
+#include "dem/water_forces.hpp"
+
+namespace icedem {
+
+/// What a collision object is made of; stored in btCollisionObject::userIndex
+/// and read by the friction rule.
+enum Material : int { kIce = 1, kStructure = 2, kBoundary = 3 };
+
+/// Geometry shared by every floe with the same outline and thickness.
+struct FloeShape {
+  Polygon outline;           // local (x, z), m, centroid at origin, principal axes along x and z
+  double principal_yaw;      // rad, yaw of the principal frame relative to the input outline
+  ConvexPolyhedron prism;    // body frame, for hydrostatics
+  double mass;               // kg
+  Eigen::Vector3d inertia;   // kg m^2, principal moments about body x, y, z
+  DampingCoefficients damping;
+  std::unique_ptr<btCollisionShape> collision;
+};
+
+/// One floating rigid floe.
+struct FloeBody {
+  btRigidBody* body;       // owned by World
+  int floe_id;             // index in the layout
+  const FloeShape* shape;  // owned by World
+};
+
+/// The Bullet world and everything in it. Not copyable; one per run.
+class World {
+ public:
+  /// An empty world with the scene's solver, friction and activation settings.
+  explicit World(const Scene& scene);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Add the kinematic structure with `shape`, its reference point (axis at the
+  /// waterline) at `position`. Friction against ice: friction.ice_structure.
+  void add_structure(std::unique_ptr<btCollisionShape> shape, const Eigen::Vector3d& position);
+
+  /// Add the scene's hull (structure.profile) at the structure's start position.
+  void add_profile_structure();
+
+  /// Add the mother ice along the channel sides and end, the tank walls and floor.
+  void add_boundaries();
+
+  /// Add one floe floating at its equilibrium draft, at rest. Returns its index.
+  int add_floe(const Floe& floe);
+
+  /// Add every floe of a layout.
+  void add_floes(const std::vector<Floe>& floes);
+
+  /// Move the kinematic structure so that it reaches `position` at the end of
+  /// the next Bullet step; Bullet derives its velocity from the motion.
+  void set_structure_target(const Eigen::Vector3d& position);
+
+  btDiscreteDynamicsWorld& dynamics() { return *dynamics_; }
+  const btDiscreteDynamicsWorld& dynamics() const { return *dynamics_; }
+  btRigidBody* structure() const { return structure_; }
+  std::vector<FloeBody>& floes() { return floes_; }
+  const std::vector<FloeBody>& floes() const { return floes_; }
+  const Scene& scene() const { return scene_; }
+
+  /// Number of floes currently awake (simulated).
+  int awake_floes() const;
+
+ private:
+  const FloeShape& shape_for(const Polygon& outline);
+  btRigidBody* add_static_box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extents,
+                              Material material);
+
+  const Scene& scene_;
+  std::unique_ptr<btDefaultCollisionConfiguration> collision_config_;
+  std::unique_ptr<btCollisionDispatcher> dispatcher_;
+  std::unique_ptr<btBroadphaseInterface> broadphase_;
+  std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
+  std::unique_ptr<btSimulationIslandManager> island_manager_;  // must outlive dynamics_
+  std::unique_ptr<DynamicsWorld> dynamics_;
+
+  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
+  std::vector<std::unique_ptr<btRigidBody>> bodies_;
+  std::vector<std::unique_ptr<btMotionState>> motion_states_;
+  std::vector<std::unique_ptr<FloeShape>> floe_shapes_;
+  std::map<std::vector<double>, FloeShape*> shape_cache_;
+  std::vector<FloeBody> floes_;
+  btRigidBody* structure_ = nullptr;
+};
+
+/// Water properties and hydrodynamic coefficients of the scene.
+WaterParams water_params(const WaterSettings& water);
+
+/// The scene's full world: structure, boundaries and the given floes.
+std::unique_ptr<World> build_world(const Scene& scene, const std::vector<Floe>& floes);
+
+}  // namespace icedem
