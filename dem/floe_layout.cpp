@@ -1,0 +1,776 @@
+// Floe layouts: seeded generation of square floes at a target concentration and
+// reading/writing of polygon layout files. Format and conventions: floe_layout.hpp.
+#include "dem/floe_layout.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "dem/constants.hpp"
+#include "dem/errors.hpp"
+
+namespace icedem {
+namespace {
+
+// tolerance for floes read from files, m: touching floes and floes flush with
+// the channel edge must not fail because of rounding in the file's decimals or
+// in re-centring; 1 nm is far below any physical size yet far above rounding
+constexpr double kFileTolerance = 1e-9;
+
+// ---------------------------------------------------------------- random numbers
+
+// std::mt19937_64 is fully specified by the standard; the distributions are
+// not (libstdc++ and libc++ differ), so the mappings are written out here
+class Rng {
+ public:
+  explicit Rng(uint64_t seed) : engine_(seed) {}
+
+  // uniform in [0, 1): the top 53 bits of one draw
+  double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
+
+  // uniform in [-1, 1)
+  double symmetric() { return 2.0 * uniform() - 1.0; }
+
+  // uniform integer in [0, n), unbiased by rejection
+  uint64_t below(uint64_t n) {
+    assert(n > 0);
+    const uint64_t max = std::numeric_limits<uint64_t>::max();
+    const uint64_t limit = max - max % n;
+    uint64_t r;
+    do {
+      r = engine_();
+    } while (r >= limit);
+    return r % n;
+  }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+// ---------------------------------------------------------------- cell list
+
+// uniform grid over the channel; a body is filed under the cell holding its
+// centre. With cell size >= the largest interaction distance, every possible
+// partner of a body is in its own or one of the 8 surrounding cells, so a
+// neighbour query is O(1) and a sweep O(N).
+class CellList {
+ public:
+  CellList(const Channel& ch, double interaction_distance, size_t bodies) : ch_(ch) {
+    const double lx = ch.x_max - ch.x_min, lz = ch.z_max - ch.z_min;
+    // never more than ~4 cells per body, whatever the sizes
+    const double min_size = std::sqrt(lx * lz / (4.0 * static_cast<double>(bodies) + 16.0));
+    // the small factor keeps "distance < size" => "adjacent cells" under rounding
+    size_ = std::max(interaction_distance * (1.0 + 1e-9), min_size);
+    nx_ = std::max(1, static_cast<int>(std::ceil(lx / size_)));
+    nz_ = std::max(1, static_cast<int>(std::ceil(lz / size_)));
+    cells_.resize(static_cast<size_t>(nx_) * nz_);
+  }
+
+  int cell_of(const Eigen::Vector2d& p) const {
+    return index(ix(p.x()), iz(p.y()));
+  }
+
+  void insert(int body, int cell) { cells_[cell].push_back(body); }
+
+  void remove(int body, int cell) {
+    auto& c = cells_[cell];
+    auto it = std::find(c.begin(), c.end(), body);
+    assert(it != c.end());
+    *it = c.back();
+    c.pop_back();
+  }
+
+  // calls f(body) for every body filed near p; stops and returns true as soon
+  // as f returns true
+  template <class F>
+  bool any_near(const Eigen::Vector2d& p, F&& f) const {
+    const int cx = ix(p.x()), cz = iz(p.y());
+    for (int i = std::max(cx - 1, 0); i <= std::min(cx + 1, nx_ - 1); ++i) {
+      for (int k = std::max(cz - 1, 0); k <= std::min(cz + 1, nz_ - 1); ++k) {
+        for (int body : cells_[index(i, k)]) {
+          if (f(body)) return true;
+        }
+      }
+    }
+    return false;
+  }
+
+ private:
+  int ix(double x) const { return clamp_cell((x - ch_.x_min) / size_, nx_); }
+  int iz(double z) const { return clamp_cell((z - ch_.z_min) / size_, nz_); }
+  int index(int i, int k) const { return i * nz_ + k; }
+  static int clamp_cell(double u, int n) {
+    if (!(u >= 0.0)) return 0;  // also NaN
+    return u >= n - 1 ? n - 1 : static_cast<int>(u);
+  }
+
+  Channel ch_;
+  double size_;
+  int nx_, nz_;
+  std::vector<std::vector<int>> cells_;
+};
+
+// ---------------------------------------------------------------- shared checks
+
+bool inside(const Polygon& world, const Channel& ch, double tolerance) {
+  for (const auto& v : world) {
+    if (v.x() < ch.x_min - tolerance || v.x() > ch.x_max + tolerance ||
+        v.y() < ch.z_min - tolerance || v.y() > ch.z_max + tolerance) {
+      return false;
+    }
+  }
+  return true;
+}
+
+double channel_area(const Channel& ch) { return (ch.x_max - ch.x_min) * (ch.z_max - ch.z_min); }
+
+std::string channel_text(const Channel& ch) {
+  return fmt::format("x in [{}, {}] m, z in [{}, {}] m", ch.x_min, ch.x_max, ch.z_min, ch.z_max);
+}
+
+void check_channel(const Channel& ch, const std::string& context) {
+  const bool finite = std::isfinite(ch.x_min) && std::isfinite(ch.x_max) &&
+                      std::isfinite(ch.z_min) && std::isfinite(ch.z_max);
+  if (!finite || !(ch.x_max > ch.x_min)) {
+    throw InputError(fmt::format(
+        "{}: channel.length = {} m (x from {} to {} m): expected a finite length > 0", context,
+        ch.x_max - ch.x_min, ch.x_min, ch.x_max));
+  }
+  if (!(ch.z_max > ch.z_min)) {
+    throw InputError(fmt::format(
+        "{}: channel.width = {} m (z from {} to {} m): expected a finite width > 0", context,
+        ch.z_max - ch.z_min, ch.z_min, ch.z_max));
+  }
+}
+
+// ---------------------------------------------------------------- generation
+
+// a regular grid of nx (along x) by nz (along z) cells of dx by dz metres
+struct Grid {
+  int nx = 0, nz = 0;
+  double dx = 0.0, dz = 0.0;  // m
+};
+
+// the grid with at least n cells, each fitting a floe plus the gap, whose cell
+// aspect is closest to 1 (ties: fewer cells); nx = 0 if none fits. For a given
+// nz the smallest nx = ceil(n / nz) has the largest cells, so these candidates
+// (and the same with x and z swapped) contain a fitting grid whenever one exists.
+Grid choose_grid(long n, double lx, double lz, double need) {
+  Grid best;
+  double best_score = std::numeric_limits<double>::infinity();
+  auto consider = [&](long nx, long nz) {
+    const double dx = lx / static_cast<double>(nx), dz = lz / static_cast<double>(nz);
+    if (std::min(dx, dz) < need) return;
+    const double score = std::abs(std::log(dx / dz));
+    const long cells = nx * nz;
+    if (score < best_score - 1e-12 ||
+        (score < best_score + 1e-12 && cells < static_cast<long>(best.nx) * best.nz)) {
+      best_score = score;
+      best = {static_cast<int>(nx), static_cast<int>(nz), dx, dz};
+    }
+  };
+  for (long k = 1; k <= n; ++k) {
+    const long other = (n + k - 1) / k;
+    consider(other, k);
+    consider(k, other);
+  }
+  return best;
+}
+
+// largest yaw (rad, <= pi/4) at which a square of side L spans at most `span`
+// along x and along z: L (cos t + sin t) = sqrt(2) L sin(t + pi/4) <= span
+double fitting_yaw(double side, double span) {
+  const double ratio = span / (std::sqrt(2.0) * side);
+  if (ratio >= 1.0) return kPi / 4.0;
+  return std::max(0.0, std::asin(ratio) - kPi / 4.0);
+}
+
+void check_params(const LayoutParams& p) {
+  const std::string ctx = "floe layout";
+  check_channel(p.channel, ctx);
+  if (!std::isfinite(p.floe_size) || !(p.floe_size > 0.0)) {
+    throw InputError(fmt::format("{}: ice.floe_size = {} m: expected a finite size > 0", ctx,
+                                 p.floe_size));
+  }
+  if (!std::isfinite(p.concentration) || p.concentration < 0.0 || p.concentration > 1.0) {
+    throw InputError(fmt::format("{}: ice.concentration = {}: expected a fraction in [0, 1]", ctx,
+                                 p.concentration));
+  }
+  if (!std::isfinite(p.max_yaw) || p.max_yaw < 0.0) {
+    throw InputError(
+        fmt::format("{}: max_yaw = {} rad: expected a finite angle >= 0", ctx, p.max_yaw));
+  }
+  if (p.sweeps < 0) {
+    throw InputError(fmt::format("{}: sweeps = {}: expected a count >= 0", ctx, p.sweeps));
+  }
+  if (!std::isfinite(p.min_gap) || p.min_gap < 0.0) {
+    throw InputError(
+        fmt::format("{}: min_gap = {} m: expected a finite gap >= 0", ctx, p.min_gap));
+  }
+}
+
+}  // namespace
+
+Layout generate_square_layout(const LayoutParams& params) {
+  check_params(params);
+  const Channel& ch = params.channel;
+  const double lx = ch.x_max - ch.x_min, lz = ch.z_max - ch.z_min;
+  const double side = params.floe_size, gap = params.min_gap;
+  const std::string ctx = "floe layout";
+
+  Layout layout;
+  layout.channel_area = channel_area(ch);
+
+  // the floe itself must fit across the channel
+  if (side + gap > std::min(lx, lz)) {
+    throw InputError(fmt::format(
+        "{}: ice.floe_size = {} m (with min gap {} m) is larger than the {} m x {} m channel; "
+        "expected floes smaller than the channel width",
+        ctx, side, gap, lx, lz));
+  }
+
+  // number of floes for the target concentration
+  const double exact_n = params.concentration * layout.channel_area / (side * side);
+  const long n = std::lround(exact_n);
+  if (params.concentration == 0.0) return layout;  // open water
+  if (n == 0) {
+    throw InputError(fmt::format(
+        "{}: ice.concentration = {} with ice.floe_size = {} m gives round({}) = 0 floes in the "
+        "{} m x {} m channel; expected a concentration giving at least one floe (or 0 for open "
+        "water)",
+        ctx, params.concentration, side, exact_n, lx, lz));
+  }
+
+  // start: the most regular grid that holds n floes; cells need a small margin
+  // so floes in neighbouring cells keep the gap despite rounding
+  const double need = (side + gap) * (1.0 + 1e-9);
+  const Grid grid = choose_grid(n, lx, lz, need);
+  if (grid.nx == 0) {
+    const long max_n = static_cast<long>(std::floor(lx / need)) *
+                       static_cast<long>(std::floor(lz / need));
+    throw InputError(fmt::format(
+        "{}: ice.concentration = {} with ice.floe_size = {} m needs {} floes, but at most {} fit "
+        "on a grid in the {} m x {} m channel with min gap {} m; expected ice.concentration <= "
+        "{:.4f} for this ice.floe_size (or smaller floes)",
+        ctx, params.concentration, side, n, max_n, lx, lz, gap,
+        static_cast<double>(max_n) * side * side / layout.channel_area));
+  }
+
+  Rng rng(params.seed);
+
+  // leave the surplus cells empty, chosen at random (partial Fisher-Yates)
+  const long cells = static_cast<long>(grid.nx) * grid.nz;
+  std::vector<long> order(cells);
+  for (long c = 0; c < cells; ++c) order[c] = c;
+  for (long c = 0; c < cells - n; ++c) {
+    const long pick = c + static_cast<long>(rng.below(static_cast<uint64_t>(cells - c)));
+    std::swap(order[c], order[pick]);
+  }
+  std::vector<long> occupied(order.begin() + (cells - n), order.end());
+  std::sort(occupied.begin(), occupied.end());  // floes numbered along x, then z
+
+  // floes at the cell centres, with a random yaw small enough to stay in the cell
+  const Polygon shape = square(side);
+  const double radius = bounding_radius(shape);
+  const double yaw0 =
+      std::min(params.max_yaw, 0.999 * fitting_yaw(side, std::min(grid.dx, grid.dz) - gap));
+  layout.floes.reserve(n);
+  for (long c : occupied) {
+    const long i = c / grid.nz, k = c % grid.nz;
+    const Eigen::Vector2d centre(ch.x_min + (static_cast<double>(i) + 0.5) * grid.dx,
+                                 ch.z_min + (static_cast<double>(k) + 0.5) * grid.dz);
+    layout.floes.push_back({centre, yaw0 * rng.symmetric(), shape});
+  }
+
+  // world outlines and the cell list for the relaxation
+  std::vector<Polygon> world(n);
+  CellList cell_list(ch, 2.0 * radius + gap, static_cast<size_t>(n));
+  std::vector<int> cell_of(n);
+  for (long i = 0; i < n; ++i) {
+    const Floe& f = layout.floes[i];
+    world[i] = transformed(shape, f.centre, f.yaw);
+    cell_of[i] = cell_list.cell_of(f.centre);
+    cell_list.insert(static_cast<int>(i), cell_of[i]);
+  }
+
+  // Monte-Carlo relaxation of hard polygons: a move is accepted only if the
+  // floe stays inside, within the yaw limit and clear of all neighbours
+  double step = std::max(0.5 * (std::min(grid.dx, grid.dz) - side - gap), 0.01 * side);
+  const double min_step = 1e-6 * side, max_step = side;
+  long accepted_total = 0, tried_total = 0;
+  for (int sweep = 0; sweep < params.sweeps; ++sweep) {
+    // a rotation by dyaw moves the corners by up to radius * dyaw
+    const double yaw_step = std::min(step / radius, params.max_yaw);
+    long accepted = 0;
+    for (long i = 0; i < n; ++i) {
+      Floe& f = layout.floes[i];
+      // always draw three numbers so the stream does not depend on outcomes
+      const double ux = rng.symmetric(), uz = rng.symmetric(), uyaw = rng.symmetric();
+      const Eigen::Vector2d centre = f.centre + step * Eigen::Vector2d(ux, uz);
+      const double yaw = f.yaw + yaw_step * uyaw;
+      if (std::abs(yaw) > params.max_yaw) continue;
+      Polygon trial = transformed(shape, centre, yaw);
+      if (!inside(trial, ch, 0.0)) continue;
+      const double reach = 2.0 * radius + gap;
+      const bool blocked = cell_list.any_near(centre, [&](int j) {
+        if (j == i) return false;
+        if ((layout.floes[j].centre - centre).squaredNorm() >= reach * reach) return false;
+        return overlap(trial, world[j], gap);
+      });
+      if (blocked) continue;
+      // accept
+      f.centre = centre;
+      f.yaw = yaw;
+      world[i] = std::move(trial);
+      const int cell = cell_list.cell_of(centre);
+      if (cell != cell_of[i]) {
+        cell_list.remove(static_cast<int>(i), cell_of[i]);
+        cell_list.insert(static_cast<int>(i), cell);
+        cell_of[i] = cell;
+      }
+      ++accepted;
+    }
+    accepted_total += accepted;
+    tried_total += n;
+    // steer the acceptance towards 40 % (the middle of the 30-50 % band)
+    const double rate = static_cast<double>(accepted) / static_cast<double>(n);
+    step = std::clamp(step * std::clamp(rate / 0.4, 0.5, 2.0), min_step, max_step);
+  }
+
+  layout.acceptance_rate =
+      tried_total > 0 ? static_cast<double>(accepted_total) / static_cast<double>(tried_total)
+                      : 0.0;
+  layout.achieved_concentration = concentration(layout.floes, ch);
+  return layout;
+}
+
+double concentration(const std::vector<Floe>& floes, const Channel& channel) {
+  double total = 0.0;
+  for (const auto& f : floes) total += area(f.shape);
+  return total / channel_area(channel);
+}
+
+// ==================================================================== files
+
+namespace {
+
+// a floe as read from a file, before the checks, with where it came from
+struct RawFloe {
+  Eigen::Vector2d centre;  // m, position of the local origin
+  double yaw_deg;          // degrees
+  Polygon polygon;         // m, local vertices as given
+  std::string centre_text;   // the centre value as written in the file
+  std::string polygon_text;  // the polygon value as written in the file
+  int line = 0;              // CSV line number (1-based); 0 for JSON
+  size_t index = 0;          // position in the file (0-based)
+};
+
+// how one file names its floes and fields in messages
+struct FileNaming {
+  std::string path;
+  bool csv;
+
+  // "file.csv:7: field 'polygon'" or "file.json: floes[3].polygon"
+  std::string field(const RawFloe& r, const std::string& csv_field,
+                    const std::string& json_field) const {
+    if (csv) return fmt::format("{}:{}: field '{}'", path, r.line, csv_field);
+    return fmt::format("{}: floes[{}].{}", path, r.index, json_field);
+  }
+  // "the floe on line 7" or "floes[3]"
+  std::string name(const RawFloe& r) const {
+    if (csv) return fmt::format("the floe on line {}", r.line);
+    return fmt::format("floes[{}]", r.index);
+  }
+};
+
+std::string shorten(const std::string& s) {
+  constexpr size_t kMax = 160;
+  return s.size() <= kMax ? s : s.substr(0, kMax) + "...";
+}
+
+std::string trim(const std::string& s) {
+  const char* ws = " \t\r\n";
+  const size_t a = s.find_first_not_of(ws);
+  if (a == std::string::npos) return "";
+  const size_t b = s.find_last_not_of(ws);
+  return s.substr(a, b - a + 1);
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// a finite decimal number, the whole of `text` (locale independent)
+bool parse_number(const std::string& text, double& value) {
+  std::string t = trim(text);
+  if (!t.empty() && t[0] == '+') t.erase(0, 1);
+  if (t.empty()) return false;
+  const char* end = t.data() + t.size();
+  const auto result = std::from_chars(t.data(), end, value);
+  return result.ec == std::errc() && result.ptr == end && std::isfinite(value);
+}
+
+// ---------------------------------------------------------------- CSV
+
+// splits one CSV line into fields; double quotes protect commas, "" is a quote
+bool split_csv(const std::string& line, std::vector<std::string>& fields) {
+  fields.assign(1, "");
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return !quoted;
+}
+
+const std::vector<std::string> kCsvColumns = {"x", "z", "yaw_deg", "polygon"};
+
+std::vector<RawFloe> read_csv(const std::string& path, std::istream& in) {
+  std::vector<RawFloe> floes;
+  std::vector<int> column;  // column[f] = position of kCsvColumns[f] in the line
+  std::string line;
+  std::vector<std::string> fields;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    // tolerate a UTF-8 byte order mark and Windows line ends
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    const std::string content = trim(line);
+    if (content.empty() || content[0] == '#') continue;
+    if (!split_csv(line, fields)) {
+      throw InputError(fmt::format("{}:{}: unterminated double quote in \"{}\"; expected "
+                                   "quoted fields to end with '\"'",
+                                   path, number, shorten(content)));
+    }
+
+    // the first content line is the header
+    if (column.empty()) {
+      column.assign(kCsvColumns.size(), -1);
+      for (size_t p = 0; p < fields.size(); ++p) {
+        const std::string name = lower(trim(fields[p]));
+        const auto it = std::find(kCsvColumns.begin(), kCsvColumns.end(), name);
+        if (it == kCsvColumns.end() || column[it - kCsvColumns.begin()] >= 0) {
+          throw InputError(fmt::format(
+              "{}:{}: header column {} = '{}' is {}; expected the header x,z,yaw_deg,polygon "
+              "(any order)",
+              path, number, p + 1, trim(fields[p]),
+              it == kCsvColumns.end() ? "unknown" : "repeated"));
+        }
+        column[it - kCsvColumns.begin()] = static_cast<int>(p);
+      }
+      for (size_t f = 0; f < kCsvColumns.size(); ++f) {
+        if (column[f] < 0) {
+          throw InputError(fmt::format(
+              "{}:{}: header \"{}\" has no column '{}'; expected the header x,z,yaw_deg,polygon",
+              path, number, shorten(content), kCsvColumns[f]));
+        }
+      }
+      continue;
+    }
+
+    if (fields.size() != kCsvColumns.size()) {
+      throw InputError(fmt::format(
+          "{}:{}: {} fields in \"{}\"; expected {} (x, z, yaw_deg, polygon; quote the polygon)",
+          path, number, fields.size(), shorten(content), kCsvColumns.size()));
+    }
+    RawFloe r;
+    r.line = number;
+    r.index = floes.size();
+    const std::string& xs = fields[column[0]];
+    const std::string& zs = fields[column[1]];
+    const std::string& ys = fields[column[2]];
+    const std::string& ps = fields[column[3]];
+    auto number_field = [&](const std::string& name, const std::string& text) {
+      double v;
+      if (!parse_number(text, v)) {
+        throw InputError(fmt::format("{}:{}: field '{}' = \"{}\": not a number; expected a "
+                                     "finite decimal number",
+                                     path, number, name, shorten(trim(text))));
+      }
+      return v;
+    };
+    r.centre = {number_field("x", xs), number_field("z", zs)};
+    r.yaw_deg = number_field("yaw_deg", ys);
+    r.centre_text = fmt::format("{}, {}", trim(xs), trim(zs));
+    r.polygon_text = "\"" + trim(ps) + "\"";
+
+    // polygon: "x1 z1; x2 z2; ..."
+    std::stringstream vertices(ps);
+    std::string vertex;
+    int count = 0;
+    while (std::getline(vertices, vertex, ';')) {
+      if (trim(vertex).empty()) continue;
+      ++count;
+      std::istringstream tokens(vertex);
+      std::string a, b, extra;
+      double vx, vz;
+      tokens >> a >> b;
+      const bool two = !a.empty() && !b.empty() && !(tokens >> extra);
+      if (!two || !parse_number(a, vx) || !parse_number(b, vz)) {
+        throw InputError(fmt::format(
+            "{}:{}: field 'polygon' = {}: vertex {} \"{}\" is not two numbers; expected "
+            "\"x1 z1; x2 z2; ...\" in m",
+            path, number, shorten(r.polygon_text), count, trim(vertex)));
+      }
+      r.polygon.emplace_back(vx, vz);
+    }
+    floes.push_back(std::move(r));
+  }
+  if (column.empty()) {
+    throw InputError(fmt::format(
+        "{}: no header line; expected the header x,z,yaw_deg,polygon then one floe per line",
+        path));
+  }
+  return floes;
+}
+
+// ---------------------------------------------------------------- JSON
+
+std::vector<RawFloe> read_json(const std::string& path, std::istream& in) {
+  using nlohmann::json;
+  json root;
+  try {
+    root = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(fmt::format("{}: invalid JSON ({}); expected {{\"floes\": [...]}}", path,
+                                 e.what()));
+  }
+  if (!root.is_object() || !root.contains("floes")) {
+    throw InputError(fmt::format("{}: no key 'floes' at the top level; expected {{\"floes\": "
+                                 "[{{\"centre\": [x, z], \"yaw_deg\": 0, \"polygon\": [[x, z], "
+                                 "...]}}, ...]}}",
+                                 path));
+  }
+  const json& list = root["floes"];
+  if (!list.is_array()) {
+    throw InputError(fmt::format("{}: floes = {}: expected an array of floe objects", path,
+                                 shorten(list.dump())));
+  }
+
+  std::vector<RawFloe> floes;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const json& item = list[i];
+    auto fail = [&](const std::string& field, const json& value, const std::string& expected) {
+      throw InputError(fmt::format("{}: floes[{}]{} = {}: expected {}", path, i,
+                                   field.empty() ? "" : "." + field, shorten(value.dump()),
+                                   expected));
+    };
+    if (!item.is_object()) fail("", item, "an object with centre, yaw_deg and polygon");
+    for (const auto& [key, value] : item.items()) {
+      if (key != "centre" && key != "yaw_deg" && key != "polygon") {
+        fail(key, value, "only the keys centre, yaw_deg and polygon (unknown key '" + key + "')");
+      }
+    }
+    for (const char* key : {"centre", "yaw_deg", "polygon"}) {
+      if (!item.contains(key)) {
+        throw InputError(fmt::format("{}: floes[{}].{} is missing; expected each floe to have "
+                                     "centre [x, z] (m), yaw_deg and polygon [[x, z], ...] (m)",
+                                     path, i, key));
+      }
+    }
+    auto number = [&](const json& v, const std::string& field) {
+      if (!v.is_number()) fail(field, v, "a number");
+      const double d = v.get<double>();
+      if (!std::isfinite(d)) fail(field, v, "a finite number");
+      return d;
+    };
+    auto point = [&](const json& v, const std::string& field) {
+      if (!v.is_array() || v.size() != 2) fail(field, v, "a pair [x, z] of numbers in m");
+      return Eigen::Vector2d(number(v[0], field + "[0]"), number(v[1], field + "[1]"));
+    };
+
+    RawFloe r;
+    r.index = i;
+    r.centre = point(item["centre"], "centre");
+    r.yaw_deg = number(item["yaw_deg"], "yaw_deg");
+    const json& poly = item["polygon"];
+    if (!poly.is_array()) fail("polygon", poly, "an array of vertices [[x, z], ...] in m");
+    for (size_t k = 0; k < poly.size(); ++k) {
+      r.polygon.push_back(point(poly[k], fmt::format("polygon[{}]", k)));
+    }
+    r.centre_text = item["centre"].dump();
+    r.polygon_text = poly.dump();
+    floes.push_back(std::move(r));
+  }
+  return floes;
+}
+
+// ---------------------------------------------------------------- checks
+
+// ".csv" or ".json" (lower case), or InputError
+std::string layout_extension(const std::string& path) {
+  const std::string ext = lower(std::filesystem::path(path).extension().string());
+  if (ext != ".csv" && ext != ".json") {
+    throw InputError(fmt::format("{}: unknown layout file extension '{}'; expected .csv or .json",
+                                 path, ext));
+  }
+  return ext;
+}
+
+Floe finish_floe(const RawFloe& r, const FileNaming& naming, const Channel& ch) {
+  // a usable outline: convex, >= 3 vertices, positive area
+  const std::string poly_field = naming.field(r, "polygon", "polygon");
+  if (r.polygon.size() < 3) {
+    throw InputError(fmt::format("{} = {}: {} vertices; expected a convex polygon with at least "
+                                 "3 vertices",
+                                 poly_field, shorten(r.polygon_text), r.polygon.size()));
+  }
+  if (!is_convex(r.polygon)) {
+    throw InputError(fmt::format(
+        "{} = {}: the polygon is not convex (it has a reflex corner, crosses itself, repeats a "
+        "vertex or has zero area); expected a convex polygon with >= 3 distinct vertices and "
+        "positive area",
+        poly_field, shorten(r.polygon_text)));
+  }
+
+  // re-centre on the area centroid, moving the centre so the outline stays put
+  Floe f;
+  f.yaw = r.yaw_deg * kPi / 180.0;
+  const Eigen::Vector2d c = centroid(r.polygon);
+  f.centre = r.centre + rotate(c, f.yaw);
+  f.shape.reserve(r.polygon.size());
+  for (const auto& v : r.polygon) f.shape.push_back(v - c);
+  f.shape = make_ccw(std::move(f.shape));
+
+  // the whole floe inside the channel
+  const Polygon world = transformed(f.shape, f.centre, f.yaw);
+  if (!inside(world, ch, kFileTolerance)) {
+    Eigen::Vector2d worst = world.front();
+    for (const auto& v : world) {
+      const double out = std::max({ch.x_min - v.x(), v.x() - ch.x_max, ch.z_min - v.y(),
+                                   v.y() - ch.z_max});
+      const double worst_out = std::max({ch.x_min - worst.x(), worst.x() - ch.x_max,
+                                         ch.z_min - worst.y(), worst.y() - ch.z_max});
+      if (out > worst_out) worst = v;
+    }
+    const std::string where = naming.csv
+                                  ? fmt::format("{}:{}: fields 'x', 'z'", naming.path, r.line)
+                                  : naming.field(r, "", "centre");
+    throw InputError(fmt::format(
+        "{} = {} (yaw_deg {}): the floe reaches ({:.6g}, {:.6g}), outside the channel {}; "
+        "expected the whole floe inside the channel",
+        where, r.centre_text, r.yaw_deg, worst.x(), worst.y(), channel_text(ch)));
+  }
+  return f;
+}
+
+}  // namespace
+
+Layout read_layout_file(const std::string& path, const Channel& channel) {
+  check_channel(channel, path);
+
+  // format by extension
+  const std::string ext = layout_extension(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw InputError(fmt::format("{}: cannot open the layout file; expected a readable .csv or "
+                                 ".json file",
+                                 path));
+  }
+  const FileNaming naming{path, ext == ".csv"};
+  const std::vector<RawFloe> raw = naming.csv ? read_csv(path, in) : read_json(path, in);
+
+  // each floe on its own
+  Layout layout;
+  layout.channel_area = channel_area(channel);
+  layout.floes.reserve(raw.size());
+  double radius = 0.0;
+  for (const RawFloe& r : raw) {
+    layout.floes.push_back(finish_floe(r, naming, channel));
+    radius = std::max(radius, bounding_radius(layout.floes.back().shape));
+  }
+
+  // pairs: each floe against the earlier ones near it (cell list, O(N))
+  const size_t n = layout.floes.size();
+  std::vector<Polygon> world(n);
+  CellList cells(channel, 2.0 * radius, n);
+  for (size_t j = 0; j < n; ++j) {
+    const Floe& f = layout.floes[j];
+    world[j] = transformed(f.shape, f.centre, f.yaw);
+    const double rj = bounding_radius(f.shape);
+    int hit = -1;
+    cells.any_near(f.centre, [&](int i) {
+      const Floe& g = layout.floes[i];
+      const double reach = rj + bounding_radius(g.shape);
+      if ((g.centre - f.centre).squaredNorm() >= reach * reach) return false;
+      // negative gap: penetration below the file tolerance is rounding
+      if (!overlap(world[j], world[i], -kFileTolerance)) return false;
+      hit = i;
+      return true;
+    });
+    if (hit >= 0) {
+      const RawFloe& a = raw[j];
+      const RawFloe& b = raw[hit];
+      throw InputError(fmt::format(
+          "{} = {}: this floe (centre {}) overlaps {} (centre {}); expected floes that do not "
+          "overlap (touching is allowed)",
+          naming.field(a, "polygon", "polygon"), shorten(a.polygon_text), a.centre_text,
+          naming.name(b), b.centre_text));
+    }
+    cells.insert(static_cast<int>(j), cells.cell_of(f.centre));
+  }
+
+  layout.achieved_concentration = concentration(layout.floes, channel);
+  return layout;
+}
+
+void write_layout_file(const std::string& path, const std::vector<Floe>& floes) {
+  const std::string ext = layout_extension(path);
+  // "{}" prints the shortest decimal that reads back to the same double
+  std::string out;
+  if (ext == ".csv") {
+    out += "# icedem floe layout. x, z: floe centre (area centroid), m, tank frame;\n";
+    out += "# yaw_deg: rotation about +y, degrees; polygon: local vertices \"x z; ...\", m\n";
+    out += "x,z,yaw_deg,polygon\n";
+    for (const auto& f : floes) {
+      out += fmt::format("{},{},{},\"", f.centre.x(), f.centre.y(), f.yaw * 180.0 / kPi);
+      for (size_t k = 0; k < f.shape.size(); ++k) {
+        out += fmt::format("{}{} {}", k ? "; " : "", f.shape[k].x(), f.shape[k].y());
+      }
+      out += "\"\n";
+    }
+  } else {
+    out += "{\"floes\": [\n";
+    for (size_t i = 0; i < floes.size(); ++i) {
+      const Floe& f = floes[i];
+      out += fmt::format("  {{\"centre\": [{}, {}], \"yaw_deg\": {}, \"polygon\": [", f.centre.x(),
+                         f.centre.y(), f.yaw * 180.0 / kPi);
+      for (size_t k = 0; k < f.shape.size(); ++k) {
+        out += fmt::format("{}[{}, {}]", k ? ", " : "", f.shape[k].x(), f.shape[k].y());
+      }
+      out += i + 1 < floes.size() ? "]},\n" : "]}\n";
+    }
+    out += "]}\n";
+  }
+  std::ofstream file(path, std::ios::binary);
+  file << out;
+  if (!file) throw std::runtime_error("cannot write the layout file " + path);
+}
+
+}  // namespace icedem

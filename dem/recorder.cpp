@@ -1,0 +1,611 @@
+// The HDF5 recorder: buffered, crash-tolerant writing of one run's out.h5 (layout in
+// recorder.hpp).
+#include "dem/recorder.hpp"
+
+#include <H5Cpp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <cstdio>
+#include <ctime>
+#include <exception>
+#include <filesystem>
+#include <stdexcept>
+
+namespace icedem {
+
+namespace {
+
+// version of this file layout, written to /meta format_version; bump on incompatible change
+constexpr int kFormatVersion = 1;
+
+// rows per chunk of the per-step series: 1024 doubles = 8 KiB, a few seconds of a run
+constexpr hsize_t kSeriesChunkRows = 1024;
+
+// target chunk size of the snapshot arrays, bytes (HDF5 advice: 10 KiB to 1 MiB)
+constexpr std::size_t kSnapshotChunkBytes = std::size_t(256) << 10;
+
+// innermost description of the first HDF5 failure inside the current QuietHdf5 scope
+thread_local std::string first_hdf5_error;
+
+// collects the description of the innermost (first-raised) error on an HDF5 error stack
+herr_t collect_innermost(unsigned n, const H5E_error2_t* err, void* out) {
+  if (n == 0 && err->desc != nullptr) *static_cast<std::string*>(out) = err->desc;
+  return 0;
+}
+
+// HDF5 calls this when an API call fails, while its error stack is still intact
+herr_t record_error(hid_t stack, void*) {
+  if (first_hdf5_error.empty())
+    H5Ewalk2(stack, H5E_WALK_UPWARD, collect_innermost, &first_hdf5_error);
+  return 0;
+}
+
+/// Replaces HDF5's automatic error-stack printing, for the lifetime of the guard, by a
+/// recorder of the first error: failures are reported once, through the exception the
+/// recorder throws, with HDF5's most specific message (see hdf5_reason).
+class QuietHdf5 {
+ public:
+  QuietHdf5() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, record_error, nullptr);
+    first_hdf5_error.clear();
+  }
+  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+  QuietHdf5(const QuietHdf5&) = delete;
+  QuietHdf5& operator=(const QuietHdf5&) = delete;
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
+/// The most specific message HDF5 gave for the failure behind `e` (e.g. the errno text of a
+/// failed open), falling back to the C++ exception's own message.
+std::string hdf5_reason(const H5::Exception& e) {
+  return first_hdf5_error.empty() ? e.getDetailMsg() : first_hdf5_error;
+}
+
+std::string utc_now_iso8601() {
+  std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+H5::StrType utf8_string_type() {
+  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
+  type.setCset(H5T_CSET_UTF8);
+  return type;
+}
+
+// attributes are replaced, not rewritten, so that type and size may change between writes
+void write_attr(const H5::H5Object& obj, const std::string& name, const std::string& value) {
+  if (obj.attrExists(name)) obj.removeAttr(name);
+  H5::StrType type = utf8_string_type();
+  H5::Attribute attr = obj.createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
+  attr.write(type, value);
+}
+
+void write_attr(const H5::H5Object& obj, const std::string& name, double value) {
+  if (obj.attrExists(name)) obj.removeAttr(name);
+  H5::Attribute attr =
+      obj.createAttribute(name, H5::PredType::IEEE_F64LE, H5::DataSpace(H5S_SCALAR));
+  attr.write(H5::PredType::NATIVE_DOUBLE, &value);
+}
+
+void write_attr(const H5::H5Object& obj, const std::string& name, uint64_t value) {
+  if (obj.attrExists(name)) obj.removeAttr(name);
+  H5::Attribute attr =
+      obj.createAttribute(name, H5::PredType::STD_U64LE, H5::DataSpace(H5S_SCALAR));
+  attr.write(H5::PredType::NATIVE_UINT64, &value);
+}
+
+void write_attr(const H5::H5Object& obj, const std::string& name, int value) {
+  if (obj.attrExists(name)) obj.removeAttr(name);
+  H5::Attribute attr =
+      obj.createAttribute(name, H5::PredType::STD_I32LE, H5::DataSpace(H5S_SCALAR));
+  attr.write(H5::PredType::NATIVE_INT, &value);
+}
+
+/// A dataset whose first dimension grows by appended rows.
+struct Series {
+  std::unique_ptr<H5::DataSet> dataset;  // held by pointer: H5 objects must not be assigned
+  std::vector<hsize_t> row_shape;  // dimensions after the first
+  hsize_t rows = 0;                // rows written to the file
+
+  /// Appends `count` rows from contiguous memory of type `memtype`.
+  void write(const void* data, hsize_t count, const H5::DataType& memtype) {
+    if (count == 0) return;
+    std::vector<hsize_t> dims{rows + count};
+    dims.insert(dims.end(), row_shape.begin(), row_shape.end());
+    dataset->extend(dims.data());
+
+    // select the new rows in the file, the whole buffer in memory
+    std::vector<hsize_t> start(dims.size(), 0), block = dims;
+    start[0] = rows;
+    block[0] = count;
+    rows += count;
+    hsize_t elements = 1;
+    for (hsize_t d : block) elements *= d;
+    if (elements == 0) return;  // zero bodies: extend only
+    H5::DataSpace file_space = dataset->getSpace();
+    file_space.selectHyperslab(H5S_SELECT_SET, block.data(), start.data());
+    H5::DataSpace mem_space(static_cast<int>(block.size()), block.data());
+    dataset->write(data, memtype, mem_space, file_space);
+  }
+};
+
+/// Creates an empty, chunked, extendible dataset of rows of shape `row_shape` in `group`.
+Series create_series(const H5::Group& group, const std::string& name, const H5::DataType& type,
+                     const std::vector<hsize_t>& row_shape, hsize_t chunk_rows,
+                     const std::string& units, const std::string& description) {
+  std::vector<hsize_t> dims{0}, maxdims{H5S_UNLIMITED}, chunk{chunk_rows};
+  for (hsize_t d : row_shape) {
+    dims.push_back(d);
+    // a zero-size fixed dimension cannot hold a chunk; make it extendible instead
+    maxdims.push_back(d > 0 ? d : H5S_UNLIMITED);
+    chunk.push_back(std::max<hsize_t>(d, 1));
+  }
+  H5::DataSpace space(static_cast<int>(dims.size()), dims.data(), maxdims.data());
+  H5::DSetCreatPropList props;
+  props.setChunk(static_cast<int>(chunk.size()), chunk.data());
+  Series series;
+  series.dataset = std::make_unique<H5::DataSet>(group.createDataSet(name, type, space, props));
+  series.row_shape = row_shape;
+  write_attr(*series.dataset, "units", units);
+  write_attr(*series.dataset, "description", description);
+  return series;
+}
+
+/// Writes a fixed-size dataset in one go.
+void write_fixed(const H5::Group& group, const std::string& name, const H5::DataType& file_type,
+                 const H5::DataType& mem_type, const std::vector<hsize_t>& dims,
+                 const void* data, const std::string& units, const std::string& description) {
+  H5::DataSpace space(static_cast<int>(dims.size()), dims.data());
+  H5::DataSet dataset = group.createDataSet(name, file_type, space);
+  hsize_t elements = 1;
+  for (hsize_t d : dims) elements *= d;
+  if (elements > 0) dataset.write(data, mem_type);
+  write_attr(dataset, "units", units);
+  write_attr(dataset, "description", description);
+}
+
+// fracture events: the in-memory layout is FractureEvent itself, the file layout is packed
+H5::CompType fracture_mem_type() {
+  H5::CompType type(sizeof(FractureEvent));
+  type.insertMember("time", offsetof(FractureEvent, time), H5::PredType::NATIVE_DOUBLE);
+  type.insertMember("floe", offsetof(FractureEvent, floe), H5::PredType::NATIVE_INT);
+  type.insertMember("joint", offsetof(FractureEvent, joint), H5::PredType::NATIVE_INT);
+  type.insertMember("mode", offsetof(FractureEvent, mode), H5::PredType::NATIVE_INT);
+  type.insertMember("ratio", offsetof(FractureEvent, ratio), H5::PredType::NATIVE_DOUBLE);
+  return type;
+}
+
+H5::CompType fracture_file_type() {
+  H5::CompType type(std::size_t(28));
+  type.insertMember("time", 0, H5::PredType::IEEE_F64LE);
+  type.insertMember("floe", 8, H5::PredType::STD_I32LE);
+  type.insertMember("joint", 12, H5::PredType::STD_I32LE);
+  type.insertMember("mode", 16, H5::PredType::STD_I32LE);
+  type.insertMember("ratio", 20, H5::PredType::IEEE_F64LE);
+  return type;
+}
+
+}  // namespace
+
+struct Recorder::Impl {
+  std::string path;
+  std::unique_ptr<H5::H5File> file;  // H5 objects are held by pointer: their copy-assignment
+  std::unique_ptr<H5::Group> meta;   // operators are unsafe (deprecated implicit copies)
+  bool finished = false;
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+  std::size_t bodies = 0;
+  std::size_t appended_rows = 0;
+
+  // per-step series
+  Series time, force, moment, surge, cone_contacts, structure_position, awake_bodies;
+  // snapshots
+  Series snap_time, snap_position, snap_orientation, snap_awake;
+  // fracture events
+  Series events;
+  H5::CompType event_mem_type = fracture_mem_type();
+
+  // buffers of rows not yet written
+  std::vector<LoadSample> load_buffer;
+  std::vector<double> snap_time_buffer, snap_position_buffer, snap_orientation_buffer;
+  std::vector<uint8_t> snap_awake_buffer;
+  std::vector<FractureEvent> event_buffer;
+
+  void require_open(const char* what) const {
+    if (finished)
+      throw std::logic_error(std::string("Recorder::") + what + " called after finish() on '" +
+                             path + "'");
+  }
+
+  double elapsed_s() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  }
+
+  // every write to the file ends here, so the file on disk is consistent between writes
+  void flush_file() { file->flush(H5F_SCOPE_GLOBAL); }
+
+  void write_load_block() {
+    const std::size_t n = load_buffer.size();
+    if (n == 0) return;
+    // gather the buffered samples column by column
+    std::vector<double> t(n), f(3 * n), m(3 * n), sx(n), p(3 * n);
+    std::vector<int> contacts(n), awake(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const LoadSample& s = load_buffer[i];
+      t[i] = s.time;
+      for (int k = 0; k < 3; ++k) {
+        f[3 * i + k] = s.force[k];
+        m[3 * i + k] = s.moment[k];
+        p[3 * i + k] = s.structure_position[k];
+      }
+      // the paper's surge load resists towing (+x), so it is the negated x force
+      sx[i] = -s.force.x();
+      contacts[i] = s.cone_contacts;
+      awake[i] = s.awake_bodies;
+    }
+    const auto& dbl = H5::PredType::NATIVE_DOUBLE;
+    const auto& integer = H5::PredType::NATIVE_INT;
+    time.write(t.data(), n, dbl);
+    force.write(f.data(), n, dbl);
+    moment.write(m.data(), n, dbl);
+    surge.write(sx.data(), n, dbl);
+    cone_contacts.write(contacts.data(), n, integer);
+    structure_position.write(p.data(), n, dbl);
+    awake_bodies.write(awake.data(), n, integer);
+    load_buffer.clear();
+  }
+
+  void write_snapshot_block() {
+    const std::size_t k = snap_time_buffer.size();
+    if (k == 0) return;
+    snap_time.write(snap_time_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
+    snap_position.write(snap_position_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
+    snap_orientation.write(snap_orientation_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
+    snap_awake.write(snap_awake_buffer.data(), k, H5::PredType::NATIVE_UINT8);
+    snap_time_buffer.clear();
+    snap_position_buffer.clear();
+    snap_orientation_buffer.clear();
+    snap_awake_buffer.clear();
+  }
+
+  void write_event_block() {
+    events.write(event_buffer.data(), event_buffer.size(), event_mem_type);
+    event_buffer.clear();
+  }
+
+  void write_all() {
+    write_load_block();
+    write_snapshot_block();
+    write_event_block();
+    write_attr(*meta, "wall_time_s", elapsed_s());
+    flush_file();
+  }
+
+  std::size_t snapshot_buffer_bytes() const {
+    return snap_time_buffer.size() * sizeof(double) +
+           (snap_position_buffer.size() + snap_orientation_buffer.size()) * sizeof(double) +
+           snap_awake_buffer.size();
+  }
+
+  /// Calls `fn` with the group or dataset at `object_path`, creating missing groups along it.
+  template <typename Fn>
+  void with_object(const std::string& object_path, Fn fn) {
+    if (object_path.empty() || object_path[0] != '/')
+      throw std::invalid_argument("Recorder: attribute target '" + object_path +
+                                  "' must be an absolute HDF5 path such as \"/stats\"");
+    // walk the path one component at a time: nameExists fails on a missing parent
+    std::string prefix;
+    std::size_t pos = 1;
+    while (pos <= object_path.size()) {
+      std::size_t next = object_path.find('/', pos);
+      if (next == std::string::npos) next = object_path.size();
+      if (next > pos) {
+        prefix += "/" + object_path.substr(pos, next - pos);
+        if (!file->nameExists(prefix)) file->createGroup(prefix);
+      }
+      pos = next + 1;
+    }
+    if (prefix.empty()) prefix = "/";
+    if (prefix != "/" && file->childObjType(prefix) == H5O_TYPE_DATASET) {
+      fn(static_cast<const H5::H5Object&>(file->openDataSet(prefix)));
+    } else {
+      fn(static_cast<const H5::H5Object&>(file->openGroup(prefix)));
+    }
+  }
+
+  void create_layout(const RunMeta& run, const std::vector<BodyOutline>& outlines) {
+    // metadata first: a file killed at any later point says what run it belongs to
+    meta = std::make_unique<H5::Group>(file->createGroup("/meta"));
+    const H5::Group& m = *meta;
+    write_attr(m, "format_version", kFormatVersion);
+    write_attr(m, "scenario", run.scenario_text);
+    write_attr(m, "scenario_path", run.scenario_path);
+    write_attr(m, "command_line", run.command_line);
+    write_attr(m, "version", run.version);
+    write_attr(m, "bullet_version", run.bullet_version);
+    write_attr(m, "precision", run.precision);
+    write_attr(m, "seed", run.seed);
+    write_attr(m, "started_utc", utc_now_iso8601());
+    write_attr(m, "status", std::string("running"));
+    write_attr(m, "message", std::string(""));
+    write_attr(m, "wall_time_s", 0.0);
+
+    const H5::DataType& f8 = H5::PredType::IEEE_F64LE;
+    const H5::DataType& i4 = H5::PredType::STD_I32LE;
+    const H5::DataType& u1 = H5::PredType::STD_U8LE;
+
+    // per-step load series
+    H5::Group load = file->createGroup("/load");
+    time = create_series(load, "time", f8, {}, kSeriesChunkRows, "s", "simulation time");
+    force = create_series(load, "force", f8, {3}, kSeriesChunkRows, "N",
+                          "force by the ice on the structure, tank frame (x surge, y heave up, "
+                          "z sway)");
+    moment = create_series(load, "moment", f8, {3}, kSeriesChunkRows, "N m",
+                           "moment by the ice on the structure about the cone axis at the "
+                           "waterline, tank frame");
+    surge = create_series(load, "surge", f8, {}, kSeriesChunkRows, "N",
+                          "surge load = -force_x: the load resisting towing, positive");
+    cone_contacts = create_series(load, "cone_contacts", i4, {}, kSeriesChunkRows, "1",
+                                  "contact points between ice and structure");
+    H5::Group structure = file->createGroup("/structure");
+    structure_position = create_series(structure, "position", f8, {3}, kSeriesChunkRows, "m",
+                                       "structure reference point, tank frame");
+    H5::Group diagnostics = file->createGroup("/diagnostics");
+    awake_bodies = create_series(diagnostics, "awake_bodies", i4, {}, kSeriesChunkRows, "1",
+                                 "bodies being solved (not sleeping)");
+
+    // body outlines: a flat vertex list indexed by offsets (CSR), since outlines differ in size
+    bodies = outlines.size();
+    std::vector<int> floe_id(bodies);
+    std::vector<double> thickness(bodies), vertices;
+    std::vector<int64_t> offset(bodies + 1, 0);
+    for (std::size_t i = 0; i < bodies; ++i) {
+      floe_id[i] = outlines[i].floe_id;
+      thickness[i] = outlines[i].thickness;
+      for (const Eigen::Vector2d& v : outlines[i].outline) {
+        vertices.push_back(v.x());
+        vertices.push_back(v.y());
+      }
+      offset[i + 1] = offset[i] + static_cast<int64_t>(outlines[i].outline.size());
+    }
+    const hsize_t nb = bodies, nv = vertices.size() / 2;
+    H5::Group body_group = file->createGroup("/bodies");
+    write_fixed(body_group, "floe_id", i4, H5::PredType::NATIVE_INT, {nb}, floe_id.data(), "1",
+                "floe id of each body; body order is the snapshot order");
+    write_fixed(body_group, "thickness", f8, H5::PredType::NATIVE_DOUBLE, {nb},
+                thickness.data(), "m", "body thickness");
+    write_fixed(body_group, "vertex_offset", H5::PredType::STD_I64LE, H5::PredType::NATIVE_INT64,
+                {nb + 1}, offset.data(), "1",
+                "outline of body i is vertices[vertex_offset[i]:vertex_offset[i+1]]");
+    write_fixed(body_group, "vertices", f8, H5::PredType::NATIVE_DOUBLE, {nv, 2},
+                vertices.data(), "m", "outline vertices in the body frame (x, z)");
+
+    // snapshots: chunks of whole snapshots, sized so that a chunk stays near kSnapshotChunkBytes
+    const std::size_t snapshot_bytes = std::max<std::size_t>(bodies, 1) * 4 * sizeof(double);
+    const hsize_t snap_rows = std::clamp<hsize_t>(kSnapshotChunkBytes / snapshot_bytes, 1, 256);
+    H5::Group snapshots = file->createGroup("/snapshots");
+    snap_time = create_series(snapshots, "time", f8, {}, 256, "s", "snapshot time");
+    snap_position = create_series(snapshots, "position", f8, {nb, 3}, snap_rows, "m",
+                                  "body origin, tank frame");
+    snap_orientation =
+        create_series(snapshots, "orientation", f8, {nb, 4}, snap_rows, "1",
+                      "body-to-tank rotation as a unit quaternion (w, x, y, z)");
+    snap_awake = create_series(snapshots, "awake", u1, {nb}, snap_rows, "1",
+                               "1 if the body was awake (being solved)");
+
+    // fracture events
+    H5::Group fracture = file->createGroup("/fracture");
+    events = create_series(fracture, "events", fracture_file_type(), {}, 256,
+                           "time: s, floe: 1, joint: 1, mode: 1, ratio: 1",
+                           "joint breaks: time, floe id, joint index, failure mode code, "
+                           "load/threshold ratio of the criterion that fired");
+    flush_file();
+  }
+
+  // every object must be closed for the file to close: HDF5 keeps it open while any is
+  void close() {
+    for (Series* s : {&time, &force, &moment, &surge, &cone_contacts, &structure_position,
+                      &awake_bodies, &snap_time, &snap_position, &snap_orientation, &snap_awake,
+                      &events})
+      s->dataset.reset();
+    meta.reset();
+    file->close();
+    finished = true;
+  }
+};
+
+Recorder::Recorder(const std::string& path, const RunMeta& meta,
+                   const std::vector<BodyOutline>& bodies)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->path = path;
+  QuietHdf5 quiet;
+  // create the file
+  try {
+    H5::FileAccPropList access;
+    // HDF5 1.8 format: the 1.10 superblock (v3) marks an open file and refuses to open it
+    // after a crash until `h5clear -s`; 1.8 files open normally (tested by test_recorder)
+    access.setLibverBounds(H5F_LIBVER_V18, H5F_LIBVER_V18);
+    // no file lock: readers may watch a running file (they see the last flush)
+#if H5_VERSION_GE(1, 10, 7)
+    H5Pset_file_locking(access.getId(), false, true);
+#endif
+    // closing the file closes any object still open, so finish() really releases it
+    access.setFcloseDegree(H5F_CLOSE_STRONG);
+    impl_->file = std::make_unique<H5::H5File>(path, H5F_ACC_TRUNC,
+                                               H5::FileCreatPropList::DEFAULT, access);
+  } catch (const H5::Exception& e) {
+    std::string reason = hdf5_reason(e);
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
+      reason = "directory '" + parent.string() + "' does not exist";
+    throw std::runtime_error("cannot create output file '" + path + "': " + reason);
+  }
+  // lay it out
+  try {
+    impl_->create_layout(meta, bodies);
+  } catch (const H5::Exception& e) {
+    std::string reason = hdf5_reason(e);
+    try {
+      impl_->close();
+    } catch (const H5::Exception&) {
+      // already failing; the first error is the one to report
+    }
+    throw std::runtime_error("cannot write the layout of output file '" + path + "': " + reason);
+  }
+}
+
+void Recorder::append(const LoadSample& sample) {
+  impl_->require_open("append");
+  impl_->load_buffer.push_back(sample);
+  ++impl_->appended_rows;
+  if (impl_->load_buffer.size() >= kBlockRows) {
+    QuietHdf5 quiet;
+    try {
+      impl_->write_load_block();
+      impl_->flush_file();
+    } catch (const H5::Exception& e) {
+      throw std::runtime_error("cannot write load samples to '" + impl_->path +
+                               "': " + hdf5_reason(e));
+    }
+  }
+}
+
+void Recorder::append_snapshot(double time, const std::vector<BodyPose>& poses) {
+  impl_->require_open("append_snapshot");
+  if (poses.size() != impl_->bodies)
+    throw std::invalid_argument("Recorder::append_snapshot: " + std::to_string(poses.size()) +
+                                " poses given, the file was created with " +
+                                std::to_string(impl_->bodies) + " bodies");
+  impl_->snap_time_buffer.push_back(time);
+  for (const BodyPose& pose : poses) {
+    for (int k = 0; k < 3; ++k) impl_->snap_position_buffer.push_back(pose.position[k]);
+    // stored scalar first (w, x, y, z); Eigen keeps (x, y, z, w) in memory
+    const Eigen::Quaterniond& q = pose.orientation;
+    impl_->snap_orientation_buffer.insert(impl_->snap_orientation_buffer.end(),
+                                          {q.w(), q.x(), q.y(), q.z()});
+    impl_->snap_awake_buffer.push_back(pose.awake ? 1 : 0);
+  }
+  if (impl_->snapshot_buffer_bytes() >= kSnapshotBufferBytes) {
+    QuietHdf5 quiet;
+    try {
+      impl_->write_snapshot_block();
+      impl_->flush_file();
+    } catch (const H5::Exception& e) {
+      throw std::runtime_error("cannot write snapshots to '" + impl_->path +
+                               "': " + hdf5_reason(e));
+    }
+  }
+}
+
+void Recorder::append_fracture(const FractureEvent& event) {
+  impl_->require_open("append_fracture");
+  impl_->event_buffer.push_back(event);
+  if (impl_->event_buffer.size() >= kBlockRows) {
+    QuietHdf5 quiet;
+    try {
+      impl_->write_event_block();
+      impl_->flush_file();
+    } catch (const H5::Exception& e) {
+      throw std::runtime_error("cannot write fracture events to '" + impl_->path +
+                               "': " + hdf5_reason(e));
+    }
+  }
+}
+
+void Recorder::set_attributes(const std::string& group,
+                              const std::map<std::string, double>& values) {
+  impl_->require_open("set_attributes");
+  QuietHdf5 quiet;
+  try {
+    impl_->with_object(group, [&](const H5::H5Object& object) {
+      for (const auto& [name, value] : values) write_attr(object, name, value);
+    });
+    impl_->flush_file();
+  } catch (const H5::Exception& e) {
+    throw std::runtime_error("cannot write attributes on '" + group + "' in '" + impl_->path +
+                             "': " + hdf5_reason(e));
+  }
+}
+
+void Recorder::set_attribute(const std::string& group, const std::string& name,
+                             const std::string& value) {
+  impl_->require_open("set_attribute");
+  QuietHdf5 quiet;
+  try {
+    impl_->with_object(group, [&](const H5::H5Object& object) { write_attr(object, name, value); });
+    impl_->flush_file();
+  } catch (const H5::Exception& e) {
+    throw std::runtime_error("cannot write attribute '" + name + "' on '" + group + "' in '" +
+                             impl_->path + "': " + hdf5_reason(e));
+  }
+}
+
+void Recorder::flush() {
+  impl_->require_open("flush");
+  QuietHdf5 quiet;
+  try {
+    impl_->write_all();
+  } catch (const H5::Exception& e) {
+    throw std::runtime_error("cannot flush output file '" + impl_->path +
+                             "': " + hdf5_reason(e));
+  }
+}
+
+void Recorder::finish(const std::string& status, const std::string& message,
+                      double wall_time_s) {
+  impl_->require_open("finish");
+  QuietHdf5 quiet;
+  try {
+    impl_->write_all();
+    write_attr(*impl_->meta, "status", status);
+    write_attr(*impl_->meta, "message", message);
+    write_attr(*impl_->meta, "wall_time_s", wall_time_s);
+    write_attr(*impl_->meta, "finished_utc", utc_now_iso8601());
+    impl_->flush_file();
+    impl_->close();
+  } catch (const H5::Exception& e) {
+    throw std::runtime_error("cannot finish output file '" + impl_->path +
+                             "': " + hdf5_reason(e));
+  }
+}
+
+bool Recorder::finished() const { return impl_->finished; }
+
+std::size_t Recorder::load_rows() const { return impl_->appended_rows; }
+
+Recorder::~Recorder() {
+  if (!impl_ || impl_->finished) return;
+  // the run ended without finish(): keep what we have and say so
+  QuietHdf5 quiet;
+  try {
+    impl_->write_all();
+    const bool unwinding = std::uncaught_exceptions() > 0;
+    write_attr(*impl_->meta, "status", std::string("incomplete"));
+    write_attr(*impl_->meta, "message",
+               std::string("the recorder was destroyed without finish()") +
+                   (unwinding ? " while an exception was propagating" : ""));
+    impl_->flush_file();
+    impl_->close();
+  } catch (const H5::Exception& e) {
+    std::fprintf(stderr, "icedem: could not close output file '%s' cleanly: %s\n",
+                 impl_->path.c_str(), hdf5_reason(e).c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "icedem: could not close output file '%s' cleanly: %s\n",
+                 impl_->path.c_str(), e.what());
+  } catch (...) {
+    std::fprintf(stderr, "icedem: could not close output file '%s' cleanly\n",
+                 impl_->path.c_str());
+  }
+}
+
+}  // namespace icedem

@@ -332,6 +332,8 @@ Scene make_scene(const Scenario& sc) {
   s.output = {real(sc, "output.snapshot_interval")};
   s.stats = {real(sc, "stats.window_start_travel"), real(sc, "stats.window_end_travel"),
              real(sc, "stats.lowpass_hz")};
+  if (s.stats.lowpass_hz > 0 && s.stats.lowpass_hz >= 0.5 / s.time.dt)
+    fail(sc, "stats.lowpass_hz", fmt::format("must be below the Nyquist frequency 1/(2 dt) = {} Hz", 0.5 / s.time.dt));
   if (s.stats.window_end_travel > 0 && s.stats.window_end_travel <= s.stats.window_start_travel)
     fail(sc, "stats.window_end_travel", "must be beyond stats.window_start_travel (or 0 for the end of the run)");
   return s;

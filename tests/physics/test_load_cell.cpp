@@ -1,0 +1,143 @@
+// The load cell reads contact impulses on the kinematic structure: a box
+// resting on a kinematic plate must weigh -m g (bullet-notes.md: exact), with
+// the moment of that weight about the plate's reference point; and reserve
+// buoyancy measured by pushing a floe under with the structure is 2.04 N.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dem/initial_state.hpp"
+#include "dem/step.hpp"
+#include "tests/support/scenes.hpp"
+
+using namespace icedem;
+using icedem::testing::scene_from;
+
+namespace {
+
+const char* kBench = R"(
+[flow]
+model = "still"
+[structure]
+speed = 0.0
+start_x = 0.0
+[activation]
+sleeping = false
+)";
+
+Floe square_floe(double x, double z, double side = 0.3) {
+  const double a = side / 2;
+  return Floe{Eigen::Vector2d(x, z), 0.0, {{-a, -a}, {a, -a}, {a, a}, {-a, a}}};
+}
+
+// a world with a kinematic plate as the structure (reference point = plate origin)
+State bench_with_plate(const Scene& scene, const Eigen::Vector3d& plate_centre, const Eigen::Vector3d& half,
+                       const std::vector<Floe>& floes) {
+  State state;
+  state.world = std::make_unique<World>(scene);
+  state.world->add_structure(std::make_unique<btBoxShape>(btVector3(half.x(), half.y(), half.z())),
+                             plate_centre);
+  state.world->add_floes(floes);
+  state.flow = make_flow(scene);
+  state.structure_position = plate_centre;
+  return state;
+}
+
+// step with the plate held at `position` (the prescribed motion is replaced)
+void hold_plate(State& state, const Scene& scene, const Eigen::Vector3d& position, double seconds,
+                Eigen::Vector3d* mean_force = nullptr, Eigen::Vector3d* mean_moment = nullptr) {
+  const long n = std::lround(seconds / scene.time.dt);
+  Eigen::Vector3d f = Eigen::Vector3d::Zero(), m = Eigen::Vector3d::Zero();
+  for (long i = 0; i < n; ++i) {
+    state.world->set_structure_target(position);
+    state.world->dynamics().stepSimulation(scene.time.dt, 0);
+    LoadCell cell;
+    cell.accumulate(*state.world->dynamics().getDispatcher(), state.world->structure(), position);
+    const LoadReading r = cell.finish(scene.time.dt);
+    f += r.force, m += r.moment;
+  }
+  if (mean_force) *mean_force = f / n;
+  if (mean_moment) *mean_moment = m / n;
+}
+
+// one step with the plate at `position`, water forces on the floes; returns the load
+Eigen::Vector3d step_plate_and_water(State& state, const Scene& scene, const Eigen::Vector3d& position) {
+  state.world->set_structure_target(position);
+  state.structure_position = position;
+  const WaterParams water = water_params(scene.water);
+  for (FloeBody& f : state.world->floes()) {
+    const btTransform& t = f.body->getCenterOfMassTransform();
+    const btQuaternion q = t.getRotation();
+    BodyMotion motion;
+    motion.pose.linear() = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()).toRotationMatrix();
+    motion.pose.translation() = Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
+    const btVector3 v = f.body->getLinearVelocity(), w = f.body->getAngularVelocity();
+    motion.linear_velocity = {v.x(), v.y(), v.z()};
+    motion.angular_velocity = {w.x(), w.y(), w.z()};
+    const Wrench wr = water_wrench(f.shape->prism, motion, *state.flow, water, f.shape->damping);
+    f.body->applyCentralForce(btVector3(wr.force.x(), wr.force.y(), wr.force.z()));
+    f.body->applyTorque(btVector3(wr.torque.x(), wr.torque.y(), wr.torque.z()));
+  }
+  state.world->dynamics().stepSimulation(scene.time.dt, 0);
+  LoadCell cell;
+  cell.accumulate(*state.world->dynamics().getDispatcher(), state.world->structure(), position);
+  return cell.finish(scene.time.dt).force;
+}
+
+}  // namespace
+
+class LoadCellRestingBox : public ::testing::TestWithParam<bool> {};
+
+TEST_P(LoadCellRestingBox, ReadsMinusMgAndItsMoment) {
+  const bool split = GetParam();
+  const Scene scene = scene_from(kBench, {std::string("solver.split_impulse=") + (split ? "true" : "false")});
+  // a kinematic plate 0.5 m above the water, a 0.3 m ice box resting 0.2 m off its centre
+  const Eigen::Vector3d plate(0.0, 0.5, 0.0);
+  State state = bench_with_plate(scene, plate, {1.0, 0.01, 1.0}, {square_floe(0.2, 0.0)});
+  btRigidBody& box = *state.world->floes()[0].body;
+  btTransform t = box.getWorldTransform();
+  t.setOrigin(btVector3(0.2, plate.y() + 0.01 + scene.ice.thickness / 2 + 0.001, 0.0));
+  box.setWorldTransform(t);
+  const double m = 1.0 / box.getInvMass();
+
+  hold_plate(state, scene, plate, 2.0);  // settle
+  Eigen::Vector3d F, M;
+  hold_plate(state, scene, plate, 1.0, &F, &M);
+  // at rest the contact impulses carry the weight exactly (bullet-notes.md); 1e-6
+  // relative leaves room for the solver's convergence in the first settled steps
+  EXPECT_NEAR(F.y(), -m * scene.water.gravity, 1e-6 * m * scene.water.gravity);
+  EXPECT_NEAR(F.x(), 0.0, 1e-9);
+  EXPECT_NEAR(F.z(), 0.0, 1e-9);
+  // the weight acts 0.2 m along +x from the reference point: M = r x F, M_z = -0.2 m g
+  EXPECT_NEAR(M.z(), -0.2 * m * scene.water.gravity, 1e-6 * m * scene.water.gravity);
+  EXPECT_NEAR(M.x(), 0.0, 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(SplitImpulse, LoadCellRestingBox, ::testing::Values(true, false),
+                         [](const auto& info) { return info.param ? "split" : "baumgarte"; });
+
+TEST(LoadCell, PushingAFloeUnderTakesItsReserveBuoyancy) {
+  const Scene scene = scene_from(kBench);
+  const double h = scene.ice.thickness, L = 0.3;
+  // a plate larger than the floe, lowered until the floe is just fully submerged
+  const double half_t = 0.01;
+  const Eigen::Vector3d start(10.0, 0.05, 0.0);
+  State state = bench_with_plate(scene, start, {0.3, half_t, 0.3}, {square_floe(10.0, 0.0)});
+  const double y_end = -0.001 + half_t;  // floe top 1 mm below the water line
+  const long n = std::lround(5.0 / scene.time.dt);
+  for (long i = 0; i <= n; ++i) {
+    const double y = start.y() + (y_end - start.y()) * i / n;
+    Eigen::Vector3d p(start.x(), y, start.z());
+    state.world->set_structure_target(p);
+    step_plate_and_water(state, scene, p);
+  }
+  Eigen::Vector3d F = Eigen::Vector3d::Zero();
+  const long hold = std::lround(3.0 / scene.time.dt);
+  for (long i = 0; i < hold; ++i) F += step_plate_and_water(state, scene, {start.x(), y_end, start.z()});
+  F /= hold;
+  // (rho_w - rho_i) g L^2 h = 2.04 N (physics-targets.md 1); 2 % (issue 2) covers the
+  // 1 mm the plate's collision margin and the contact slop may leave the floe high
+  const double ref = (scene.water.density - scene.ice.density) * scene.water.gravity * L * L * h;
+  EXPECT_NEAR(ref, 2.04, 0.005);
+  EXPECT_NEAR(F.y(), ref, 0.02 * ref);
+}

@@ -1,0 +1,156 @@
+// Scenario parsing and validation: every error names file:line, the key, the
+// value and what was expected (DESIGN.md; style-examples.md item 6).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "dem/errors.hpp"
+#include "dem/scenario.hpp"
+#include "tests/support/scenes.hpp"
+
+using namespace icedem;
+using icedem::testing::scene_from;
+
+namespace {
+
+// the message of the InputError thrown by parsing `toml`, or "" if none
+std::string error_of(const std::string& toml, const std::vector<std::string>& overrides = {}) {
+  try {
+    scene_from(toml, overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Scenario, EmptyFileGivesThePaperDefaults) {
+  const Scene s = scene_from("");
+  EXPECT_DOUBLE_EQ(s.time.dt, 0.02);
+  EXPECT_DOUBLE_EQ(s.structure.speed, 0.07);
+  EXPECT_DOUBLE_EQ(s.ice.floe_size, 0.3);
+  EXPECT_DOUBLE_EQ(s.ice.concentration, 0.75);
+  EXPECT_DOUBLE_EQ(s.friction.ice_ice, 0.5);
+  EXPECT_EQ(s.flow.model, FlowModel::kPotential);
+  EXPECT_EQ(s.fracture.mode, FractureMode::kOff);
+  ASSERT_EQ(s.structure.profile.size(), 3u);
+  EXPECT_DOUBLE_EQ(s.structure.profile[1].radius, 0.614);
+}
+
+TEST(Scenario, EveryStableKeyOfTheDesignExists) {
+  // DESIGN.md "Stable scenario keys": sweeps and scripts rely on these paths
+  for (const char* key : {"seed", "time.dt", "time.duration", "solver.iterations", "structure.speed",
+                          "structure.start_x", "channel.length", "channel.width", "ice.floe_size",
+                          "ice.thickness", "ice.concentration", "ice.density", "ice.elastic_modulus",
+                          "ice.bending_strength", "ice.compressive_strength", "ice.shear_strength",
+                          "friction.ice_ice", "friction.ice_structure", "fracture.mode",
+                          "fracture.element_size", "fracture.cfm", "fracture.erp", "flow.model"})
+    EXPECT_NE(find_key(key), nullptr) << key;
+}
+
+TEST(Scenario, FileValuesAndIntegersForRealsAreAccepted) {
+  const Scene s = scene_from("seed = 7\n[time]\ndt = 0.01\nduration = 10\n[ice]\nfloe_size = 0.6\n");
+  EXPECT_EQ(s.seed, 7u);
+  EXPECT_DOUBLE_EQ(s.time.dt, 0.01);
+  EXPECT_DOUBLE_EQ(s.time.duration, 10.0);
+  EXPECT_DOUBLE_EQ(s.ice.floe_size, 0.6);
+}
+
+TEST(Scenario, UnknownKeyNamesFileLineAndSuggestsTheNearestKey) {
+  const std::string msg = error_of("[ice]\nthickness = 0.033\nfloe_sise = 0.3\n");
+  EXPECT_NE(msg.find("test.toml:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("'ice.floe_sise'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("did you mean 'ice.floe_size'"), std::string::npos) << msg;
+}
+
+TEST(Scenario, UnknownSectionIsAnError) {
+  const std::string msg = error_of("[frictoin]\nice_ice = 0.3\n");
+  EXPECT_NE(msg.find("test.toml:1"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("unknown section 'frictoin'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("did you mean 'friction'"), std::string::npos) << msg;
+}
+
+TEST(Scenario, WrongTypeNamesKeyValueAndExpectation) {
+  const std::string msg = error_of("[time]\n\ndt = \"fast\"\n");
+  EXPECT_NE(msg.find("test.toml:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("time.dt = \"fast\""), std::string::npos) << msg;
+  EXPECT_NE(msg.find("expected a number in (0, 1] (s)"), std::string::npos) << msg;
+}
+
+TEST(Scenario, OutOfRangeValueNamesTheAllowedRange) {
+  // a percentage where a fraction is expected
+  const std::string msg = error_of("[ice]\nconcentration = 75\n");
+  EXPECT_NE(msg.find("test.toml:2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("ice.concentration = 75"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("in (0, 0.9]"), std::string::npos) << msg;
+}
+
+TEST(Scenario, BadChoiceListsTheChoices) {
+  const std::string msg = error_of("[flow]\nmodel = \"vortex\"\n");
+  EXPECT_NE(msg.find("flow.model = \"vortex\""), std::string::npos) << msg;
+  EXPECT_NE(msg.find("\"still\", \"uniform\", \"potential\", \"coupled\""), std::string::npos) << msg;
+}
+
+TEST(Scenario, SyntaxErrorNamesTheLine) {
+  const std::string msg = error_of("[time]\ndt = 0.02\nduration = = 3\n");
+  EXPECT_NE(msg.find("test.toml:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("syntax"), std::string::npos) << msg;
+}
+
+TEST(Scenario, SetOverridesTheFile) {
+  const Scene s = scene_from("[friction]\nice_ice = 0.5\n", {"friction.ice_ice=0.3", "flow.model=still"});
+  EXPECT_DOUBLE_EQ(s.friction.ice_ice, 0.3);
+  EXPECT_EQ(s.flow.model, FlowModel::kStill);
+}
+
+TEST(Scenario, BadSetNamesTheOverride) {
+  const std::string msg = error_of("", {"friction.ice_ice=lots"});
+  EXPECT_NE(msg.find("--set friction.ice_ice=lots"), std::string::npos) << msg;
+  const std::string typo = error_of("", {"fricton.ice_ice=0.3"});
+  EXPECT_NE(typo.find("did you mean 'friction.ice_ice'"), std::string::npos) << typo;
+}
+
+TEST(Scenario, CrossKeyProblemPointsAtTheKeyLine) {
+  const std::string msg = error_of("[structure]\nspeed = 0.07\nprofile = [[0.0, 0.6], [-0.4, 0.2]]\n");
+  EXPECT_NE(msg.find("test.toml:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("structure.profile"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must increase"), std::string::npos) << msg;
+}
+
+TEST(Scenario, MissingLayoutFileIsAnErrorNamingTheKey) {
+  const std::string msg = error_of("[layout]\nfile = \"no/such/floes.csv\"\n");
+  EXPECT_NE(msg.find("test.toml:2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("layout.file"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("no such file"), std::string::npos) << msg;
+}
+
+TEST(Scenario, ResolvedTextParsesBackToTheSameScene) {
+  const Scene a = scene_from("seed = 3\n[ice]\nfloe_size = 0.6\n[flow]\nmodel = \"uniform\"\nvelocity = [0.1, 0, 0]\n");
+  const Scene b = scene_from(a.resolved_text);
+  EXPECT_EQ(a.resolved_text, b.resolved_text);
+  EXPECT_EQ(b.seed, 3u);
+  EXPECT_DOUBLE_EQ(b.flow.velocity.x(), 0.1);
+}
+
+TEST(Scenario, PaperScenarioFileIsValid) {
+  const Scene s = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/paper/small_floes.toml");
+  EXPECT_DOUBLE_EQ(s.ice.floe_size, 0.3);
+  EXPECT_DOUBLE_EQ(s.friction.ice_structure, 0.2);
+}
+
+TEST(Scenario, EveryShippedScenarioIsValid) {
+  // each scenario under scenarios/ must pass `icedem check`
+  int checked = 0;
+  for (const char* dir : {"/scenarios/paper", "/scenarios/validation", "/scenarios/examples"}) {
+    const std::string path = std::string(ICEDEM_SOURCE_DIR) + dir;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(path, ec)) {
+      if (entry.path().extension() != ".toml") continue;
+      EXPECT_NO_THROW(load_scene(entry.path().string())) << entry.path();
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 1);
+}

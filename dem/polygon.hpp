@@ -1,0 +1,77 @@
+// Convex polygons in the horizontal (x, z) plane of the tank frame: area,
+// centroid, convexity, rigid placement and the separating-axis overlap test.
+//
+// A polygon is a list of vertices (x, z) in metres; the last vertex connects
+// back to the first. Orientation convention used throughout icedem:
+//   a polygon is "ccw" (signed_area > 0) when its vertices run counter-clockwise
+//   SEEN FROM ABOVE (from +y looking down), i.e. in the same sense as a positive
+//   yaw, which turns +x towards -z. The top face of a floe extruded from a ccw
+//   outline then has its outward normal +y by the right-hand rule.
+//   Caution: in a plot with x to the right and z upwards (the view from below)
+//   a ccw polygon appears clockwise.
+// Yaw is a right-handed rotation about +y by theta (DESIGN.md, "Conventions"):
+//   x' = x cos(theta) + z sin(theta),  z' = -x sin(theta) + z cos(theta).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace icedem {
+
+/// Vertices (x, z) in m, in order; the polygon closes from the last to the first.
+using Polygon = std::vector<Eigen::Vector2d>;
+
+/// Signed area in m^2: positive for ccw (counter-clockwise seen from above, +y),
+/// negative for clockwise, zero for degenerate polygons and fewer than 3 vertices.
+double signed_area(const Polygon& polygon);
+
+/// Absolute area in m^2.
+double area(const Polygon& polygon);
+
+/// Area centroid (x, z) in m. For a polygon of zero area the vertex mean is
+/// returned (it has no area centroid).
+Eigen::Vector2d centroid(const Polygon& polygon);
+
+/// True if the polygon is a simple convex polygon of positive area: at least 3
+/// finite vertices, no repeated consecutive vertices, no reflex corner, no
+/// fold-back (spike) and a total turn of exactly one revolution (so star
+/// polygons and other self-intersecting outlines are rejected). Collinear
+/// vertices on a straight edge are accepted. Either orientation is accepted.
+bool is_convex(const Polygon& polygon);
+
+/// The same polygon with its vertices in ccw order (see the file comment);
+/// reverses the order if the signed area is negative, otherwise unchanged.
+Polygon make_ccw(Polygon polygon);
+
+/// Point `p` (x, z) rotated by `yaw` (rad) about +y, per the convention above.
+Eigen::Vector2d rotate(const Eigen::Vector2d& p, double yaw);
+
+/// World outline of a polygon given in its local frame, placed with its local
+/// origin at `centre` (m) and rotated by `yaw` (rad) about +y:
+/// world = centre + rotate(local, yaw).
+Polygon transformed(const Polygon& local, const Eigen::Vector2d& centre, double yaw);
+
+/// Minimum distance between two convex polygons in m; zero if they touch or
+/// their interiors intersect.
+double distance(const Polygon& a, const Polygon& b);
+
+/// Separating-axis test for convex polygons. True if `a` and `b` are closer than
+/// `gap` (m, the minimum required clearance). With gap = 0 it is true only if
+/// the interiors intersect: touching polygons do not overlap. With gap > 0 the
+/// true Euclidean distance is compared (corner-to-corner gaps included). A
+/// negative gap tolerates an interpenetration depth up to |gap| (to forgive
+/// rounding, e.g. for touching floes typed into a layout file).
+bool overlap(const Polygon& a, const Polygon& b, double gap = 0.0);
+
+/// Largest distance of a vertex from the local origin, m. For a shape centred
+/// on its area centroid, a circle of this radius about the centre holds it at
+/// any yaw.
+double bounding_radius(const Polygon& polygon);
+
+/// Square of side `side` (m) centred on the origin, edges along x and z, ccw.
+Polygon square(double side);
+
+/// Rectangle of length `lx` along x and `lz` along z (m), centred on the origin, ccw.
+Polygon rectangle(double lx, double lz);
+
+}  // namespace icedem
