@@ -207,7 +207,7 @@ struct Recorder::Impl {
   std::size_t appended_rows = 0;
 
   // per-step series
-  Series time, force, moment, surge, cone_contacts, structure_position, awake_bodies;
+  Series time, force, moment, surge, cone_contacts, structure_position, awake_bodies, contact_points;
   // snapshots
   Series snap_time, snap_position, snap_orientation, snap_awake;
   // fracture events
@@ -238,7 +238,7 @@ struct Recorder::Impl {
     if (n == 0) return;
     // gather the buffered samples column by column
     std::vector<double> t(n), f(3 * n), m(3 * n), sx(n), p(3 * n);
-    std::vector<int> contacts(n), awake(n);
+    std::vector<int> contacts(n), awake(n), points(n);
     for (std::size_t i = 0; i < n; ++i) {
       const LoadSample& s = load_buffer[i];
       t[i] = s.time;
@@ -251,6 +251,7 @@ struct Recorder::Impl {
       sx[i] = -s.force.x();
       contacts[i] = s.cone_contacts;
       awake[i] = s.awake_bodies;
+      points[i] = s.contact_points;
     }
     const auto& dbl = H5::PredType::NATIVE_DOUBLE;
     const auto& integer = H5::PredType::NATIVE_INT;
@@ -261,6 +262,7 @@ struct Recorder::Impl {
     cone_contacts.write(contacts.data(), n, integer);
     structure_position.write(p.data(), n, dbl);
     awake_bodies.write(awake.data(), n, integer);
+    contact_points.write(points.data(), n, integer);
     load_buffer.clear();
   }
 
@@ -362,6 +364,8 @@ struct Recorder::Impl {
     H5::Group diagnostics = file->createGroup("/diagnostics");
     awake_bodies = create_series(diagnostics, "awake_bodies", i4, {}, kSeriesChunkRows, "1",
                                  "bodies being solved (not sleeping)");
+    contact_points = create_series(diagnostics, "contact_points", i4, {}, kSeriesChunkRows, "1",
+                                   "contact points in the whole world (solver load)");
 
     // body outlines: a flat vertex list indexed by offsets (CSR), since outlines differ in size
     bodies = outlines.size();
@@ -414,7 +418,7 @@ struct Recorder::Impl {
   // every object must be closed for the file to close: HDF5 keeps it open while any is
   void close() {
     for (Series* s : {&time, &force, &moment, &surge, &cone_contacts, &structure_position,
-                      &awake_bodies, &snap_time, &snap_position, &snap_orientation, &snap_awake,
+                      &awake_bodies, &contact_points, &snap_time, &snap_position, &snap_orientation, &snap_awake,
                       &events})
       s->dataset.reset();
     meta.reset();

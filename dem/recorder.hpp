@@ -13,6 +13,7 @@
 //   /load/cone_contacts        [n]          i4  1     contact points on the structure
 //   /structure/position        [n x 3]      f8  m     structure reference point, tank frame
 //   /diagnostics/awake_bodies  [n]          i4  1     bodies being solved (not sleeping)
+//   /diagnostics/contact_points [n]         i4  1     contact points in the whole world
 //   /bodies/floe_id            [nb]         i4  1     floe of body i (body order = snapshot order)
 //   /bodies/thickness          [nb]         f8  m
 //   /bodies/vertex_offset      [nb+1]       i8  1     body i's outline: vertices[off[i]:off[i+1]]
@@ -90,6 +91,7 @@ struct LoadSample {
   Eigen::Vector3d structure_position;  // m, tank frame
   int cone_contacts;                   // contact points on the structure
   int awake_bodies;                    // bodies being solved
+  int contact_points = 0;              // contact points in the whole world (solver load)
 };
 
 /// One joint break.

@@ -239,7 +239,9 @@ Scene make_scene(const Scenario& sc) {
   s.time = {real(sc, "time.dt"), real(sc, "time.duration"), integer(sc, "time.substeps")};
   if (s.time.duration < s.time.dt) fail(sc, "time.duration", "must be at least one time step (time.dt)");
 
-  s.solver = {integer(sc, "solver.iterations"), get<bool>(sc, "solver.split_impulse"),
+  s.solver = {integer(sc, "solver.iterations"),
+              get<std::string>(sc, "solver.broadphase") == "sap" ? Broadphase::kSweepAndPrune : Broadphase::kDbvt,
+              get<bool>(sc, "solver.split_impulse"),
               real(sc, "solver.contact_erp")};
 
   // structure profile: y strictly increasing, radii >= 0, some radius > 0
@@ -328,7 +330,19 @@ Scene make_scene(const Scenario& sc) {
                   get<std::string>(sc, "activation.islands") == "bullet" ? IslandMode::kBullet
                                                                          : IslandMode::kContact,
                   real(sc, "activation.linear_threshold"), real(sc, "activation.angular_threshold"),
-                  real(sc, "activation.time")};
+                  real(sc, "activation.time"),
+                  get<bool>(sc, "activation.freeze_outside_region"),
+                  real(sc, "activation.region_ahead"),
+                  real(sc, "activation.region_behind")};
+  // a floe touching the hull must never be frozen: the solver cannot resolve a
+  // contact between the kinematic hull and a fixed obstacle
+  double hull_radius = 0;
+  for (const ProfileStation& st : s.structure.profile) hull_radius = std::max(hull_radius, st.radius);
+  const double reach = hull_radius + std::sqrt(2.0) * s.ice.floe_size;
+  for (const char* key : {"activation.region_ahead", "activation.region_behind"})
+    if (s.activation.freeze_outside_region && real(sc, key) < reach)
+      fail(sc, key, fmt::format("must be at least the hull radius plus a floe diagonal ({:.3f} m), so that "
+                                "no floe touching the structure is frozen", reach));
   s.output = {real(sc, "output.snapshot_interval")};
   s.stats = {real(sc, "stats.window_start_travel"), real(sc, "stats.window_end_travel"),
              real(sc, "stats.lowpass_hz")};

@@ -50,6 +50,8 @@ std::vector<KeySpec> make_keys() {
   // solver
   k.push_back(integer("solver.iterations", 10, 1, 100000,
                       "projected Gauss-Seidel iterations per step (Bullet default 10)"));
+  k.push_back(choice("solver.broadphase", "dbvt", {"dbvt", "sap"},
+                     "Bullet broadphase: dynamic AABB tree, or 3-axis sweep and prune over the tank"));
   k.push_back(boolean("solver.split_impulse", true,
                       "correct contact penetration with a separate position impulse, so measured "
                       "contact impulses carry no Baumgarte push (see README, load cell)"));
@@ -160,6 +162,14 @@ std::vector<KeySpec> make_keys() {
                        "angular speed below which a body may fall asleep"));
   k.push_back(positive("activation.time", "s", 1.0, 1.0e4,
                        "time below both thresholds before a body sleeps"));
+
+  k.push_back(boolean("activation.freeze_outside_region", true,
+                      "resting floes outside the activation region become fixed obstacles until "
+                      "struck or reached (dem/activation.hpp)"));
+  k.push_back(real("activation.region_ahead", "m", 3.0, 0.0, 1.0e4,
+                   "activation region: distance ahead of the structure axis where no floe is frozen"));
+  k.push_back(real("activation.region_behind", "m", 2.0, 0.0, 1.0e4,
+                   "activation region: distance behind the structure axis where no floe is frozen"));
 
   // output
   k.push_back(real("output.snapshot_interval", "s", 1.0, 0.0, 1.0e6,

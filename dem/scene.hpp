@@ -26,8 +26,10 @@ struct TimeSettings {
   int substeps;     // Bullet steps per dt
 };
 
+enum class Broadphase { kDbvt, kSweepAndPrune };
 struct SolverSettings {
   int iterations;       // PGS iterations per Bullet step
+  Broadphase broadphase;
   bool split_impulse;   // position correction kept out of the contact impulses
   double contact_erp;   // -, fraction of penetration corrected per step
 };
@@ -103,6 +105,9 @@ struct ActivationSettings {
   double linear_threshold;   // m/s
   double angular_threshold;  // rad/s
   double time;               // s below thresholds before sleeping
+  bool freeze_outside_region;  // resting floes outside the region become fixed obstacles
+  double region_ahead;         // m ahead of the structure axis
+  double region_behind;        // m behind it
 };
 
 struct OutputSettings {

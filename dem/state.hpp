@@ -23,7 +23,8 @@ struct State {
   Eigen::Vector3d structure_velocity = Eigen::Vector3d::Zero();  // m/s
 
   LoadReading load;    // ice load of the last step; written by read_load_cell
-  int awake_floes = 0;  // floes simulated in the last step
+  int awake_floes = 0;     // floes simulated in the last step
+  int contact_points = 0;  // contact points in the world after the last step
 
   std::optional<double> first_contact_time;  // s, first step with ice on the structure
 };

@@ -1,5 +1,6 @@
 #include "dem/step.hpp"
 
+#include "dem/activation.hpp"
 #include "dem/health_check.hpp"
 #include "dem/load_cell.hpp"
 #include "dem/water_forces.hpp"
@@ -69,7 +70,9 @@ void step(const Scene& scene, State& state) {
     state.time = t_next;
   }
   state.load = cell.finish(scene.time.dt);
+  update_activation(scene, state);
   state.awake_floes = state.world->awake_floes();
+  state.contact_points = state.world->contact_points();
   if (!state.first_contact_time && state.load.contacts > 0) state.first_contact_time = state.time;
   ++state.step;
   check_health(scene, state);

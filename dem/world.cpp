@@ -69,11 +69,23 @@ bool rectangle_half_extents(const Polygon& p, double& hx, double& hz) {
 World::World(const Scene& scene) : scene_(scene) {
   collision_config_ = std::make_unique<btDefaultCollisionConfiguration>();
   dispatcher_ = std::make_unique<btCollisionDispatcher>(collision_config_.get());
-  broadphase_ = std::make_unique<btDbvtBroadphase>();
+  if (scene.solver.broadphase == Broadphase::kSweepAndPrune) {
+    // sweep and prune needs the world's bounds: the tank with a margin
+    const ChannelSettings& c = scene.channel;
+    const double x0 = std::min(scene.structure.start_x, c.start_x) - 10.0;
+    const double x1 = c.start_x + c.length + 10.0;
+    const double z = c.tank_width / 2 + 5.0;
+    broadphase_ = std::make_unique<bt32BitAxisSweep3>(btVector3(x0, -c.tank_depth - 5.0, -z),
+                                                     btVector3(x1, 10.0, z), 65536);
+  } else {
+    broadphase_ = std::make_unique<btDbvtBroadphase>();
+  }
   solver_ = std::make_unique<btSequentialImpulseConstraintSolver>();
   dynamics_ = std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                               collision_config_.get());
   dynamics_->setGravity(btVector3(0, -scene.water.gravity, 0));
+  // sleeping and frozen bodies do not move: only update the bounding boxes of awake ones
+  dynamics_->setForceUpdateAllAabbs(false);
 
   // sleeping islands from touching contacts (see contact_islands.hpp for why)
   if (scene.activation.islands == IslandMode::kContact) {
@@ -246,6 +258,7 @@ int World::add_floe(const Floe& floe) {
   body->setFriction(scene_.friction.ice_ice);
   body->setRestitution(0);
   body->setUserIndex(kIce);
+  body->setUserIndex2(static_cast<int>(floes_.size()));  // floe index, for frozen_floe()
   body->setSleepingThresholds(scene_.activation.linear_threshold, scene_.activation.angular_threshold);
   dynamics_->addRigidBody(body.get());
   // floes start at rest at their equilibrium draft: asleep until something touches them
@@ -273,6 +286,40 @@ void World::set_structure_target(const Eigen::Vector3d& position) {
 int World::awake_floes() const {
   int n = 0;
   for (const FloeBody& f : floes_) n += f.body->isActive() ? 1 : 0;
+  return n;
+}
+
+void World::freeze(FloeBody& floe) {
+  btRigidBody& b = *floe.body;
+  b.setLinearVelocity(btVector3(0, 0, 0));
+  b.setAngularVelocity(btVector3(0, 0, 0));
+  b.setMassProps(0, btVector3(0, 0, 0));  // also flags it static: the solver treats it as fixed
+  b.updateInertiaTensor();
+  b.forceActivationState(ISLAND_SLEEPING);
+  floe.frozen = true;
+}
+
+void World::unfreeze(FloeBody& floe) {
+  btRigidBody& b = *floe.body;
+  b.setMassProps(floe.shape->mass, to_bt(floe.shape->inertia));  // clears the static flag
+  b.updateInertiaTensor();
+  b.setLinearVelocity(btVector3(0, 0, 0));
+  b.setAngularVelocity(btVector3(0, 0, 0));
+  b.forceActivationState(ACTIVE_TAG);
+  b.setDeactivationTime(0);
+  floe.frozen = false;
+}
+
+FloeBody* World::frozen_floe(const btCollisionObject* object) {
+  if (object->getUserIndex() != kIce) return nullptr;
+  FloeBody& f = floes_[object->getUserIndex2()];
+  return f.frozen ? &f : nullptr;
+}
+
+int World::contact_points() const {
+  int n = 0;
+  for (int i = 0; i < dispatcher_->getNumManifolds(); ++i)
+    n += dispatcher_->getManifoldByIndexInternal(i)->getNumContacts();
   return n;
 }
 

@@ -49,6 +49,7 @@ struct FloeBody {
   btRigidBody* body;       // owned by World
   int floe_id;             // index in the layout
   const FloeShape* shape;  // owned by World
+  bool frozen = false;     // a fixed obstacle for now (dem/activation.hpp)
 };
 
 /// The Bullet world and everything in it. Not copyable; one per run.
@@ -89,6 +90,18 @@ class World {
 
   /// Number of floes currently awake (simulated).
   int awake_floes() const;
+
+  /// Make a floe a fixed obstacle at rest (zero inverse mass, asleep).
+  void freeze(FloeBody& floe);
+
+  /// Make a frozen floe dynamic again, at rest and awake.
+  void unfreeze(FloeBody& floe);
+
+  /// The floe of a collision object if it is a frozen floe, else nullptr.
+  FloeBody* frozen_floe(const btCollisionObject* object);
+
+  /// Number of contact points in all manifolds (what the solver works on).
+  int contact_points() const;
 
  private:
   const FloeShape& shape_for(const Polygon& outline);

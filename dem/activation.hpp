@@ -1,0 +1,24 @@
+// Activation: which floes the solver works on.
+//
+// Inside the activation region around the structure (activation.region_behind
+// to activation.region_ahead along x, the full channel width) floes follow
+// Bullet's sleeping rules with contact islands (dem/contact_islands.hpp).
+// Outside it, a floe that has been slow for activation.time is frozen: it
+// becomes a fixed obstacle (zero inverse mass, no gravity, no water forces,
+// no integration), so a jammed field far ahead of the structure costs nothing
+// even though its contacts connect it to the moving rubble. That is the one
+// approximation: a frozen floe does not creep. A frozen floe is released when
+// the region reaches it, or when it is struck: when a contact impulse on it would
+// have moved it, were it free, faster than activation.linear_threshold.
+#pragma once
+
+#include "dem/scene.hpp"
+#include "dem/state.hpp"
+
+namespace icedem {
+
+/// Freeze resting floes outside the activation region and release frozen floes
+/// that the region reached or that were struck. Call after each Bullet step.
+void update_activation(const Scene& scene, State& state);
+
+}  // namespace icedem

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Benchmark: run time of the full small-floe scenario (seed paper, 300 s) with the
+# defaults and with each "skip" or solver choice switched, and print steps per
+# second, realtime factor, awake floes, contact points and the surge load, with
+# the ratio of each run time to the default in the same session.
+#
+#   scripts/bench.sh [--duration SECONDS] [--quick]
+#
+# --quick runs 100 s of simulated time (CI uses it). Results also go to
+# bench/results/bench-<date>.md. Set ICEDEM_BENCH_FLOAT=0 to skip the float build.
+set -euo pipefail
+source "$(dirname "$0")/common.sh"
+duration=300
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --duration) duration="$2"; shift 2 ;;
+    --quick) duration=100; shift ;;
+    *) echo "unknown option $1" >&2; exit 2 ;;
+  esac
+done
+ensure_packages
+build_project
+scenario="$ICEDEM_ROOT/scenarios/paper/small_floes.toml"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+# the float build, for the precision comparison
+float_bin=""
+if [ "${ICEDEM_BENCH_FLOAT:-1}" = 1 ]; then
+  fbuild="$ICEDEM_BUILD-float"
+  [ -f "$fbuild/CMakeCache.txt" ] || cmake -S "$ICEDEM_ROOT" -B "$fbuild" -DICEDEM_DOUBLE_PRECISION=OFF \
+    -DICEDEM_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+  cmake --build "$fbuild" --target icedem -j "$(nproc)" -- --no-print-directory >/dev/null
+  float_bin="$fbuild/dem/icedem"
+fi
+
+# name | binary | extra --set options
+variants=(
+  "default (double, dbvt, contact islands, sleeping, split impulse)|$ICEDEM_BUILD/dem/icedem|"
+  "sweep-and-prune broadphase|$ICEDEM_BUILD/dem/icedem|solver.broadphase=sap"
+  "Bullet islands (bounding-box overlap)|$ICEDEM_BUILD/dem/icedem|activation.islands=bullet"
+  "no sleeping (every floe solved)|$ICEDEM_BUILD/dem/icedem|activation.sleeping=false"
+  "no split impulse (Baumgarte)|$ICEDEM_BUILD/dem/icedem|solver.split_impulse=false"
+)
+[ -n "$float_bin" ] && variants+=("float precision|$float_bin|")
+
+out="$ICEDEM_ROOT/bench/results"
+mkdir -p "$out"
+report="$out/bench-$(date -u +%Y%m%d-%H%M%S).md"
+{
+  echo "# icedem benchmark, $(date -u '+%Y-%m-%d %H:%M UTC')"
+  echo
+  echo "Command: \`scripts/bench.sh --duration $duration\`; scenario scenarios/paper/small_floes.toml,"
+  echo "$duration s simulated, one core ($(nproc) on the machine), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)."
+  echo
+  echo "| variant | wall s | steps/s | realtime factor | time / default | mean awake | contact points (mean) | mean Fx N | max Fx N |"
+  echo "|---|---|---|---|---|---|---|---|---|"
+} > "$report"
+
+base_wall=""
+for v in "${variants[@]}"; do
+  IFS='|' read -r name bin sets <<<"$v"
+  args=(run "$scenario" -o "$work/run.h5" --summary-json "$work/run.json" -q --set "time.duration=$duration")
+  [ -n "$sets" ] && args+=(--set "$sets")
+  log "bench: $name"
+  "$bin" "${args[@]}" >/dev/null
+  row=$(/usr/bin/python3 - "$work/run.json" "$work/run.h5" "${base_wall:-0}" "$name" <<'PY'
+import json, sys, h5py
+s = json.load(open(sys.argv[1])); base = float(sys.argv[3])
+with h5py.File(sys.argv[2], "r") as f:
+    pts = f["/diagnostics/contact_points"][:].mean()
+ratio = s["wall_time_s"] / base if base > 0 else 1.0
+fmt = lambda v: "n/a" if v is None else f"{v:.2f}"
+print(f"| {sys.argv[4]} | {s['wall_time_s']:.1f} | {s['steps_per_second']:.0f} | {s['realtime_factor']:.1f} | "
+      f"{ratio:.2f} | {s['mean_awake']:.0f} | {pts:.0f} | {fmt(s['mean_fx_N'])} | {fmt(s['max_fx_N'])} |")
+print(s["wall_time_s"])
+PY
+)
+  echo "$row" | head -1 | tee -a "$report"
+  [ -z "$base_wall" ] && base_wall=$(echo "$row" | tail -1)
+done
+log "report: $report"

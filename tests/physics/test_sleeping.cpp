@@ -1,0 +1,146 @@
+// Sleeping: floes at rest cost nothing, and a disturbance wakes only the floes
+// it touches. Bullet builds sleeping islands from overlapping bounding boxes,
+// which joins a whole 75 % field into one island (bullet-notes.md); the contact
+// island manager (dem/contact_islands.hpp) joins only touching floes.
+#include <gtest/gtest.h>
+
+#include "dem/initial_state.hpp"
+#include "dem/step.hpp"
+#include "tests/support/scenes.hpp"
+
+using namespace icedem;
+using icedem::testing::scene_from;
+
+namespace {
+
+const char* kField = R"(
+[flow]
+model = "still"
+[structure]
+speed = 0.0
+start_x = -50.0
+[channel]
+start_x = 0.0
+length = 3.0
+width = 2.4
+[activation]
+freeze_outside_region = false
+)";
+
+// a floe near the middle of the field, set bobbing (heave only, so it touches nobody)
+btRigidBody& poke_middle_floe(State& state) {
+  FloeBody* best = nullptr;
+  double best_d = 1e9;
+  for (FloeBody& f : state.world->floes()) {
+    const btVector3 p = f.body->getCenterOfMassPosition();
+    const double d = std::hypot(p.x() - 1.5, p.z());
+    if (d < best_d) best_d = d, best = &f;
+  }
+  best->body->activate(true);
+  best->body->setLinearVelocity(btVector3(0, 0.05, 0));
+  return *best->body;
+}
+
+int awake_after(const Scene& scene, State& state, double seconds) {
+  for (long i = 0; i < std::lround(seconds / scene.time.dt); ++i) step(scene, state);
+  return state.world->awake_floes();
+}
+
+}  // namespace
+
+TEST(Sleeping, FloesAtRestStartAsleepAndStayAsleep) {
+  const Scene scene = scene_from(kField);
+  State state = initial_state(scene, scene_layout(scene).floes);
+  EXPECT_EQ(state.world->awake_floes(), 0);
+  EXPECT_EQ(awake_after(scene, state, 2.0), 0);
+}
+
+TEST(Sleeping, ContactIslandsWakeOnlyTheDisturbedFloe) {
+  const Scene scene = scene_from(kField, {"activation.islands=contact"});
+  State state = initial_state(scene, scene_layout(scene).floes);
+  ASSERT_GT(state.world->floes().size(), 50u);
+  poke_middle_floe(state);
+  // the bobbing floe keeps its 2 mm gaps: it touches no neighbour, so it is alone
+  EXPECT_EQ(awake_after(scene, state, 0.5), 1);
+  // and it falls asleep again once its heave has decayed (damping ratio 0.5)
+  EXPECT_EQ(awake_after(scene, state, 5.0), 0);
+}
+
+TEST(Sleeping, BulletIslandsWakeTheWholeField) {
+  // the behaviour the contact islands fix: same disturbance, Bullet's islands
+  const Scene scene = scene_from(kField, {"activation.islands=bullet"});
+  State state = initial_state(scene, scene_layout(scene).floes);
+  poke_middle_floe(state);
+  const int awake = awake_after(scene, state, 0.5);
+  EXPECT_GT(awake, static_cast<int>(state.world->floes().size()) / 2) << "awake " << awake;
+}
+
+// Freezing (dem/activation.hpp): resting floes outside the activation region are
+// fixed obstacles until struck faster than the wake speed or reached by the region.
+namespace {
+const char* kPair = R"(
+[flow]
+model = "still"
+[structure]
+speed = 0.0
+start_x = -50.0
+)";
+
+Floe square(double x, double z) {
+  return Floe{Eigen::Vector2d(x, z), 0.0, {{-0.15, -0.15}, {0.15, -0.15}, {0.15, 0.15}, {-0.15, 0.15}}};
+}
+}  // namespace
+
+TEST(Freezing, RestingFloesOutsideTheRegionAreFrozen) {
+  const Scene scene = scene_from(kPair);
+  State state = initial_state(scene, {square(10.0, 0.0), square(10.5, 0.0)});
+  step(scene, state);
+  for (const FloeBody& f : state.world->floes()) {
+    EXPECT_TRUE(f.frozen);
+    EXPECT_EQ(f.body->getInvMass(), 0.0);  // a fixed obstacle for the solver
+  }
+}
+
+TEST(Freezing, FloesInsideTheRegionAreNeverFrozen) {
+  // the structure 1 m behind the floes: they are inside region_ahead (3 m)
+  const Scene scene = scene_from(kPair, {"structure.start_x=9.0"});
+  State state = initial_state(scene, {square(10.0, 0.0), square(10.5, 0.0)});
+  for (int i = 0; i < 100; ++i) step(scene, state);
+  for (const FloeBody& f : state.world->floes()) EXPECT_FALSE(f.frozen);
+}
+
+TEST(Freezing, StruckFloeIsReleasedAndCarriesOn) {
+  const Scene scene = scene_from(kPair);
+  State state = initial_state(scene, {square(10.0, 0.0), square(10.5, 0.0)});
+  step(scene, state);
+  FloeBody& striker = state.world->floes()[0];
+  FloeBody& target = state.world->floes()[1];
+  ASSERT_TRUE(target.frozen);
+  // throw the first floe at the second at 5 cm/s (10x the wake speed)
+  state.world->unfreeze(striker);
+  striker.body->setLinearVelocity(btVector3(0.05, 0, 0));
+  const double x0 = target.body->getCenterOfMassPosition().x();
+  for (int i = 0; i < 400; ++i) step(scene, state);
+  // drag slows it (time constant ~11 s) but the 0.2 m gap closes within ~5 s; inelastic contact then shares the momentum: the
+  // target must have moved on by millimetres at least (frozen, it would not move at all)
+  EXPECT_GT(target.body->getCenterOfMassPosition().x() - x0, 0.005);
+}
+
+TEST(Freezing, SlowContactDoesNotReleaseAFrozenFloe) {
+  const Scene scene = scene_from(kPair);
+  State state = initial_state(scene, {square(10.0, 0.0), square(10.302, 0.0)});
+  step(scene, state);
+  FloeBody& pusher = state.world->floes()[0];
+  FloeBody& target = state.world->floes()[1];
+  state.world->unfreeze(pusher);
+  // creep into it at a fifth of the wake speed: the frozen floe stays fixed
+  const double v = 0.2 * scene.activation.linear_threshold;
+  const double x0 = target.body->getCenterOfMassPosition().x();
+  for (int i = 0; i < 100; ++i) {
+    pusher.body->activate(true);
+    pusher.body->setLinearVelocity(btVector3(v, 0, 0));
+    step(scene, state);
+  }
+  EXPECT_TRUE(target.frozen);
+  EXPECT_EQ(target.body->getCenterOfMassPosition().x(), x0);
+}
