@@ -8,14 +8,19 @@
 // no integration), so a jammed field far ahead of the structure costs nothing
 // even though its contacts connect it to the moving rubble. That is the one
 // approximation: a frozen floe does not creep. A frozen floe is released when
-// the region reaches it, or when it is struck: when a contact impulse on it would
-// have moved it, were it free, faster than activation.linear_threshold.
+// the region reaches it, or when an awake body is about to strike it faster
+// than activation.linear_threshold: that check runs inside each Bullet step,
+// after collision detection and before the solve, so the solver handles the
+// strike with the floe's real mass.
 #pragma once
 
 #include "dem/scene.hpp"
 #include "dem/state.hpp"
 
 namespace icedem {
+
+/// Hook the strike check into the world's Bullet steps (once, after building it).
+void install_activation(World& world);
 
 /// Freeze resting floes outside the activation region and release frozen floes
 /// that the region reached or that were struck. Call after each Bullet step.

@@ -40,4 +40,9 @@ void DynamicsWorld::replace_island_manager(btSimulationIslandManager* manager) {
   m_ownsIslandManager = false;
 }
 
+void DynamicsWorld::solveConstraints(btContactSolverInfo& info) {
+  if (pre_solve_) pre_solve_();
+  btDiscreteDynamicsWorld::solveConstraints(info);
+}
+
 }  // namespace icedem

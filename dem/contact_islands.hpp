@@ -11,6 +11,8 @@
 // independently, and a sleeping floe is woken when an awake one touches it.
 #pragma once
 
+#include <functional>
+
 #include <BulletCollision/CollisionDispatch/btSimulationIslandManager.h>
 #include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 
@@ -24,12 +26,19 @@ class ContactIslandManager : public btSimulationIslandManager {
 };
 
 /// A btDiscreteDynamicsWorld whose island manager can be replaced (Bullet keeps
-/// it in a protected member with no setter).
+/// it in a protected member with no setter), with a hook that runs after
+/// collision detection and before the constraint solve of every Bullet step.
 class DynamicsWorld : public btDiscreteDynamicsWorld {
  public:
   using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
   /// Use `manager` (not owned; must outlive the world) instead of the built-in one.
   void replace_island_manager(btSimulationIslandManager* manager);
+  /// Run `hook` before each solve: contacts are fresh, velocities not yet solved.
+  void set_pre_solve_hook(std::function<void()> hook) { pre_solve_ = std::move(hook); }
+  void solveConstraints(btContactSolverInfo& info) override;
+
+ private:
+  std::function<void()> pre_solve_;
 };
 
 }  // namespace icedem

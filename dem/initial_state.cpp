@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "dem/activation.hpp"
 #include "dem/step.hpp"
 
 namespace icedem {
@@ -42,6 +43,7 @@ std::unique_ptr<FlowField> make_flow(const Scene& scene) {
 State initial_state(const Scene& scene, const std::vector<Floe>& floes) {
   State state;
   state.world = build_world(scene, floes);
+  install_activation(*state.world);
   state.flow = make_flow(scene);
   state.structure_position = structure_position_at(scene, 0.0);
   state.structure_velocity = Eigen::Vector3d(scene.structure.speed, 0.0, 0.0);

@@ -101,8 +101,8 @@ World::World(const Scene& scene) : scene_(scene) {
   // Bullet only splits penetrations deeper than 4 cm by default, i.e. never for
   // 33 mm ice; a zero threshold splits every penetrating contact
   info.m_splitImpulsePenetrationThreshold = 0;
-  info.m_erp = scene.solver.contact_erp;   // Baumgarte, when split impulse is off
-  info.m_erp2 = scene.solver.contact_erp;  // split-impulse position correction
+  // Bullet 3 uses m_erp2 for every contact (split or not); m_erp is for joints
+  info.m_erp2 = scene.solver.contact_erp;
 
   gCalculateCombinedFrictionCallback = &combined_friction;
   gCalculateCombinedRestitutionCallback = &combined_restitution;

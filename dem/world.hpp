@@ -81,8 +81,8 @@ class World {
   /// the next Bullet step; Bullet derives its velocity from the motion.
   void set_structure_target(const Eigen::Vector3d& position);
 
-  btDiscreteDynamicsWorld& dynamics() { return *dynamics_; }
-  const btDiscreteDynamicsWorld& dynamics() const { return *dynamics_; }
+  DynamicsWorld& dynamics() { return *dynamics_; }
+  const DynamicsWorld& dynamics() const { return *dynamics_; }
   btRigidBody* structure() const { return structure_; }
   std::vector<FloeBody>& floes() { return floes_; }
   const std::vector<FloeBody>& floes() const { return floes_; }

@@ -63,5 +63,21 @@ assert f['/meta'].attrs['status'] == 'interrupted', f['/meta'].attrs['status']
 assert f['/load/time'].shape[0] > 10
 " && ok "interrupted file readable and marked" || fail "interrupted file"
 
+# 6. a numerical blow-up: a time step far beyond the buoyancy's stability limit
+#    (omega dt = 17.9 rad/s x 0.5 s >> 2): exit 3, a message naming step, floe and
+#    quantity, and the file holds the steps before it, marked failed
+msg=$("$icedem" run "$src/scenarios/examples/short_tow.toml" -o blow.h5 -q --set time.dt=0.5 \
+      --set activation.sleeping=false 2>&1); code=$?
+[ $code -eq 3 ] && ok "blow-up exits 3" || fail "blow-up exit code $code: $msg"
+echo "$msg" | grep -q "step [0-9]* (t = " && echo "$msg" | grep -q "floe [0-9]*" \
+  && ok "blow-up message names step and floe" || fail "blow-up message: $msg"
+$py -c "
+import h5py
+f = h5py.File('blow.h5', 'r')
+assert f['/meta'].attrs['status'] == 'failed'
+assert 'blow-up' in f['/meta'].attrs['message']
+assert f['/load/time'].shape[0] >= 1
+" && ok "failed run's file readable and marked" || fail "failed run's file"
+
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]

@@ -141,3 +141,27 @@ TEST(LoadCell, PushingAFloeUnderTakesItsReserveBuoyancy) {
   EXPECT_NEAR(ref, 2.04, 0.005);
   EXPECT_NEAR(F.y(), ref, 0.02 * ref);
 }
+
+TEST(LoadCell, PushingAFloeThroughStillWaterReadsItsDrag) {
+  // a kinematic wall towed at 0.07 m/s pushes one floe face-on through still water;
+  // at steady speed the contact force on the wall is the floe's drag
+  const Scene scene = scene_from(kBench, {"structure.speed=0.07", "structure.start_x=9.8"});
+  State state = bench_with_plate(scene, {9.8, 0.0, 0.0}, {0.05, 0.2, 0.5}, {square_floe(10.0, 0.0)});
+  const long n = std::lround(60.0 / scene.time.dt), tail = std::lround(20.0 / scene.time.dt);
+  Eigen::Vector3d F = Eigen::Vector3d::Zero();
+  for (long i = 0; i < n; ++i) {
+    step(scene, state);
+    if (i >= n - tail) F += state.load.force;
+  }
+  F /= tail;
+  // drag law of water_forces.hpp at v = 0.07 m/s: form drag on the front edge plus
+  // skin friction on the bottom and both side faces
+  const double L = 0.3, d = scene.ice.thickness * scene.ice.density / scene.water.density, v = 0.07;
+  const double drag = 0.5 * scene.water.density * v * v *
+                      (scene.water.drag_coefficient * L * d + scene.water.skin_friction_coefficient * (L * L + 2 * L * d));
+  ASSERT_NEAR(drag, 0.0250, 0.0005);
+  // the ice resists the tow: -x on the structure. 2 %: after 20 s of pushing (five
+  // drag time constants) the floe has reached the wall's speed to well within that
+  EXPECT_NEAR(-F.x(), drag, 0.02 * drag);
+  EXPECT_NEAR(F.z(), 0.0, 0.02 * drag);
+}
