@@ -31,6 +31,7 @@ void release_struck(World& world) {
     const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
     const btCollisionObject* a = m->getBody0();
     const btCollisionObject* b = m->getBody1();
+    if (!a->isStaticObject() && !b->isStaticObject()) continue;  // frozen floes are static
     FloeBody* frozen = world.frozen_floe(a);
     if (!frozen) frozen = world.frozen_floe(b);
     if (!frozen || (world.frozen_floe(a) && world.frozen_floe(b))) continue;

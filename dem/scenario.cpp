@@ -239,7 +239,7 @@ Scene make_scene(const Scenario& sc) {
   s.time = {real(sc, "time.dt"), real(sc, "time.duration"), integer(sc, "time.substeps")};
   if (s.time.duration < s.time.dt) fail(sc, "time.duration", "must be at least one time step (time.dt)");
 
-  s.solver = {integer(sc, "solver.iterations"),
+  s.solver = {integer(sc, "solver.iterations"), real(sc, "solver.residual_threshold"),
               get<std::string>(sc, "solver.broadphase") == "sap" ? Broadphase::kSweepAndPrune : Broadphase::kDbvt,
               get<bool>(sc, "solver.split_impulse"),
               real(sc, "solver.contact_erp")};

@@ -50,6 +50,9 @@ std::vector<KeySpec> make_keys() {
   // solver
   k.push_back(integer("solver.iterations", 10, 1, 100000,
                       "projected Gauss-Seidel iterations per step (Bullet default 10)"));
+  k.push_back(real("solver.residual_threshold", "N^2 s^2", 0.0, 0.0, 1.0,
+                   "stop the PGS iterations of a step early once the largest squared impulse "
+                   "change of an iteration is below this; 0: always solver.iterations"));
   k.push_back(choice("solver.broadphase", "dbvt", {"dbvt", "sap"},
                      "Bullet broadphase: dynamic AABB tree, or 3-axis sweep and prune over the tank"));
   k.push_back(boolean("solver.split_impulse", true,
@@ -163,9 +166,10 @@ std::vector<KeySpec> make_keys() {
   k.push_back(positive("activation.time", "s", 1.0, 1.0e4,
                        "time below both thresholds before a body sleeps"));
 
-  k.push_back(boolean("activation.freeze_outside_region", true,
+  k.push_back(boolean("activation.freeze_outside_region", false,
                       "resting floes outside the activation region become fixed obstacles until "
-                      "struck or reached (dem/activation.hpp)"));
+                      "struck or reached (dem/activation.hpp): 2-3x faster, but the frozen field "
+                      "cannot creep, which shortens peak spacing and raises peaks (README)"));
   k.push_back(real("activation.region_ahead", "m", 3.0, 0.0, 1.0e4,
                    "activation region: distance ahead of the structure axis where no floe is frozen"));
   k.push_back(real("activation.region_behind", "m", 2.0, 0.0, 1.0e4,

@@ -29,6 +29,7 @@ struct TimeSettings {
 enum class Broadphase { kDbvt, kSweepAndPrune };
 struct SolverSettings {
   int iterations;       // PGS iterations per Bullet step
+  double residual_threshold;  // (N s)^2, early stop of the iterations; 0 = never
   Broadphase broadphase;
   bool split_impulse;   // position correction kept out of the contact impulses
   double contact_erp;   // -, fraction of penetration corrected per step

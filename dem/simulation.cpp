@@ -200,6 +200,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.sim_time_s = state.time;
   summary.mean_awake = state.step ? awake_sum / state.step : 0.0;
   summary.first_contact_s = state.first_contact_time ? *state.first_contact_time : -1.0;
+  summary.stage_times = state.stage_times;
   compute_statistics(scene, history, summary);
   summary.wall_time_s = wall();
   write_statistics(recorder, summary);

@@ -12,6 +12,16 @@
 
 namespace icedem {
 
+/// Wall time spent in each stage of step(), accumulated over the run (s).
+struct StageTimes {
+  double structure = 0;   // move_structure
+  double water = 0;       // apply_water_forces
+  double bullet = 0;      // collide, solve, integrate (Bullet)
+  double load_cell = 0;   // read_load_cell
+  double activation = 0;  // update_activation
+  double health = 0;      // check_health
+};
+
 struct State {
   std::unique_ptr<World> world;     // Bullet bodies; poses and velocities change every step
   std::unique_ptr<FlowField> flow;  // water velocity model; follows the structure
@@ -27,6 +37,8 @@ struct State {
   int contact_points = 0;  // contact points in the world after the last step
 
   std::optional<double> first_contact_time;  // s, first step with ice on the structure
+
+  StageTimes stage_times;  // written by step()
 };
 
 }  // namespace icedem

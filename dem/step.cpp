@@ -1,5 +1,7 @@
 #include "dem/step.hpp"
 
+#include <chrono>
+
 #include "dem/activation.hpp"
 #include "dem/health_check.hpp"
 #include "dem/load_cell.hpp"
@@ -7,6 +9,17 @@
 
 namespace icedem {
 namespace {
+
+// adds the wall time of its scope to a StageTimes field (MuJoCo's TM_START/TM_END)
+class StageTimer {
+ public:
+  explicit StageTimer(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~StageTimer() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point start_;
+};
 
 Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
@@ -60,22 +73,23 @@ Eigen::Vector3d structure_position_at(const Scene& scene, double t) {
 void step(const Scene& scene, State& state) {
   const double h = scene.time.dt / scene.time.substeps;
   const double t0 = state.time;
+  StageTimes& times = state.stage_times;
   LoadCell cell;
   for (int k = 1; k <= scene.time.substeps; ++k) {
     const double t_next = t0 + k * h;
-    move_structure(scene, state, t_next);
-    apply_water_forces(scene, state);
-    advance_bullet(state, h);
-    read_load_cell(state, cell);
+    { StageTimer t(times.structure); move_structure(scene, state, t_next); }
+    { StageTimer t(times.water); apply_water_forces(scene, state); }
+    { StageTimer t(times.bullet); advance_bullet(state, h); }
+    { StageTimer t(times.load_cell); read_load_cell(state, cell); }
     state.time = t_next;
   }
   state.load = cell.finish(scene.time.dt);
-  update_activation(scene, state);
+  { StageTimer t(times.activation); update_activation(scene, state); }
   state.awake_floes = state.world->awake_floes();
   state.contact_points = state.world->contact_points();
   if (!state.first_contact_time && state.load.contacts > 0) state.first_contact_time = state.time;
   ++state.step;
-  check_health(scene, state);
+  { StageTimer t(times.health); check_health(scene, state); }
 }
 
 }  // namespace icedem

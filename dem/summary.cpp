@@ -15,6 +15,10 @@ std::string summary_table(const RunSummary& s) {
                      "({:.1f}x real time, {:.0f} steps/s), awake floes {:.1f} on average\n",
                      s.floes, 100 * s.achieved_concentration, s.steps, s.sim_time_s, s.wall_time_s, rtf,
                      s.wall_time_s > 0 ? s.steps / s.wall_time_s : 0.0, s.mean_awake);
+  const StageTimes& t = s.stage_times;
+  out += fmt::format("  wall time by stage: Bullet {:.1f} s, water {:.1f} s, activation {:.1f} s, load cell {:.1f} s, "
+                     "other {:.1f} s\n", t.bullet, t.water, t.activation, t.load_cell,
+                     s.wall_time_s - t.bullet - t.water - t.activation - t.load_cell);
   if (!s.has_statistics) {
     out += fmt::format("  no load statistics: {}\n", s.statistics_note);
     return out;
@@ -61,6 +65,9 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["floes"] = s.floes;
   j["achieved_concentration"] = s.achieved_concentration;
   j["mean_awake"] = s.mean_awake;
+  const StageTimes& t = s.stage_times;
+  j["stage_time_s"] = {{"structure", t.structure}, {"water", t.water},         {"bullet", t.bullet},
+                       {"load_cell", t.load_cell}, {"activation", t.activation}, {"health", t.health}};
   return j;
 }
 

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dem/state.hpp"
 #include "dem/statistics.hpp"
 
 namespace icedem {
@@ -33,6 +34,7 @@ struct RunSummary {
   double achieved_concentration = 0.0;
   double mean_awake = 0.0;  // floes simulated per step, averaged over the run
   int breaks = 0;           // joint failures (0 with rigid floes)
+  StageTimes stage_times;   // s of wall time per stage of step()
 };
 
 /// A short human-readable table.

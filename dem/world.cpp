@@ -95,6 +95,7 @@ World::World(const Scene& scene) : scene_(scene) {
 
   btContactSolverInfo& info = dynamics_->getSolverInfo();
   info.m_numIterations = scene.solver.iterations;
+  info.m_leastSquaresResidualThreshold = scene.solver.residual_threshold;
   info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
   info.m_restitution = 0;
   info.m_splitImpulse = scene.solver.split_impulse;

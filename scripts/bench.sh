@@ -37,6 +37,7 @@ fi
 # name | binary | extra --set options
 variants=(
   "default (double, dbvt, contact islands, sleeping, split impulse)|$ICEDEM_BUILD/dem/icedem|"
+  "freeze resting floes outside the activation region|$ICEDEM_BUILD/dem/icedem|activation.freeze_outside_region=true"
   "sweep-and-prune broadphase|$ICEDEM_BUILD/dem/icedem|solver.broadphase=sap"
   "Bullet islands (bounding-box overlap)|$ICEDEM_BUILD/dem/icedem|activation.islands=bullet"
   "no sleeping (every floe solved)|$ICEDEM_BUILD/dem/icedem|activation.sleeping=false"

@@ -84,6 +84,8 @@ model = "still"
 [structure]
 speed = 0.0
 start_x = -50.0
+[activation]
+freeze_outside_region = true
 )";
 
 Floe square(double x, double z) {
