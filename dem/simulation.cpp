@@ -62,10 +62,8 @@ std::vector<BodyPose> body_poses(const World& world) {
   std::vector<BodyPose> poses;
   poses.reserve(world.floes().size());
   for (const FloeBody& f : world.floes()) {
-    const btTransform& t = f.body->getCenterOfMassTransform();
-    const btQuaternion q = t.getRotation();
-    poses.push_back(BodyPose{Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z()),
-                             Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()), f.body->isActive()});
+    const Eigen::Isometry3d pose = body_pose(*f.body);
+    poses.push_back(BodyPose{pose.translation(), Eigen::Quaterniond(pose.linear()), f.body->isActive()});
   }
   return poses;
 }

@@ -23,15 +23,6 @@ class StageTimer {
 
 Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
-Eigen::Isometry3d pose_of(const btRigidBody& body) {
-  const btTransform& t = body.getCenterOfMassTransform();
-  const btQuaternion q = t.getRotation();
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()).toRotationMatrix();
-  pose.translation() = to_eigen(t.getOrigin());
-  return pose;
-}
-
 // prescribed carriage motion: the kinematic structure reaches x(t + h) at the
 // end of the coming Bullet step, and the flow model follows it
 void move_structure(const Scene& scene, State& state, double t_next) {
@@ -41,6 +32,8 @@ void move_structure(const Scene& scene, State& state, double t_next) {
   state.flow->set_structure(state.structure_position, state.structure_velocity);
 }
 
+}  // namespace
+
 // buoyancy, drag and damping on awake floes (sleeping ones are at rest and get
 // neither gravity nor water forces from Bullet's integration)
 void apply_water_forces(const Scene& scene, State& state) {
@@ -48,12 +41,14 @@ void apply_water_forces(const Scene& scene, State& state) {
   for (FloeBody& floe : state.world->floes()) {
     btRigidBody& body = *floe.body;
     if (!body.isActive()) continue;
-    BodyMotion motion{pose_of(body), to_eigen(body.getLinearVelocity()), to_eigen(body.getAngularVelocity())};
+    BodyMotion motion{body_pose(body), to_eigen(body.getLinearVelocity()), to_eigen(body.getAngularVelocity())};
     const Wrench w = water_wrench(floe.shape->prism, motion, *state.flow, water, floe.shape->damping);
     body.applyCentralForce(btVector3(w.force.x(), w.force.y(), w.force.z()));
     body.applyTorque(btVector3(w.torque.x(), w.torque.y(), w.torque.z()));
   }
 }
+
+namespace {
 
 // Bullet: collide, solve contacts with PGS, integrate (one internal step of h)
 void advance_bullet(State& state, double h) { state.world->dynamics().stepSimulation(h, 0); }

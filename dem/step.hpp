@@ -12,6 +12,10 @@ namespace icedem {
 /// Throws NumericalError on a blow-up.
 void step(const Scene& scene, State& state);
 
+/// The water stage: buoyancy, drag and damping on every awake floe (Bullet
+/// clears applied forces after each of its steps, so call it before each).
+void apply_water_forces(const Scene& scene, State& state);
+
 /// Where the structure's reference point is at time t (prescribed carriage motion).
 Eigen::Vector3d structure_position_at(const Scene& scene, double t);
 

@@ -324,6 +324,15 @@ int World::contact_points() const {
   return n;
 }
 
+Eigen::Isometry3d body_pose(const btRigidBody& body) {
+  const btTransform& t = body.getCenterOfMassTransform();
+  const btQuaternion q = t.getRotation();
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()).toRotationMatrix();
+  pose.translation() = Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
+  return pose;
+}
+
 WaterParams water_params(const WaterSettings& w) {
   return WaterParams{w.density, w.gravity, w.drag_coefficient, w.skin_friction_coefficient,
                      w.heave_damping_ratio, w.roll_pitch_damping_ratio};

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <btBulletDynamicsCommon.h>
 
 #include "dem/contact_islands.hpp"
@@ -124,6 +125,9 @@ class World {
   std::vector<FloeBody> floes_;
   btRigidBody* structure_ = nullptr;
 };
+
+/// A body's centre-of-mass pose as an Eigen transform (body frame -> tank frame).
+Eigen::Isometry3d body_pose(const btRigidBody& body);
 
 /// Water properties and hydrodynamic coefficients of the scene.
 WaterParams water_params(const WaterSettings& water);

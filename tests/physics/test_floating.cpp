@@ -13,6 +13,7 @@
 
 using namespace icedem;
 using icedem::testing::scene_from;
+using icedem::testing::square_floe;
 
 namespace {
 
@@ -26,11 +27,6 @@ sleeping = false
 speed = 0.0
 start_x = -50.0
 )";
-
-Floe square_floe(double x, double z, double side = 0.3) {
-  const double a = side / 2;
-  return Floe{Eigen::Vector2d(x, z), 0.0, {{-a, -a}, {a, -a}, {a, a}, {-a, a}}};
-}
 
 double roll_pitch_deg(const btRigidBody& body) {
   // angle between the floe's normal (body y) and the vertical

@@ -12,6 +12,7 @@
 
 using namespace icedem;
 using icedem::testing::scene_from;
+using icedem::testing::square_floe;
 
 namespace {
 
@@ -24,11 +25,6 @@ start_x = 0.0
 [activation]
 sleeping = false
 )";
-
-Floe square_floe(double x, double z, double side = 0.3) {
-  const double a = side / 2;
-  return Floe{Eigen::Vector2d(x, z), 0.0, {{-a, -a}, {a, -a}, {a, a}, {-a, a}}};
-}
 
 // a world with a kinematic plate as the structure (reference point = plate origin)
 State bench_with_plate(const Scene& scene, const Eigen::Vector3d& plate_centre, const Eigen::Vector3d& half,
@@ -64,20 +60,7 @@ void hold_plate(State& state, const Scene& scene, const Eigen::Vector3d& positio
 Eigen::Vector3d step_plate_and_water(State& state, const Scene& scene, const Eigen::Vector3d& position) {
   state.world->set_structure_target(position);
   state.structure_position = position;
-  const WaterParams water = water_params(scene.water);
-  for (FloeBody& f : state.world->floes()) {
-    const btTransform& t = f.body->getCenterOfMassTransform();
-    const btQuaternion q = t.getRotation();
-    BodyMotion motion;
-    motion.pose.linear() = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()).toRotationMatrix();
-    motion.pose.translation() = Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
-    const btVector3 v = f.body->getLinearVelocity(), w = f.body->getAngularVelocity();
-    motion.linear_velocity = {v.x(), v.y(), v.z()};
-    motion.angular_velocity = {w.x(), w.y(), w.z()};
-    const Wrench wr = water_wrench(f.shape->prism, motion, *state.flow, water, f.shape->damping);
-    f.body->applyCentralForce(btVector3(wr.force.x(), wr.force.y(), wr.force.z()));
-    f.body->applyTorque(btVector3(wr.torque.x(), wr.torque.y(), wr.torque.z()));
-  }
+  apply_water_forces(scene, state);
   state.world->dynamics().stepSimulation(scene.time.dt, 0);
   LoadCell cell;
   cell.accumulate(*state.world->dynamics().getDispatcher(), state.world->structure(), position);

@@ -10,6 +10,7 @@
 
 using namespace icedem;
 using icedem::testing::scene_from;
+using icedem::testing::square_floe;
 
 namespace {
 
@@ -88,14 +89,11 @@ start_x = -50.0
 freeze_outside_region = true
 )";
 
-Floe square(double x, double z) {
-  return Floe{Eigen::Vector2d(x, z), 0.0, {{-0.15, -0.15}, {0.15, -0.15}, {0.15, 0.15}, {-0.15, 0.15}}};
-}
 }  // namespace
 
 TEST(Freezing, RestingFloesOutsideTheRegionAreFrozen) {
   const Scene scene = scene_from(kPair);
-  State state = initial_state(scene, {square(10.0, 0.0), square(10.5, 0.0)});
+  State state = initial_state(scene, {square_floe(10.0, 0.0), square_floe(10.5, 0.0)});
   step(scene, state);
   for (const FloeBody& f : state.world->floes()) {
     EXPECT_TRUE(f.frozen);
@@ -106,14 +104,14 @@ TEST(Freezing, RestingFloesOutsideTheRegionAreFrozen) {
 TEST(Freezing, FloesInsideTheRegionAreNeverFrozen) {
   // the structure 1 m behind the floes: they are inside region_ahead (3 m)
   const Scene scene = scene_from(kPair, {"structure.start_x=9.0"});
-  State state = initial_state(scene, {square(10.0, 0.0), square(10.5, 0.0)});
+  State state = initial_state(scene, {square_floe(10.0, 0.0), square_floe(10.5, 0.0)});
   for (int i = 0; i < 100; ++i) step(scene, state);
   for (const FloeBody& f : state.world->floes()) EXPECT_FALSE(f.frozen);
 }
 
 TEST(Freezing, StruckFloeIsReleasedAndCarriesOn) {
   const Scene scene = scene_from(kPair);
-  State state = initial_state(scene, {square(10.0, 0.0), square(10.5, 0.0)});
+  State state = initial_state(scene, {square_floe(10.0, 0.0), square_floe(10.5, 0.0)});
   step(scene, state);
   FloeBody& striker = state.world->floes()[0];
   FloeBody& target = state.world->floes()[1];
@@ -130,7 +128,7 @@ TEST(Freezing, StruckFloeIsReleasedAndCarriesOn) {
 
 TEST(Freezing, SlowContactDoesNotReleaseAFrozenFloe) {
   const Scene scene = scene_from(kPair);
-  State state = initial_state(scene, {square(10.0, 0.0), square(10.302, 0.0)});
+  State state = initial_state(scene, {square_floe(10.0, 0.0), square_floe(10.302, 0.0)});
   step(scene, state);
   FloeBody& pusher = state.world->floes()[0];
   FloeBody& target = state.world->floes()[1];

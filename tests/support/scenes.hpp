@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "dem/floe_layout.hpp"
 #include "dem/scenario.hpp"
 
 namespace icedem::testing {
@@ -11,6 +12,12 @@ namespace icedem::testing {
 /// A Scene from TOML text (defaults fill the rest); `overrides` as for --set.
 inline Scene scene_from(const std::string& toml, const std::vector<std::string>& overrides = {}) {
   return make_scene(parse_scenario(toml, "test.toml", ICEDEM_SOURCE_DIR, overrides));
+}
+
+/// A square floe of side `side` (m) centred at (x, z), unrotated.
+inline Floe square_floe(double x, double z, double side = 0.3) {
+  const double a = side / 2;
+  return Floe{Eigen::Vector2d(x, z), 0.0, {{-a, -a}, {a, -a}, {a, a}, {-a, a}}};
 }
 
 }  // namespace icedem::testing

@@ -26,10 +26,7 @@ sleeping = false
 )";
 
 State two_floes(const Scene& scene) {
-  auto square = [](double x) {
-    return Floe{Eigen::Vector2d(x, 0.0), 0.0, {{-0.15, -0.15}, {0.15, -0.15}, {0.15, 0.15}, {-0.15, 0.15}}};
-  };
-  State state = initial_state(scene, {square(10.0), square(11.0)});
+  State state = initial_state(scene, {icedem::testing::square_floe(10.0, 0.0), icedem::testing::square_floe(11.0, 0.0)});
   state.step = 1234;
   state.time = 24.68;
   return state;
