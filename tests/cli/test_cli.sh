@@ -28,6 +28,11 @@ echo keep > keep.h5
 "$icedem" check "$src/scenarios/paper/small_floes.toml" >/dev/null && ok "check accepts the paper scenario" \
   || fail "check rejected the paper scenario"
 
+# 3b. the hull as STL for the OpenFOAM case: one facet per triangle, closed
+"$icedem" stl "$src/scenarios/paper/small_floes.toml" -o hull.stl >/dev/null \
+  && [ "$(grep -c 'facet normal' hull.stl)" -eq "$(grep -c 'endfacet' hull.stl)" ] \
+  && [ "$(grep -c 'facet normal' hull.stl)" -gt 100 ] && ok "stl writes the hull" || fail "stl"
+
 # 4. a short run: summary JSON keys of DESIGN.md and the HDF5 layout
 "$icedem" run "$src/scenarios/examples/short_tow.toml" -o run.h5 --summary-json run.json -q \
   --set time.duration=20 >/dev/null 2>&1 && ok "short run exits 0" || fail "short run failed"
