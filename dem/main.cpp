@@ -37,6 +37,9 @@ int run_command(const std::string& scenario_path, std::string output, const std:
                 const std::string& summary_path, bool quiet, const std::string& command_line) {
   const Scene scene = load_scene(scenario_path, sets);
   if (output.empty()) output = std::filesystem::path(scenario_path).stem().string() + ".h5";
+  const std::filesystem::path dir = std::filesystem::absolute(output).parent_path();
+  if (!std::filesystem::is_directory(dir))
+    throw InputError(fmt::format("-o {}: the directory {} does not exist", output, dir.string()));
   RunOptions options{output, !quiet, command_line};
   const RunSummary summary = run_simulation(scene, options);
   std::cout << summary_table(summary) << std::flush;

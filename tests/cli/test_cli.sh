@@ -24,6 +24,10 @@ echo keep > keep.h5
 "$icedem" run "$src/scenarios/examples/short_tow.toml" -o keep.h5 --set time.dt=-1 >/dev/null 2>&1
 [ "$(cat keep.h5)" = keep ] && ok "existing file kept on bad --set" || fail "existing file clobbered"
 
+# 2b. an output in a missing directory is bad input too
+"$icedem" run "$src/scenarios/examples/short_tow.toml" -o no/such/dir/x.h5 >/dev/null 2>&1; code=$?
+[ $code -eq 2 ] && ok "missing output directory exits 2" || fail "missing output directory exit code $code"
+
 # 3. check validates only
 "$icedem" check "$src/scenarios/paper/small_floes.toml" >/dev/null && ok "check accepts the paper scenario" \
   || fail "check rejected the paper scenario"
