@@ -306,24 +306,24 @@ Scene make_scene(const Scenario& sc) {
     fail(sc, "flow.model",
          "the OpenFOAM coupling is not part of this build yet; use \"still\", \"uniform\" or \"potential\"");
 
+  // characteristic length l_c = (D / (rho_w g))^(1/4), D = E h^3 / (12 (1 - nu^2))
+  // (physics-targets.md 2): "auto" makes only floes at least this large breakable
+  const double D = s.ice.elastic_modulus * std::pow(s.ice.thickness, 3) /
+                   (12.0 * (1.0 - s.ice.poisson_ratio * s.ice.poisson_ratio));
   const std::string& fracture = get<std::string>(sc, "fracture.mode");
   s.fracture = {fracture == "on" ? FractureMode::kOn : fracture == "auto" ? FractureMode::kAuto
                                                                            : FractureMode::kOff,
-                real(sc, "fracture.element_size"), real(sc, "fracture.cfm"), real(sc, "fracture.erp")};
-  if (s.fracture.mode == FractureMode::kOn)
-    fail(sc, "fracture.mode", "breakable ice elements are not part of this build yet; use \"off\"");
-  if (s.fracture.mode == FractureMode::kAuto) {
-    // "auto" keeps floes smaller than the characteristic length rigid (paper: 0.3 m < l_c);
-    // l_c = (D / (rho_w g))^(1/4), D = E h^3 / (12 (1 - nu^2)) (physics-targets.md 2)
-    const double D = s.ice.elastic_modulus * std::pow(s.ice.thickness, 3) /
-                     (12.0 * (1.0 - s.ice.poisson_ratio * s.ice.poisson_ratio));
-    const double lc = std::pow(D / (s.water.density * s.water.gravity), 0.25);
-    if (s.ice.floe_size >= lc)
-      fail(sc, "fracture.mode",
-           fmt::format("\"auto\" would make these {} m floes breakable (characteristic length {:.3f} m), "
-                       "and breakable ice is not part of this build yet; use \"off\"",
-                       s.ice.floe_size, lc));
-    s.fracture.mode = FractureMode::kOff;
+                real(sc, "fracture.element_size"), real(sc, "fracture.cfm"), real(sc, "fracture.erp"),
+                std::pow(D / (s.water.density * s.water.gravity), 0.25)};
+  const bool breakable = s.fracture.mode == FractureMode::kOn ||
+                         (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
+  if (breakable && s.layout.file.empty()) {
+    // generated square floes must be a whole number of elements across
+    const double n = s.ice.floe_size / s.fracture.element_size;
+    if (std::abs(n - std::round(n)) > 1e-6)
+      fail(sc, "fracture.element_size",
+           fmt::format("ice.floe_size = {} m is not a whole number of elements ({:.3f}); choose an element size "
+                       "that divides the floe size", s.ice.floe_size, n));
   }
 
   s.activation = {get<bool>(sc, "activation.sleeping"),

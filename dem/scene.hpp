@@ -97,6 +97,7 @@ struct FractureSettings {
   double element_size;  // m
   double cfm;           // -, Bullet units
   double erp;           // -
+  double characteristic_length;  // m, l_c = (D / (rho_w g))^(1/4) of the ice ("auto")
 };
 
 enum class IslandMode { kContact, kBullet };

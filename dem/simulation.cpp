@@ -143,6 +143,8 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
                                       {"achieved_concentration", layout.achieved_concentration},
                                       {"target_concentration", scene.ice.concentration},
                                       {"channel_area_m2", layout.channel_area}});
+  recorder.set_attribute("/fracture/events", "mode_names",
+                         "0 compression, 1 shear, 2 bending, 3 tension, 4 in-plane bending");
   recorder.set_attribute("/layout", "source", scene.layout.file.empty() ? "generated" : scene.layout.file);
 
   const long total_steps = std::lround(scene.time.duration / scene.time.dt);
@@ -176,6 +178,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       history.heave.push_back(load.force.y());
       history.sway.push_back(load.force.z());
       awake_sum += state.awake_floes;
+      for (const FractureEvent& e : state.fracture_events) recorder.append_fracture(e);
       if (snapshot_every && state.step % snapshot_every == 0)
         recorder.append_snapshot(state.time, body_poses(*state.world));
 
@@ -199,6 +202,8 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.mean_awake = state.step ? awake_sum / state.step : 0.0;
   summary.first_contact_s = state.first_contact_time ? *state.first_contact_time : -1.0;
   summary.stage_times = state.stage_times;
+  summary.breaks_by_mode = state.breaks_by_mode;
+  for (int n : state.breaks_by_mode) summary.breaks += n;
   compute_statistics(scene, history, summary);
   summary.wall_time_s = wall();
   write_statistics(recorder, summary);

@@ -1,13 +1,16 @@
 // The State: everything that changes during a run (the Scene does not).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "dem/flow_field.hpp"
 #include "dem/load_cell.hpp"
+#include "dem/recorder.hpp"
 #include "dem/world.hpp"
 
 namespace icedem {
@@ -20,6 +23,7 @@ struct StageTimes {
   double load_cell = 0;   // read_load_cell
   double activation = 0;  // update_activation
   double health = 0;      // check_health
+  double fracture = 0;    // check_fracture
 };
 
 struct State {
@@ -37,6 +41,9 @@ struct State {
   int contact_points = 0;  // contact points in the world after the last step
 
   std::optional<double> first_contact_time;  // s, first step with ice on the structure
+
+  std::vector<FractureEvent> fracture_events;  // breaks of the last step; written by check_fracture
+  std::array<int, 5> breaks_by_mode{};         // all breaks so far, by FailureMode value
 
   StageTimes stage_times;  // written by step()
 };

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "dem/activation.hpp"
+#include "dem/fracture.hpp"
 #include "dem/health_check.hpp"
 #include "dem/load_cell.hpp"
 #include "dem/water_forces.hpp"
@@ -69,6 +70,7 @@ void step(const Scene& scene, State& state) {
   const double h = scene.time.dt / scene.time.substeps;
   const double t0 = state.time;
   StageTimes& times = state.stage_times;
+  state.fracture_events.clear();
   LoadCell cell;
   for (int k = 1; k <= scene.time.substeps; ++k) {
     const double t_next = t0 + k * h;
@@ -77,6 +79,7 @@ void step(const Scene& scene, State& state) {
     { StageTimer t(times.bullet); advance_bullet(state, h); }
     { StageTimer t(times.load_cell); read_load_cell(state, cell); }
     state.time = t_next;
+    { StageTimer t(times.fracture); check_fracture(scene, state); }
   }
   state.load = cell.finish(scene.time.dt);
   { StageTimer t(times.activation); update_activation(scene, state); }

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "dem/joint_loads.hpp"
+
 namespace icedem {
 
 std::string summary_table(const RunSummary& s) {
@@ -29,9 +31,9 @@ std::string summary_table(const RunSummary& s) {
                      st.lowpass_hz > 0 ? fmt::format(", low-pass {} Hz", st.lowpass_hz) : "");
   out += fmt::format("  surge load (resisting towing): mean {:.2f} N   max {:.2f} N   std {:.2f} N\n",
                      st.mean, st.max, st.std);
-  out += fmt::format("  load peaks {:d}, mean spacing {} s; breaks {:d}\n", st.peaks,
-                     std::isfinite(st.peak_interval_s) ? fmt::format("{:.2f}", st.peak_interval_s) : "n/a",
-                     s.breaks);
+  out += fmt::format("  load peaks {:d}, mean spacing {} s; breaks {:d} (compression {}, shear {}, bending {})\n",
+                     st.peaks, std::isfinite(st.peak_interval_s) ? fmt::format("{:.2f}", st.peak_interval_s) : "n/a",
+                     s.breaks, s.breaks_by_mode[0], s.breaks_by_mode[1], s.breaks_by_mode[2]);
   return out;
 }
 
@@ -57,6 +59,8 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["peak_interval_s"] = ok ? num(s.surge.peak_interval_s) : nullptr;
   j["first_contact_s"] = s.first_contact_s >= 0 ? num(s.first_contact_s) : nullptr;
   j["breaks"] = s.breaks;
+  for (int m = 0; m < 5; ++m)
+    j["breaks_by_mode"][failure_mode_name(static_cast<FailureMode>(m))] = s.breaks_by_mode[m];
   j["steps"] = s.steps;
   j["sim_time_s"] = s.sim_time_s;
   j["wall_time_s"] = s.wall_time_s;

@@ -34,6 +34,7 @@ struct RunSummary {
   double achieved_concentration = 0.0;
   double mean_awake = 0.0;  // floes simulated per step, averaged over the run
   int breaks = 0;           // joint failures (0 with rigid floes)
+  std::array<int, 5> breaks_by_mode{};  // by FailureMode: compression, shear, bending, tension, in-plane bending
   StageTimes stage_times;   // s of wall time per stage of step()
 };
 

@@ -2,10 +2,13 @@
 
 #include <cmath>
 
+#include <functional>
+
 #include <Eigen/Eigenvalues>
 
 #include "dem/cone_geometry.hpp"
 #include "dem/constants.hpp"
+#include "dem/element_lattice.hpp"
 
 namespace icedem {
 namespace {
@@ -66,6 +69,28 @@ bool rectangle_half_extents(const Polygon& p, double& hx, double& hz) {
 
 }  // namespace
 
+// Elements of one fragment of a breakable floe are held together by joints and
+// must not collide with each other (diagonal neighbours would); pieces that
+// have come apart collide like any two floes.
+class FragmentFilter : public btOverlapFilterCallback {
+ public:
+  explicit FragmentFilter(const std::vector<FloeBody>& bodies) : bodies_(bodies) {}
+  bool needBroadphaseCollision(btBroadphaseProxy* p0, btBroadphaseProxy* p1) const override {
+    if (!(p0->m_collisionFilterGroup & p1->m_collisionFilterMask) ||
+        !(p1->m_collisionFilterGroup & p0->m_collisionFilterMask))
+      return false;
+    const auto* a = static_cast<const btCollisionObject*>(p0->m_clientObject);
+    const auto* b = static_cast<const btCollisionObject*>(p1->m_clientObject);
+    if (a->getUserIndex() != kIce || b->getUserIndex() != kIce) return true;
+    const FloeBody& fa = bodies_[a->getUserIndex2()];
+    const FloeBody& fb = bodies_[b->getUserIndex2()];
+    return !(fa.fragment >= 0 && fa.floe_id == fb.floe_id && fa.fragment == fb.fragment);
+  }
+
+ private:
+  const std::vector<FloeBody>& bodies_;
+};
+
 World::World(const Scene& scene) : scene_(scene) {
   collision_config_ = std::make_unique<btDefaultCollisionConfiguration>();
   dispatcher_ = std::make_unique<btCollisionDispatcher>(collision_config_.get());
@@ -86,6 +111,9 @@ World::World(const Scene& scene) : scene_(scene) {
   dynamics_->setGravity(btVector3(0, -scene.water.gravity, 0));
   // sleeping and frozen bodies do not move: only update the bounding boxes of awake ones
   dynamics_->setForceUpdateAllAabbs(false);
+
+  fragment_filter_ = std::make_unique<FragmentFilter>(floes_);
+  broadphase_->getOverlappingPairCache()->setOverlapFilterCallback(fragment_filter_.get());
 
   // sleeping islands from touching contacts (see contact_islands.hpp for why)
   if (scene.activation.islands == IslandMode::kContact) {
@@ -112,8 +140,11 @@ World::World(const Scene& scene) : scene_(scene) {
 }
 
 World::~World() {
-  // bodies out of the world before the world goes
+  // joints and bodies out of the world before the world goes
+  for (IceJoint& j : joints_)
+    if (j.constraint) dynamics_->removeConstraint(j.constraint.get());
   for (auto& body : bodies_) dynamics_->removeRigidBody(body.get());
+  broadphase_->getOverlappingPairCache()->setOverlapFilterCallback(nullptr);
 }
 
 void World::add_structure(std::unique_ptr<btCollisionShape> shape, const Eigen::Vector3d& position) {
@@ -242,16 +273,7 @@ const FloeShape& World::shape_for(const Polygon& outline) {
   return *raw;
 }
 
-int World::add_floe(const Floe& floe) {
-  const FloeShape& shape = shape_for(floe.shape);
-  const double h = scene_.ice.thickness;
-  const double draft = h * scene_.ice.density / scene_.water.density;  // Archimedes, flat prism
-
-  btTransform pose;
-  pose.setIdentity();
-  pose.setOrigin(btVector3(floe.centre.x(), h / 2 - draft, floe.centre.y()));
-  pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + shape.principal_yaw));
-
+int World::add_body(const FloeShape& shape, const btTransform& pose, int floe_id, int fragment) {
   auto motion = std::make_unique<btDefaultMotionState>(pose);
   btRigidBody::btRigidBodyConstructionInfo ci(shape.mass, motion.get(), shape.collision.get(),
                                               to_bt(shape.inertia));
@@ -259,17 +281,133 @@ int World::add_floe(const Floe& floe) {
   body->setFriction(scene_.friction.ice_ice);
   body->setRestitution(0);
   body->setUserIndex(kIce);
-  body->setUserIndex2(static_cast<int>(floes_.size()));  // floe index, for frozen_floe()
+  body->setUserIndex2(static_cast<int>(floes_.size()));  // body index, for frozen_floe() and the filter
   body->setSleepingThresholds(scene_.activation.linear_threshold, scene_.activation.angular_threshold);
+
+  // registered before it enters the broadphase, which asks the fragment filter at once
+  const int index = static_cast<int>(floes_.size());
+  floes_.push_back(FloeBody{body.get(), floe_id, &shape, false, fragment});
   dynamics_->addRigidBody(body.get());
   // floes start at rest at their equilibrium draft: asleep until something touches them
   body->setActivationState(scene_.activation.sleeping ? ISLAND_SLEEPING : DISABLE_DEACTIVATION);
-
-  const int index = static_cast<int>(floes_.size());
-  floes_.push_back(FloeBody{body.get(), index, &shape});
   motion_states_.push_back(std::move(motion));
   bodies_.push_back(std::move(body));
   return index;
+}
+
+bool World::is_breakable(const Polygon& outline) const {
+  switch (scene_.fracture.mode) {
+    case FractureMode::kOff: return false;
+    case FractureMode::kOn: return true;
+    case FractureMode::kAuto: {
+      // floes smaller than the characteristic length stay rigid (paper: 0.3 m < l_c)
+      double size = 0;
+      for (const Eigen::Vector2d& a : outline)
+        for (const Eigen::Vector2d& b : outline) size = std::max(size, (a - b).norm() / std::sqrt(2.0));
+      return size >= scene_.fracture.characteristic_length;
+    }
+  }
+  return false;
+}
+
+void World::add_floe(const Floe& floe) {
+  const int floe_id = next_floe_id_++;
+  if (is_breakable(floe.shape)) {
+    add_breakable_floe(floe, floe_id);
+    return;
+  }
+  const FloeShape& shape = shape_for(floe.shape);
+  const double h = scene_.ice.thickness;
+  const double draft = h * scene_.ice.density / scene_.water.density;  // Archimedes, flat prism
+  btTransform pose;
+  pose.setIdentity();
+  pose.setOrigin(btVector3(floe.centre.x(), h / 2 - draft, floe.centre.y()));
+  pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + shape.principal_yaw));
+  add_body(shape, pose, floe_id);
+}
+
+void World::add_breakable_floe(const Floe& floe, int floe_id) {
+  // the lattice in the floe's principal frame (elements are squares in that frame)
+  const double yaw0 = principal_yaw(floe.shape);
+  Polygon outline;
+  for (const Eigen::Vector2d& v : floe.shape) outline.push_back(rotate(v, -yaw0));
+  const double Le = scene_.fracture.element_size;
+  const ElementLattice lattice = make_element_lattice(outline, Le);
+  const FloeShape& element = shape_for(square(Le));
+
+  const double h = scene_.ice.thickness;
+  const double draft = h * scene_.ice.density / scene_.water.density;
+  const double yaw = floe.yaw + yaw0;
+  const btQuaternion rotation(btVector3(0, 1, 0), yaw);
+  const int first = static_cast<int>(floes_.size());
+  for (const Eigen::Vector2d& c : lattice.centres) {
+    const Eigen::Vector2d at = floe.centre + rotate(c, yaw);
+    btTransform pose;
+    pose.setIdentity();
+    pose.setOrigin(btVector3(at.x(), h / 2 - draft, at.y()));
+    pose.setRotation(rotation);
+    add_body(element, pose, floe_id, 0);  // one piece: its elements do not collide with each other
+  }
+
+  // fixed joints at the middle of each shared face; softness set on all six axes
+  // (axis -1, Bullet's default for setParam, is silently ignored: bullet-notes.md)
+  int index = 0;
+  for (const LatticeJoint& j : lattice.joints) {
+    IceJoint joint;
+    joint.floe = floe_id;
+    joint.index = index++;
+    joint.body_a = first + j.a;
+    joint.body_b = first + j.b;
+    const Eigen::Vector2d mid_a = j.midpoint - lattice.centres[j.a];
+    const Eigen::Vector2d mid_b = j.midpoint - lattice.centres[j.b];
+    joint.midpoint_a = Eigen::Vector3d(mid_a.x(), 0, mid_a.y());
+    joint.axis_a = Eigen::Vector3d(j.axis.x(), 0, j.axis.y());
+    btTransform frame_a, frame_b;
+    frame_a.setIdentity();
+    frame_b.setIdentity();
+    frame_a.setOrigin(btVector3(mid_a.x(), 0, mid_a.y()));
+    frame_b.setOrigin(btVector3(mid_b.x(), 0, mid_b.y()));
+    joint.constraint = std::make_unique<btFixedConstraint>(*floes_[joint.body_a].body, *floes_[joint.body_b].body,
+                                                           frame_a, frame_b);
+    for (int axis = 0; axis < 6; ++axis) {
+      joint.constraint->setParam(BT_CONSTRAINT_STOP_CFM, scene_.fracture.cfm, axis);
+      joint.constraint->setParam(BT_CONSTRAINT_STOP_ERP, scene_.fracture.erp, axis);
+    }
+    joint.feedback = std::make_unique<btJointFeedback>();
+    joint.constraint->setJointFeedback(joint.feedback.get());
+    dynamics_->addConstraint(joint.constraint.get(), false);  // the fragment filter handles collisions
+    joints_.push_back(std::move(joint));
+  }
+}
+
+void World::break_joint(IceJoint& joint) {
+  if (!joint.constraint) return;
+  dynamics_->removeConstraint(joint.constraint.get());
+  joint.constraint.reset();
+  update_fragments(joint.floe);
+}
+
+void World::update_fragments(int floe_id) {
+  // fragments: connected components of the floe's elements over intact joints
+  std::vector<int> bodies;
+  for (int b = 0; b < static_cast<int>(floes_.size()); ++b)
+    if (floes_[b].floe_id == floe_id && floes_[b].fragment >= 0) bodies.push_back(b);
+  std::map<int, int> parent;
+  for (int b : bodies) parent[b] = b;
+  std::function<int(int)> root = [&](int x) { return parent[x] == x ? x : parent[x] = root(parent[x]); };
+  for (const IceJoint& j : joints_)
+    if (j.floe == floe_id && j.constraint) parent[root(j.body_a)] = root(j.body_b);
+  for (int b : bodies) {
+    const int fragment = root(b);
+    if (floes_[b].fragment != fragment) {
+      floes_[b].fragment = fragment;
+    }
+  }
+  // new broadphase pairs between pieces that came apart: re-create their proxies
+  for (int b : bodies) {
+    floes_[b].body->activate(true);
+    dynamics_->refreshBroadphaseProxy(floes_[b].body);
+  }
 }
 
 void World::add_floes(const std::vector<Floe>& floes) {

@@ -45,12 +45,24 @@ struct FloeShape {
   std::unique_ptr<btCollisionShape> collision;
 };
 
-/// One floating rigid floe.
+/// One floating rigid body: a whole rigid floe, or one element of a breakable floe.
 struct FloeBody {
   btRigidBody* body;       // owned by World
-  int floe_id;             // index in the layout
+  int floe_id;             // index of its floe in the layout
   const FloeShape* shape;  // owned by World
   bool frozen = false;     // a fixed obstacle for now (dem/activation.hpp)
+  int fragment = -1;       // breakable floes: elements of one fragment do not collide; -1: rigid floe
+};
+
+/// A fixed joint between two elements of a breakable floe (seed paper, Fig. 5).
+struct IceJoint {
+  std::unique_ptr<btGeneric6DofSpring2Constraint> constraint;  // null once broken
+  std::unique_ptr<btJointFeedback> feedback;  // force and torque on body A, written by the solver
+  int floe;                    // floe index in the layout
+  int index;                   // joint index within its floe
+  int body_a, body_b;          // indices into World::floes()
+  Eigen::Vector3d midpoint_a;  // m, joint midpoint in A's body frame
+  Eigen::Vector3d axis_a;      // unit, from A's centre to B's, in A's body frame
 };
 
 /// The Bullet world and everything in it. Not copyable; one per run.
@@ -72,8 +84,9 @@ class World {
   /// Add the mother ice along the channel sides and end, the tank walls and floor.
   void add_boundaries();
 
-  /// Add one floe floating at its equilibrium draft, at rest. Returns its index.
-  int add_floe(const Floe& floe);
+  /// Add one floe floating at its equilibrium draft, at rest: a rigid body, or a
+  /// lattice of elements and joints if the scene makes it breakable.
+  void add_floe(const Floe& floe);
 
   /// Add every floe of a layout.
   void add_floes(const std::vector<Floe>& floes);
@@ -101,11 +114,25 @@ class World {
   /// The floe of a collision object if it is a frozen floe, else nullptr.
   FloeBody* frozen_floe(const btCollisionObject* object);
 
+  /// Joints of breakable floes (broken ones have no constraint).
+  std::vector<IceJoint>& joints() { return joints_; }
+  const std::vector<IceJoint>& joints() const { return joints_; }
+
+  /// Remove a joint from the solver and recompute its floe's fragments, so that
+  /// pieces that came apart collide with each other.
+  void break_joint(IceJoint& joint);
+
+  /// Whether a floe of this outline is made of breakable elements (fracture.mode).
+  bool is_breakable(const Polygon& outline) const;
+
   /// Number of contact points in all manifolds (what the solver works on).
   int contact_points() const;
 
  private:
   const FloeShape& shape_for(const Polygon& outline);
+  int add_body(const FloeShape& shape, const btTransform& pose, int floe_id, int fragment = -1);
+  void add_breakable_floe(const Floe& floe, int floe_id);
+  void update_fragments(int floe_id);
   btRigidBody* add_static_box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extents,
                               Material material);
 
@@ -123,6 +150,9 @@ class World {
   std::vector<std::unique_ptr<FloeShape>> floe_shapes_;
   std::map<std::vector<double>, FloeShape*> shape_cache_;
   std::vector<FloeBody> floes_;
+  std::vector<IceJoint> joints_;
+  std::unique_ptr<btOverlapFilterCallback> fragment_filter_;
+  int next_floe_id_ = 0;
   btRigidBody* structure_ = nullptr;
 };
 

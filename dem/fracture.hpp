@@ -1,0 +1,24 @@
+// The fracture stage: after each Bullet step, the load on every intact joint of
+// a breakable floe (Bullet's joint feedback, moved to the joint midpoint and
+// split in the joint frame, dem/joint_loads.hpp) is checked against the paper's
+// criteria (eq. 1-3); a joint that fails is removed and the break recorded.
+//
+// Known limit (issue 3, open): per-step joint loads from the PGS solver are
+// noisy and depend on solver.iterations; no filtering is applied yet.
+#pragma once
+
+#include "dem/joint_loads.hpp"
+#include "dem/scene.hpp"
+#include "dem/state.hpp"
+
+namespace icedem {
+
+/// The load on an intact joint in its last Bullet step (joint feedback on
+/// element A, moved to the joint midpoint and split in the joint frame).
+JointLoads joint_loads(const World& world, const IceJoint& joint);
+
+/// Check every intact joint with an awake element; break those that fail and
+/// append their events to state.fracture_events.
+void check_fracture(const Scene& scene, State& state);
+
+}  // namespace icedem
