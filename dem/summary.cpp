@@ -14,7 +14,7 @@ std::string summary_table(const RunSummary& s) {
   out += fmt::format("icedem run: {}  ->  {}  [{}]\n", s.scenario, s.output, s.status);
   if (!s.message.empty()) out += fmt::format("  {}\n", s.message);
   out += fmt::format("  floes {:d} (concentration {:.2f} %), steps {:d}, simulated {:.1f} s in {:.1f} s wall "
-                     "({:.1f}x real time, {:.0f} steps/s), awake floes {:.1f} on average\n",
+                     "({:.1f}x real time, {:.0f} steps/s), awake bodies {:.1f} on average\n",
                      s.floes, 100 * s.achieved_concentration, s.steps, s.sim_time_s, s.wall_time_s, rtf,
                      s.wall_time_s > 0 ? s.steps / s.wall_time_s : 0.0, s.mean_awake);
   const StageTimes& t = s.stage_times;
