@@ -13,6 +13,17 @@ Channel scene_channel(const Scene& scene) {
 }
 
 Layout scene_layout(const Scene& scene) {
+  if (scene.validation.kind == ValidationCase::kPlateDeflection) {
+    // one square plate at the middle of the channel
+    const Channel c = scene_channel(scene);
+    const double a = scene.validation.plate_size / 2;
+    Layout plate;
+    plate.floes.push_back(Floe{Eigen::Vector2d((c.x_min + c.x_max) / 2, (c.z_min + c.z_max) / 2), 0.0,
+                               {{-a, -a}, {a, -a}, {a, a}, {-a, a}}});
+    plate.channel_area = (c.x_max - c.x_min) * (c.z_max - c.z_min);
+    plate.achieved_concentration = 4 * a * a / plate.channel_area;
+    return plate;
+  }
   if (!scene.layout.file.empty()) return read_layout_file(scene.layout.file, scene_channel(scene));
   LayoutParams p;
   p.channel = scene_channel(scene);

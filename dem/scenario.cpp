@@ -317,7 +317,7 @@ Scene make_scene(const Scenario& sc) {
                 std::pow(D / (s.water.density * s.water.gravity), 0.25)};
   const bool breakable = s.fracture.mode == FractureMode::kOn ||
                          (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
-  if (breakable && s.layout.file.empty()) {
+  if (breakable && s.layout.file.empty() && get<std::string>(sc, "validation.case") == "none") {
     // generated square floes must be a whole number of elements across
     const double n = s.ice.floe_size / s.fracture.element_size;
     if (std::abs(n - std::round(n)) > 1e-6)
@@ -346,6 +346,17 @@ Scene make_scene(const Scenario& sc) {
   s.output = {real(sc, "output.snapshot_interval")};
   s.stats = {real(sc, "stats.window_start_travel"), real(sc, "stats.window_end_travel"),
              real(sc, "stats.lowpass_hz")};
+  s.validation = {get<std::string>(sc, "validation.case") == "plate_deflection" ? ValidationCase::kPlateDeflection
+                                                                                 : ValidationCase::kNone,
+                   real(sc, "validation.plate_size"), real(sc, "validation.load"), real(sc, "validation.tolerance")};
+  if (s.validation.kind == ValidationCase::kPlateDeflection) {
+    if (s.fracture.mode != FractureMode::kOn)
+      fail(sc, "fracture.mode", "the plate-deflection case needs a plate of elements: set fracture.mode = \"on\"");
+    const double n = s.validation.plate_size / s.fracture.element_size;
+    if (std::abs(n - std::round(n)) > 1e-6)
+      fail(sc, "validation.plate_size", fmt::format("is not a whole number of elements of fracture.element_size = {} m "
+                                                    "({:.3f})", s.fracture.element_size, n));
+  }
   if (s.stats.lowpass_hz > 0 && s.stats.lowpass_hz >= 0.5 / s.time.dt)
     fail(sc, "stats.lowpass_hz", fmt::format("must be below the Nyquist frequency 1/(2 dt) = {} Hz", 0.5 / s.time.dt));
   if (s.stats.window_end_travel > 0 && s.stats.window_end_travel <= s.stats.window_start_travel)

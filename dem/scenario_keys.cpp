@@ -187,6 +187,15 @@ std::vector<KeySpec> make_keys() {
                    "window ends this far beyond first contact; 0: at the end of the run"));
   k.push_back(real("stats.lowpass_hz", "Hz", 0.0, 0.0, 1.0e3,
                    "low-pass cut-off applied to the surge load before statistics; 0: none"));
+
+  // validation cases (scenarios/validation/)
+  k.push_back(choice("validation.case", "none", {"none", "plate_deflection"},
+                     "validation case: a floating plate of elements under a central point load "
+                     "(seed paper Fig. 6), compared with Hertz's plate on a Winkler foundation"));
+  k.push_back(positive("validation.plate_size", "m", 2.7, 100.0, "side of the square plate (paper: 2.7 / 5.4 m)"));
+  k.push_back(positive("validation.load", "N", 10.0, 1.0e4, "downward point load at the plate centre"));
+  k.push_back(positive("validation.tolerance", "-", 0.05, 10.0,
+                       "accepted relative error of the validation metric (physics-targets.md: 5 %)"));
   return k;
 }
 

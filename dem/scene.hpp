@@ -122,6 +122,14 @@ struct StatsSettings {
   double lowpass_hz;           // Hz, 0 = unfiltered
 };
 
+enum class ValidationCase { kNone, kPlateDeflection };
+struct ValidationSettings {
+  ValidationCase kind;
+  double plate_size;  // m
+  double load;        // N, downward at the plate centre
+  double tolerance;   // -, relative
+};
+
 /// Everything one run needs, validated and in SI units.
 struct Scene {
   std::string source_path;    // scenario file as given
@@ -140,6 +148,7 @@ struct Scene {
   ActivationSettings activation;
   OutputSettings output;
   StatsSettings stats;
+  ValidationSettings validation;
 };
 
 }  // namespace icedem

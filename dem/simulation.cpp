@@ -14,6 +14,7 @@
 #include "dem/recorder.hpp"
 #include "dem/statistics.hpp"
 #include "dem/step.hpp"
+#include "dem/validation.hpp"
 
 namespace icedem {
 namespace {
@@ -152,6 +153,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       scene.output.snapshot_interval > 0 ? std::max(1L, std::lround(scene.output.snapshot_interval / scene.time.dt)) : 0;
   if (snapshot_every) recorder.append_snapshot(0.0, body_poses(*state.world));
 
+  Validation validation(scene, state);
   LoadHistory history;
   history.time.reserve(total_steps);
   history.surge.reserve(total_steps);
@@ -168,6 +170,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
         break;
       }
       step(scene, state);
+      validation.after_step(scene, state);
 
       // record
       const LoadReading& load = state.load;
@@ -205,6 +208,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.breaks_by_mode = state.breaks_by_mode;
   for (int n : state.breaks_by_mode) summary.breaks += n;
   compute_statistics(scene, history, summary);
+  summary.validation = validation.result(scene);
   summary.wall_time_s = wall();
   write_statistics(recorder, summary);
   recorder.finish(summary.status, summary.message, summary.wall_time_s);

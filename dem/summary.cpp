@@ -21,6 +21,16 @@ std::string summary_table(const RunSummary& s) {
   out += fmt::format("  wall time by stage: Bullet {:.1f} s, water {:.1f} s, activation {:.1f} s, load cell {:.1f} s, "
                      "other {:.1f} s\n", t.bullet, t.water, t.activation, t.load_cell,
                      s.wall_time_s - t.bullet - t.water - t.activation - t.load_cell);
+  if (!s.validation.is_null()) {
+    const nlohmann::json& v = s.validation;
+    out += fmt::format("  validation {}: {} = {:.4f} (reference {:.4f}), error {:+.1f} % (tolerance {:.0f} %): {}\n",
+                       v["case"].get<std::string>(), v["metric"].get<std::string>(), v["value"].get<double>(),
+                       v["reference"].get<double>(), 100 * v["rel_error"].get<double>(),
+                       100 * v["tolerance"].get<double>(), v["passed"].get<bool>() ? "passed" : "FAILED");
+    if (v.contains("elastic_modulus_MPa"))
+      out += fmt::format("  inferred elastic modulus {:.1f} MPa (target {:.1f} MPa)\n",
+                         v["elastic_modulus_MPa"].get<double>(), v["elastic_modulus_target_MPa"].get<double>());
+  }
   if (!s.has_statistics) {
     out += fmt::format("  no load statistics: {}\n", s.statistics_note);
     return out;
@@ -69,6 +79,7 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["floes"] = s.floes;
   j["achieved_concentration"] = s.achieved_concentration;
   j["mean_awake"] = s.mean_awake;
+  if (!s.validation.is_null()) j["validation"] = s.validation;
   const StageTimes& t = s.stage_times;
   j["stage_time_s"] = {{"structure", t.structure}, {"water", t.water},         {"bullet", t.bullet},
                        {"load_cell", t.load_cell}, {"activation", t.activation}, {"health", t.health}};

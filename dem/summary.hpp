@@ -36,6 +36,7 @@ struct RunSummary {
   int breaks = 0;           // joint failures (0 with rigid floes)
   std::array<int, 5> breaks_by_mode{};  // by FailureMode: compression, shear, bending, tension, in-plane bending
   StageTimes stage_times;   // s of wall time per stage of step()
+  nlohmann::json validation;  // validation block of a validation case, null otherwise
 };
 
 /// A short human-readable table.

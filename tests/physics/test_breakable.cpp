@@ -6,7 +6,10 @@
 
 #include "dem/fracture.hpp"
 #include "dem/initial_state.hpp"
+#include "dem/scenario.hpp"
+#include "dem/simulation.hpp"
 #include "dem/step.hpp"
+#include "dem/validation.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;
@@ -104,4 +107,25 @@ TEST(Breakable, PiecesCollideOnceBrokenApart) {
   EXPECT_NE(world.floes()[0].fragment, world.floes()[1].fragment);
   step(scene, state);
   EXPECT_TRUE(manifold_between());  // the two pieces now touch as separate bodies
+}
+
+TEST(Breakable, PlateDeflectionMatchesHertzWithinFivePercent) {
+  // scenarios/validation/plate_deflection_27_015.toml: a 2.7 m plate of 0.15 m elements,
+  // 10 N at the centre; reference Hertz x finite-plate factor = 0.092 mm/N (physics-targets 2).
+  // 5 %: the tolerance physics-targets.md accepts (E then within 10 %)
+  const Scene scene =
+      load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/plate_deflection_27_015.toml");
+  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/plate.h5", false, ""});
+  ASSERT_FALSE(s.validation.is_null());
+  EXPECT_NEAR(s.validation["reference"].get<double>(), 0.0922, 0.0005);
+  EXPECT_LT(std::abs(s.validation["rel_error"].get<double>()), 0.05) << s.validation.dump();
+  EXPECT_TRUE(s.validation["passed"].get<bool>());
+}
+
+TEST(Validation, FinitePlateFactorFollowsTheTable) {
+  // physics-targets.md 2: 2.70 at a/l_c = 1, 1.038 at 4, 1.000 at 8 and beyond
+  EXPECT_DOUBLE_EQ(finite_plate_factor(1.0), 2.70);
+  EXPECT_DOUBLE_EQ(finite_plate_factor(4.0), 1.038);
+  EXPECT_DOUBLE_EQ(finite_plate_factor(20.0), 1.0);
+  EXPECT_NEAR(finite_plate_factor(3.25), (1.088 + 1.064) / 2, 1e-12);
 }
