@@ -82,7 +82,8 @@ nlohmann::json summary_json(const RunSummary& s) {
   if (!s.validation.is_null()) j["validation"] = s.validation;
   const StageTimes& t = s.stage_times;
   j["stage_time_s"] = {{"structure", t.structure}, {"water", t.water},         {"bullet", t.bullet},
-                       {"load_cell", t.load_cell}, {"activation", t.activation}, {"health", t.health}};
+                       {"load_cell", t.load_cell}, {"activation", t.activation}, {"health", t.health},
+                       {"fracture", t.fracture}};
   return j;
 }
 
