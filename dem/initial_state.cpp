@@ -24,6 +24,18 @@ Layout scene_layout(const Scene& scene) {
     plate.achieved_concentration = 4 * a * a / plate.channel_area;
     return plate;
   }
+  if (scene.validation.kind == ValidationCase::kCantilever) {
+    // one beam of elements along x, one element wide
+    const Channel c = scene_channel(scene);
+    const double a = scene.validation.beam_elements * scene.fracture.element_size / 2;
+    const double b = scene.fracture.element_size / 2;
+    Layout beam;
+    beam.floes.push_back(Floe{Eigen::Vector2d((c.x_min + c.x_max) / 2, (c.z_min + c.z_max) / 2), 0.0,
+                              {{-a, -b}, {a, -b}, {a, b}, {-a, b}}});
+    beam.channel_area = (c.x_max - c.x_min) * (c.z_max - c.z_min);
+    beam.achieved_concentration = 4 * a * b / beam.channel_area;
+    return beam;
+  }
   if (!scene.layout.file.empty()) return read_layout_file(scene.layout.file, scene_channel(scene));
   LayoutParams p;
   p.channel = scene_channel(scene);

@@ -346,12 +346,15 @@ Scene make_scene(const Scenario& sc) {
   s.output = {real(sc, "output.snapshot_interval")};
   s.stats = {real(sc, "stats.window_start_travel"), real(sc, "stats.window_end_travel"),
              real(sc, "stats.lowpass_hz")};
-  s.validation = {get<std::string>(sc, "validation.case") == "plate_deflection" ? ValidationCase::kPlateDeflection
-                                                                                 : ValidationCase::kNone,
-                   real(sc, "validation.plate_size"), real(sc, "validation.load"), real(sc, "validation.tolerance")};
+  const std::string& vcase = get<std::string>(sc, "validation.case");
+  s.validation = {vcase == "plate_deflection" ? ValidationCase::kPlateDeflection
+                  : vcase == "cantilever"     ? ValidationCase::kCantilever
+                                              : ValidationCase::kNone,
+                  real(sc, "validation.plate_size"), real(sc, "validation.load"), real(sc, "validation.tolerance"),
+                  integer(sc, "validation.beam_elements"), real(sc, "validation.load_rate")};
+  if (s.validation.kind != ValidationCase::kNone && s.fracture.mode != FractureMode::kOn)
+    fail(sc, "fracture.mode", fmt::format("the {} case needs ice elements: set fracture.mode = \"on\"", vcase));
   if (s.validation.kind == ValidationCase::kPlateDeflection) {
-    if (s.fracture.mode != FractureMode::kOn)
-      fail(sc, "fracture.mode", "the plate-deflection case needs a plate of elements: set fracture.mode = \"on\"");
     const double n = s.validation.plate_size / s.fracture.element_size;
     if (std::abs(n - std::round(n)) > 1e-6)
       fail(sc, "validation.plate_size", fmt::format("is not a whole number of elements of fracture.element_size = {} m "

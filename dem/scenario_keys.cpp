@@ -189,9 +189,12 @@ std::vector<KeySpec> make_keys() {
                    "low-pass cut-off applied to the surge load before statistics; 0: none"));
 
   // validation cases (scenarios/validation/)
-  k.push_back(choice("validation.case", "none", {"none", "plate_deflection"},
-                     "validation case: a floating plate of elements under a central point load "
-                     "(seed paper Fig. 6), compared with Hertz's plate on a Winkler foundation"));
+  k.push_back(choice("validation.case", "none", {"none", "plate_deflection", "cantilever"},
+                     "validation case: plate_deflection, a floating plate of elements under a central "
+                     "point load (seed paper Fig. 6) against Hertz's plate; cantilever, a clamped beam "
+                     "of elements in air loaded at its tip until it breaks (Fig. 7, eq. 6)"));
+  k.push_back(integer("validation.beam_elements", 4, 2, 100, "cantilever: elements along the beam, root included"));
+  k.push_back(positive("validation.load_rate", "N/s", 0.2, 1.0e4, "cantilever: growth rate of the tip load"));
   k.push_back(positive("validation.plate_size", "m", 2.7, 100.0, "side of the square plate (paper: 2.7 / 5.4 m)"));
   k.push_back(positive("validation.load", "N", 10.0, 1.0e4, "downward point load at the plate centre"));
   k.push_back(positive("validation.tolerance", "-", 0.05, 10.0,

@@ -122,12 +122,14 @@ struct StatsSettings {
   double lowpass_hz;           // Hz, 0 = unfiltered
 };
 
-enum class ValidationCase { kNone, kPlateDeflection };
+enum class ValidationCase { kNone, kPlateDeflection, kCantilever };
 struct ValidationSettings {
   ValidationCase kind;
   double plate_size;  // m
   double load;        // N, downward at the plate centre
   double tolerance;   // -, relative
+  int beam_elements;  // cantilever: elements along the beam
+  double load_rate;   // N/s, cantilever tip load growth
 };
 
 /// Everything one run needs, validated and in SI units.

@@ -5,6 +5,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "dem/joint_loads.hpp"
+
 namespace icedem {
 
 double finite_plate_factor(double a_over_lc) {
@@ -40,8 +42,23 @@ double modulus_from_compliance(const Scene& s, double compliance, double factor)
   return 3 * (1 - nu * nu) * factor * factor / (16 * s.water.density * s.water.gravity * h * h * h * compliance * compliance);
 }
 
-Validation::Validation(const Scene& scene, State& state) {
-  if (scene.validation.kind != ValidationCase::kPlateDeflection) return;
+Validation::Validation(const Scene& scene, State& state) : kind_(scene.validation.kind) {
+  if (kind_ == ValidationCase::kCantilever) {
+    // the beam 1 m up in the air, its root element clamped (zero inverse mass)
+    std::vector<FloeBody>& bodies = state.world->floes();
+    for (FloeBody& f : bodies) {
+      btTransform t = f.body->getWorldTransform();
+      t.getOrigin() += btVector3(0, 1.0, 0);
+      f.body->setWorldTransform(t);
+      x0_.push_back(t.getOrigin().x());
+    }
+    element_mass_ = bodies.front().shape->mass;
+    bodies.front().body->setMassProps(0, btVector3(0, 0, 0));
+    bodies.front().body->updateInertiaTensor();
+    after_step(scene, state);  // the weight supports from the first step on
+    return;
+  }
+  if (kind_ != ValidationCase::kPlateDeflection) return;
   // the element(s) at the plate centre: one for an odd count across, four for even
   const std::vector<FloeBody>& bodies = state.world->floes();
   btVector3 centre(0, 0, 0);
@@ -60,7 +77,23 @@ Validation::Validation(const Scene& scene, State& state) {
     state.point_loads.emplace_back(i, Eigen::Vector3d(0, -scene.validation.load / centre_.size(), 0));
 }
 
-void Validation::after_step(const Scene& scene, const State& state) {
+void Validation::after_step(const Scene& scene, State& state) {
+  if (kind_ == ValidationCase::kCantilever) {
+    if (!broken_ && !state.fracture_events.empty()) {
+      broken_ = true;
+      first_break_ = state.fracture_events.front();
+      load_at_break_ = tip_load_;
+    }
+    // the tip load of the next step grows linearly (quasi-static: slow against the beam's response)
+    tip_load_ = broken_ ? 0.0 : scene.validation.load_rate * state.time;
+    // each free element's weight is carried by an upward force, as buoyancy carries a
+    // floating beam (the P_b of eq. 6), so the tip load alone bends the beam
+    state.point_loads.clear();
+    for (int i = 1; i < static_cast<int>(x0_.size()); ++i)
+      state.point_loads.emplace_back(i, Eigen::Vector3d(0, element_mass_ * scene.water.gravity, 0));
+    state.point_loads.emplace_back(static_cast<int>(x0_.size()) - 1, Eigen::Vector3d(0, -tip_load_, 0));
+    return;
+  }
   if (centre_.empty()) return;
   // measure over the second half of the run, after the plate has settled
   if (state.time < scene.time.duration / 2) return;
@@ -71,6 +104,45 @@ void Validation::after_step(const Scene& scene, const State& state) {
 }
 
 nlohmann::json Validation::result(const Scene& scene) const {
+  if (kind_ == ValidationCase::kPlateDeflection) return plate_result(scene);
+  if (kind_ == ValidationCase::kCantilever) return cantilever_result(scene);
+  return nullptr;
+}
+
+nlohmann::json Validation::cantilever_result(const Scene& scene) const {
+  nlohmann::json j;
+  j["case"] = "cantilever";
+  j["metric"] = "bending stress at failure, kPa";
+  j["reference"] = scene.ice.bending_strength / 1e3;
+  j["tolerance"] = scene.validation.tolerance;
+  if (!broken_) {
+    j["value"] = nullptr;
+    j["rel_error"] = nullptr;
+    j["passed"] = false;
+    j["note"] = "the beam did not break within time.duration";
+    return j;
+  }
+  // joint k joins elements k and k+1 of the beam; its midpoint is half an element past k
+  const int k = first_break_.joint;
+  const double Le = scene.fracture.element_size, h = scene.ice.thickness;
+  const double x_joint = x0_[k] + Le / 2;
+  const double lever = x0_.back() - x_joint;  // m, joint to the load point (the tip element's centre)
+  // eq. 6, sigma' = 6 (P_c - P_b) l / (L_e T_e^2); the weight is balanced, so P_b = 0
+  const double sigma = 6 * load_at_break_ * lever / (Le * h * h);
+  const double rel_error = (sigma - scene.ice.bending_strength) / scene.ice.bending_strength;
+  j["value"] = sigma / 1e3;
+  j["rel_error"] = rel_error;
+  j["failure_mode"] = failure_mode_name(static_cast<FailureMode>(first_break_.mode));
+  j["failed_joint"] = k;
+  j["at_root"] = k == 0;
+  j["load_at_failure_N"] = load_at_break_;
+  j["time_of_failure_s"] = first_break_.time;
+  j["passed"] = std::abs(rel_error) <= scene.validation.tolerance && k == 0 &&
+                first_break_.mode == static_cast<int>(FailureMode::kBending);
+  return j;
+}
+
+nlohmann::json Validation::plate_result(const Scene& scene) const {
   if (centre_.empty() || samples_ == 0) return nullptr;
   const double compliance = sum_ / samples_ / scene.validation.load;  // m/N
   const double factor = finite_plate_factor(a_over_lc(scene));

@@ -7,6 +7,14 @@
 // foundation, w0 / P = 1 / (8 sqrt(D rho_w g)) = 0.0889 mm/N for the paper's
 // ice, times the finite-plate factor of physics-targets.md 2 (free-edge circular
 // plate of equal area; 1.04-1.06 for 2.7 m).
+//
+// cantilever (seed paper Fig. 7, eq. 6): a beam of elements in air, its root
+// element clamped, loaded at the tip element by a force growing at
+// validation.load_rate until a joint breaks. Each free element's weight is
+// carried by an upward force, as buoyancy carries a floating beam (the P_b of
+// eq. 6), so the failure stress sigma' = 6 P_c l / (L_e T_e^2) must match
+// sigma_b, in bending, at the root. As physics-targets.md 3 says, this checks
+// how the joint load is extracted and judged, not the ice.
 #pragma once
 
 #include <vector>
@@ -34,17 +42,29 @@ class Validation {
   /// Set up the case's loads on the initial state (nothing for "none").
   Validation(const Scene& scene, State& state);
 
-  /// Measure after a step.
-  void after_step(const Scene& scene, const State& state);
+  /// Measure after a step, and set the loads of the next.
+  void after_step(const Scene& scene, State& state);
 
   /// The summary block, or null for "none".
   nlohmann::json result(const Scene& scene) const;
 
  private:
+  nlohmann::json plate_result(const Scene& scene) const;
+  nlohmann::json cantilever_result(const Scene& scene) const;
+
+  ValidationCase kind_ = ValidationCase::kNone;
+  // plate deflection
   std::vector<int> centre_;  // loaded bodies
   double y0_ = 0;            // m, their mean initial height
-  double sum_ = 0;           // m s / dt: summed centre deflection over the measuring half
+  double sum_ = 0;           // m: summed centre deflection over the measuring half
   long samples_ = 0;
+  // cantilever
+  std::vector<double> x0_;   // m, initial x of each element, root first
+  double element_mass_ = 0;  // kg
+  double tip_load_ = 0;      // N, applied in the step just taken
+  bool broken_ = false;
+  FractureEvent first_break_{};
+  double load_at_break_ = 0;  // N
 };
 
 }  // namespace icedem

@@ -129,3 +129,16 @@ TEST(Validation, FinitePlateFactorFollowsTheTable) {
   EXPECT_DOUBLE_EQ(finite_plate_factor(20.0), 1.0);
   EXPECT_NEAR(finite_plate_factor(3.25), (1.088 + 1.064) / 2, 1e-12);
 }
+
+TEST(Breakable, CantileverBreaksInBendingAtTheRootAtTheBendingStrength) {
+  // scenarios/validation/cantilever_015.toml (seed paper Fig. 7, eq. 6): 10 % is the
+  // issue's tolerance; the tip load grows by 0.2 N/s x 0.02 s = 4 mN per step, 0.15 %
+  // of the 2.64 N failure load, so the load resolution is not what limits it
+  const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/cantilever_015.toml");
+  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/cantilever.h5", false, ""});
+  ASSERT_FALSE(s.validation.is_null());
+  EXPECT_EQ(s.validation["failure_mode"], "bending") << s.validation.dump();
+  EXPECT_TRUE(s.validation["at_root"].get<bool>());
+  EXPECT_LT(std::abs(s.validation["rel_error"].get<double>()), 0.10);
+  EXPECT_EQ(s.breaks_by_mode[static_cast<int>(FailureMode::kBending)], s.breaks);
+}
