@@ -3,6 +3,8 @@
 //   icedem check SCENARIO.toml [--set ...]     validate only
 //   icedem keys                                 every scenario key (markdown)
 //   icedem stl SCENARIO.toml -o hull.stl        the structure's surface
+//   icedem calibrate PLATE.toml [--target-modulus PA] [--write OUT.toml]
+//                                               joint CFM for a target elastic modulus
 // Exit codes: 0 success, 2 bad input, 3 numerical failure, 130 interrupted, 1 other.
 #include <filesystem>
 #include <fstream>
@@ -11,6 +13,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "dem/calibration.hpp"
 #include "dem/cone_geometry.hpp"
 #include "dem/errors.hpp"
 #include "dem/initial_state.hpp"
@@ -65,6 +68,35 @@ int stl_command(const std::string& scenario_path, const std::vector<std::string>
   return kExitOk;
 }
 
+int calibrate_command(const std::string& scenario_path, const std::vector<std::string>& sets, double target,
+                      const std::string& write_path) {
+  const Scene scene = load_scene(scenario_path, sets);
+  if (target <= 0) target = scene.ice.elastic_modulus;
+  std::cout << fmt::format("calibrating fracture.cfm for E = {:.1f} MPa: {} m plate of {} m elements, "
+                           "solver.iterations = {}, time.dt = {} s\n",
+                           target / 1e6, scene.validation.plate_size, scene.fracture.element_size,
+                           scene.solver.iterations, scene.time.dt);
+  const CalibrationResult r = calibrate_cfm(scene, target);
+  std::cout << "      cfm    w0/P mm/N    E MPa\n";
+  for (const CalibrationPoint& p : r.points)
+    std::cout << fmt::format("  {:9.3g}  {:10.4f}  {:8.2f}\n", p.cfm, p.compliance * 1e3, p.modulus / 1e6);
+  if (!r.reached) {
+    std::cerr << "calibration not reached: " << r.note << "\n";
+    return kExitRuntime;
+  }
+  std::cout << fmt::format("fracture.cfm = {:.6g} gives E = {:.2f} MPa\n", r.cfm, r.modulus / 1e6);
+  if (!write_path.empty()) {
+    std::vector<std::string> with_cfm = sets;
+    with_cfm.push_back(fmt::format("fracture.cfm={:.6g}", r.cfm));
+    std::ofstream out(write_path);
+    if (!out) throw std::runtime_error(fmt::format("{}: cannot write the calibrated scenario", write_path));
+    out << "# calibrated by: icedem calibrate " << scenario_path << "\n"
+        << read_scenario(scenario_path, with_cfm).resolved_text();
+    std::cout << "wrote " << write_path << "\n";
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -92,6 +124,15 @@ int main(int argc, char** argv) {
   stl->add_option("--set", sets, "override a scenario key")->take_all();
   stl->add_option("-o,--output", output, "STL file")->required();
 
+  double target_modulus = 0;
+  std::string write_path;
+  CLI::App* calibrate = app.add_subcommand(
+      "calibrate", "find the joint CFM that gives a plate-deflection scenario its target elastic modulus");
+  calibrate->add_option("scenario", scenario, "plate-deflection validation scenario")->required();
+  calibrate->add_option("--set", sets, "override a scenario key")->take_all();
+  calibrate->add_option("--target-modulus", target_modulus, "Pa (default: ice.elastic_modulus)");
+  calibrate->add_option("--write", write_path, "write the scenario with the calibrated fracture.cfm");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -103,6 +144,7 @@ int main(int argc, char** argv) {
     if (*run) return run_command(scenario, output, sets, summary_path, quiet, joined_command_line(argc, argv));
     if (*check) return check_command(scenario, sets);
     if (*stl) return stl_command(scenario, sets, output);
+    if (*calibrate) return calibrate_command(scenario, sets, target_modulus, write_path);
     std::cout << keys_markdown();
     return kExitOk;
   } catch (const InputError& e) {

@@ -37,6 +37,12 @@ echo keep > keep.h5
   && [ "$(grep -c 'facet normal' hull.stl)" -eq "$(grep -c 'endfacet' hull.stl)" ] \
   && [ "$(grep -c 'facet normal' hull.stl)" -gt 100 ] && ok "stl writes the hull" || fail "stl"
 
+# 3c. calibrate writes a scenario with the calibrated joint CFM that check accepts
+"$icedem" calibrate "$src/scenarios/validation/plate_deflection_27_015.toml" --set validation.plate_size=1.5 \
+  --set time.duration=6 --set solver.iterations=30 --target-modulus 20e6 --write cal.toml >/dev/null 2>&1 \
+  && grep -q "^cfm = " cal.toml && "$icedem" check cal.toml >/dev/null 2>&1 \
+  && ok "calibrate writes a valid calibrated scenario" || fail "calibrate"
+
 # 4. a short run: summary JSON keys of DESIGN.md and the HDF5 layout
 "$icedem" run "$src/scenarios/examples/short_tow.toml" -o run.h5 --summary-json run.json -q \
   --set time.duration=20 >/dev/null 2>&1 && ok "short run exits 0" || fail "short run failed"

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "dem/calibration.hpp"
 #include "dem/fracture.hpp"
 #include "dem/initial_state.hpp"
 #include "dem/scenario.hpp"
@@ -141,4 +142,35 @@ TEST(Breakable, CantileverBreaksInBendingAtTheRootAtTheBendingStrength) {
   EXPECT_TRUE(s.validation["at_root"].get<bool>());
   EXPECT_LT(std::abs(s.validation["rel_error"].get<double>()), 0.10);
   EXPECT_EQ(s.breaks_by_mode[static_cast<int>(FailureMode::kBending)], s.breaks);
+}
+
+namespace {
+// a small, quick plate-deflection scene for the calibration tests
+Scene small_plate() {
+  return load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/plate_deflection_27_015.toml",
+                    {"validation.plate_size=1.5", "time.duration=6", "solver.iterations=30"});
+}
+}  // namespace
+
+TEST(Calibration, FindsTheCfmThatGivesTheTargetModulus) {
+  const Scene scene = small_plate();
+  // a target the joints can reach: between the stiffest and a soft setting
+  const CalibrationResult r = calibrate_cfm(scene, 20e6, 0.02);
+  ASSERT_TRUE(r.reached) << r.note;
+  EXPECT_NEAR(r.modulus, 20e6, 0.02 * 20e6);
+  // the modulus falls as the CFM grows (softer joints)
+  EXPECT_GT(r.points[0].modulus, r.points[1].modulus);
+  // re-measuring at the calibrated CFM reproduces it (the run is deterministic)
+  Scene check = scene;
+  check.fracture.cfm = r.cfm;
+  const double factor = finite_plate_factor(1.5 / std::sqrt(M_PI) / scene.fracture.characteristic_length);
+  EXPECT_NEAR(modulus_from_compliance(check, measure_plate_compliance(check), factor), r.modulus, 1e-6 * r.modulus);
+}
+
+TEST(Calibration, SaysWhenOnlyMoreIterationsCanStiffenThePlate) {
+  const Scene scene = small_plate();
+  const CalibrationResult r = calibrate_cfm(scene, 1e12, 0.02);  // far stiffer than PGS allows
+  EXPECT_FALSE(r.reached);
+  EXPECT_NE(r.note.find("solver.iterations"), std::string::npos) << r.note;
+  EXPECT_EQ(r.points.size(), 1u);  // one look at the stiffest joints is enough to know
 }
