@@ -12,30 +12,26 @@ Channel scene_channel(const Scene& scene) {
   return Channel{c.start_x, c.start_x + c.length, -c.width / 2, c.width / 2};
 }
 
-Layout scene_layout(const Scene& scene) {
-  if (scene.validation.kind == ValidationCase::kPlateDeflection) {
-    // one square plate at the middle of the channel
-    const Channel c = scene_channel(scene);
-    const double a = scene.validation.plate_size / 2;
-    Layout plate;
-    plate.floes.push_back(Floe{Eigen::Vector2d((c.x_min + c.x_max) / 2, (c.z_min + c.z_max) / 2), 0.0,
-                               {{-a, -a}, {a, -a}, {a, a}, {-a, a}}});
-    plate.channel_area = (c.x_max - c.x_min) * (c.z_max - c.z_min);
-    plate.achieved_concentration = 4 * a * a / plate.channel_area;
-    return plate;
-  }
-  if (scene.validation.kind == ValidationCase::kCantilever) {
-    // one beam of elements along x, one element wide
-    const Channel c = scene_channel(scene);
-    const double a = scene.validation.beam_elements * scene.fracture.element_size / 2;
-    const double b = scene.fracture.element_size / 2;
-    Layout beam;
-    beam.floes.push_back(Floe{Eigen::Vector2d((c.x_min + c.x_max) / 2, (c.z_min + c.z_max) / 2), 0.0,
+namespace {
+Layout single_floe_layout(const Scene& scene, double lx, double lz) {
+  const Channel c = scene_channel(scene);
+  const double a = lx / 2, b = lz / 2;
+  Layout layout;
+  layout.floes.push_back(Floe{Eigen::Vector2d((c.x_min + c.x_max) / 2, (c.z_min + c.z_max) / 2), 0.0,
                               {{-a, -b}, {a, -b}, {a, b}, {-a, b}}});
-    beam.channel_area = (c.x_max - c.x_min) * (c.z_max - c.z_min);
-    beam.achieved_concentration = 4 * a * b / beam.channel_area;
-    return beam;
-  }
+  layout.channel_area = (c.x_max - c.x_min) * (c.z_max - c.z_min);
+  layout.achieved_concentration = lx * lz / layout.channel_area;
+  return layout;
+}
+}  // namespace
+
+Layout scene_layout(const Scene& scene) {
+  // validation cases: one rectangular floe at the middle of the channel
+  if (scene.validation.kind == ValidationCase::kPlateDeflection)
+    return single_floe_layout(scene, scene.validation.plate_size, scene.validation.plate_size);
+  if (scene.validation.kind == ValidationCase::kCantilever)  // a beam along x, one element wide
+    return single_floe_layout(scene, scene.validation.beam_elements * scene.fracture.element_size,
+                              scene.fracture.element_size);
   if (!scene.layout.file.empty()) return read_layout_file(scene.layout.file, scene_channel(scene));
   LayoutParams p;
   p.channel = scene_channel(scene);

@@ -12,21 +12,10 @@
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;
-using icedem::testing::scene_from;
+using icedem::testing::bench_scene;
 using icedem::testing::square_floe;
 
 namespace {
-
-// still water, everything awake, no structure in the way
-const char* kStillWater = R"(
-[flow]
-model = "still"
-[activation]
-sleeping = false
-[structure]
-speed = 0.0
-start_x = -50.0
-)";
 
 double roll_pitch_deg(const btRigidBody& body) {
   // angle between the floe's normal (body y) and the vertical
@@ -42,7 +31,7 @@ void run_for(const Scene& scene, State& state, double seconds) {
 }  // namespace
 
 TEST(Floating, FloeSettlesAtArchimedesDraft) {
-  const Scene scene = scene_from(kStillWater);
+  const Scene scene = bench_scene();
   State state = initial_state(scene, {square_floe(10, 0)});
   btRigidBody& body = *state.world->floes()[0].body;
   // release it 10 mm too high: it must fall and settle
@@ -58,7 +47,7 @@ TEST(Floating, FloeSettlesAtArchimedesDraft) {
 }
 
 TEST(Floating, TiltedFloeRightsItself) {
-  const Scene scene = scene_from(kStillWater);
+  const Scene scene = bench_scene();
   State state = initial_state(scene, {square_floe(10, 0)});
   btRigidBody& body = *state.world->floes()[0].body;
   btTransform t = body.getWorldTransform();
@@ -73,12 +62,7 @@ TEST(Floating, TiltedFloeRightsItself) {
 
 TEST(Floating, FloeFieldInStillWaterStaysAtRest) {
   // a 75 % field of 0.3 m floes, all awake, 60 s: nothing may drift
-  const Scene scene = scene_from(std::string(kStillWater) + R"(
-[channel]
-start_x = 0.0
-length = 3.0
-width = 2.4
-)");
+  const Scene scene = bench_scene({"channel.start_x=0.0", "channel.length=3.0", "channel.width=2.4"});
   const Layout layout = scene_layout(scene);
   State state = initial_state(scene, layout.floes);
   ASSERT_GT(state.world->floes().size(), 50u);
@@ -99,7 +83,7 @@ width = 2.4
 }
 
 TEST(Floating, PushedFloeReachesItsTerminalSpeed) {
-  const Scene scene = scene_from(kStillWater);
+  const Scene scene = bench_scene();
   State state = initial_state(scene, {square_floe(10, 0)});
   btRigidBody& body = *state.world->floes()[0].body;
   const double F = 0.02;  // N, constant push in +x

@@ -14,6 +14,15 @@ inline Scene scene_from(const std::string& toml, const std::vector<std::string>&
   return make_scene(parse_scenario(toml, "test.toml", ICEDEM_SOURCE_DIR, overrides));
 }
 
+/// Still water, the structure parked far away, every body awake: the bench of
+/// single-floe physics tests. `extra` overrides more keys (as --set does).
+inline Scene bench_scene(std::vector<std::string> extra = {}) {
+  std::vector<std::string> keys{"flow.model=still", "structure.speed=0", "structure.start_x=-50",
+                                "activation.sleeping=false"};
+  keys.insert(keys.end(), extra.begin(), extra.end());
+  return scene_from("", keys);
+}
+
 /// A square floe of side `side` (m) centred at (x, z), unrotated.
 inline Floe square_floe(double x, double z, double side = 0.3) {
   const double a = side / 2;

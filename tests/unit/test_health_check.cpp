@@ -11,19 +11,9 @@
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;
-using icedem::testing::scene_from;
+using icedem::testing::bench_scene;
 
 namespace {
-
-const char* kScene = R"(
-[flow]
-model = "still"
-[structure]
-speed = 0.0
-start_x = -50.0
-[activation]
-sleeping = false
-)";
 
 State two_floes(const Scene& scene) {
   State state = initial_state(scene, {icedem::testing::square_floe(10.0, 0.0), icedem::testing::square_floe(11.0, 0.0)});
@@ -44,13 +34,13 @@ std::string error_of(const Scene& scene, const State& state) {
 }  // namespace
 
 TEST(HealthCheck, HealthyStatePasses) {
-  const Scene scene = scene_from(kScene);
+  const Scene scene = bench_scene();
   const State state = two_floes(scene);
   EXPECT_EQ(error_of(scene, state), "");
 }
 
 TEST(HealthCheck, RunawaySpeedNamesStepFloeAndQuantity) {
-  const Scene scene = scene_from(kScene);
+  const Scene scene = bench_scene();
   State state = two_floes(scene);
   state.world->floes()[1].body->setLinearVelocity(btVector3(300.0, 0, 0));
   const std::string msg = error_of(scene, state);
@@ -61,7 +51,7 @@ TEST(HealthCheck, RunawaySpeedNamesStepFloeAndQuantity) {
 }
 
 TEST(HealthCheck, NotANumberPositionIsCaught) {
-  const Scene scene = scene_from(kScene);
+  const Scene scene = bench_scene();
   State state = two_floes(scene);
   btTransform t = state.world->floes()[0].body->getWorldTransform();
   t.setOrigin(btVector3(std::numeric_limits<double>::quiet_NaN(), 0, 0));
@@ -72,7 +62,7 @@ TEST(HealthCheck, NotANumberPositionIsCaught) {
 }
 
 TEST(HealthCheck, NonFiniteLoadIsCaught) {
-  const Scene scene = scene_from(kScene);
+  const Scene scene = bench_scene();
   State state = two_floes(scene);
   state.load.force.x() = std::numeric_limits<double>::infinity();
   const std::string msg = error_of(scene, state);
