@@ -30,8 +30,7 @@ CalibrationResult calibrate_cfm(const Scene& plate_scene, double target, double 
                                 double cfm_max, int max_evaluations) {
   CalibrationResult result;
   Scene scene = plate_scene;
-  const double factor =
-      finite_plate_factor(scene.validation.plate_size / std::sqrt(M_PI) / scene.fracture.characteristic_length);
+  const double factor = plate_finite_factor(scene);
   auto evaluate = [&](double cfm) {
     scene.fracture.cfm = cfm;
     const double w = measure_plate_compliance(scene);

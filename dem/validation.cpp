@@ -5,6 +5,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "dem/constants.hpp"
 #include "dem/joint_loads.hpp"
 
 namespace icedem {
@@ -29,9 +30,12 @@ namespace {
 double flexural_rigidity(const Scene& s) {
   return s.ice.elastic_modulus * std::pow(s.ice.thickness, 3) / (12 * (1 - s.ice.poisson_ratio * s.ice.poisson_ratio));
 }
-// the plate's equal-area radius over the characteristic length
-double a_over_lc(const Scene& s) { return s.validation.plate_size / std::sqrt(M_PI) / s.fracture.characteristic_length; }
 }  // namespace
+
+double plate_finite_factor(const Scene& s) {
+  // the plate's equal-area radius over the characteristic length
+  return finite_plate_factor(s.validation.plate_size / std::sqrt(kPi) / s.fracture.characteristic_length);
+}
 
 double hertz_plate_compliance(const Scene& s) {
   return 1.0 / (8.0 * std::sqrt(flexural_rigidity(s) * s.water.density * s.water.gravity));
@@ -145,7 +149,7 @@ nlohmann::json Validation::cantilever_result(const Scene& scene) const {
 nlohmann::json Validation::plate_result(const Scene& scene) const {
   if (centre_.empty() || samples_ == 0) return nullptr;
   const double compliance = sum_ / samples_ / scene.validation.load;  // m/N
-  const double factor = finite_plate_factor(a_over_lc(scene));
+  const double factor = plate_finite_factor(scene);
   const double reference = hertz_plate_compliance(scene) * factor;
   const double rel_error = (compliance - reference) / reference;
   nlohmann::json j;

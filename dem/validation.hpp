@@ -30,6 +30,10 @@ namespace icedem {
 /// relative to the infinite plate, against a / l_c (physics-targets.md 2).
 double finite_plate_factor(double a_over_lc);
 
+/// The finite-plate factor of the scene's plate-deflection case (its plate's
+/// equal-area radius over the characteristic length).
+double plate_finite_factor(const Scene& scene);
+
 /// Hertz's infinite floating plate: centre deflection per unit central load, m/N.
 double hertz_plate_compliance(const Scene& scene);
 

@@ -154,8 +154,8 @@ TEST(Calibration, FindsTheCfmThatGivesTheTargetModulus) {
   // re-measuring at the calibrated CFM reproduces it (the run is deterministic)
   Scene check = scene;
   check.fracture.cfm = r.cfm;
-  const double factor = finite_plate_factor(1.5 / std::sqrt(M_PI) / scene.fracture.characteristic_length);
-  EXPECT_NEAR(modulus_from_compliance(check, measure_plate_compliance(check), factor), r.modulus, 1e-6 * r.modulus);
+  EXPECT_NEAR(modulus_from_compliance(check, measure_plate_compliance(check), plate_finite_factor(check)), r.modulus,
+              1e-6 * r.modulus);
 }
 
 TEST(Calibration, SaysWhenOnlyMoreIterationsCanStiffenThePlate) {
