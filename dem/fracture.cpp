@@ -1,12 +1,8 @@
 #include "dem/fracture.hpp"
 
-#include <btBulletDynamicsCommon.h>
-
+#include "dem/bullet_eigen.hpp"
 
 namespace icedem {
-namespace {
-Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
-}  // namespace
 
 JointLoads joint_loads(const World& world, const IceJoint& joint) {
   const Eigen::Isometry3d pose_a = body_pose(*world.floes()[joint.body_a].body);

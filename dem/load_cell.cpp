@@ -1,13 +1,8 @@
 #include "dem/load_cell.hpp"
 
-#include <Eigen/Geometry>
-#include <btBulletDynamicsCommon.h>
+#include "dem/bullet_eigen.hpp"
 
 namespace icedem {
-namespace {
-Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
-}  // namespace
-
 void LoadCell::accumulate(const btDispatcher& dispatcher, const btRigidBody* structure,
                           const Eigen::Vector3d& reference) {
   contacts_ = 0;

@@ -22,8 +22,6 @@ class StageTimer {
   std::chrono::steady_clock::time_point start_;
 };
 
-Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
-
 // prescribed carriage motion: the kinematic structure reaches x(t + h) at the
 // end of the coming Bullet step, and the flow model follows it
 void move_structure(const Scene& scene, State& state, double t_next) {

@@ -13,8 +13,6 @@
 namespace icedem {
 namespace {
 
-btVector3 to_bt(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
-
 // Coulomb friction of a contact pair. Bullet multiplies the two bodies'
 // coefficients by default, which would make f_ii = 0.5 act as 0.25. Here each
 // body carries its coefficient *against ice*: ice-ice contacts use f_ii (ice's
@@ -460,15 +458,6 @@ int World::contact_points() const {
   for (int i = 0; i < dispatcher_->getNumManifolds(); ++i)
     n += dispatcher_->getManifoldByIndexInternal(i)->getNumContacts();
   return n;
-}
-
-Eigen::Isometry3d body_pose(const btRigidBody& body) {
-  const btTransform& t = body.getCenterOfMassTransform();
-  const btQuaternion q = t.getRotation();
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()).toRotationMatrix();
-  pose.translation() = Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
-  return pose;
 }
 
 WaterParams water_params(const WaterSettings& w) {

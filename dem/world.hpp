@@ -22,6 +22,7 @@
 #include <Eigen/Geometry>
 #include <btBulletDynamicsCommon.h>
 
+#include "dem/bullet_eigen.hpp"
 #include "dem/contact_islands.hpp"
 #include "dem/floe_layout.hpp"
 #include "dem/hydrostatics.hpp"
@@ -155,9 +156,6 @@ class World {
   int next_floe_id_ = 0;
   btRigidBody* structure_ = nullptr;
 };
-
-/// A body's centre-of-mass pose as an Eigen transform (body frame -> tank frame).
-Eigen::Isometry3d body_pose(const btRigidBody& body);
 
 /// Water properties and hydrodynamic coefficients of the scene.
 WaterParams water_params(const WaterSettings& water);

@@ -1,0 +1,24 @@
+// Conversions between Bullet's and Eigen's vectors and transforms, in one place.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <btBulletDynamicsCommon.h>
+
+namespace icedem {
+
+inline Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+inline btVector3 to_bt(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
+
+/// A body's centre-of-mass pose as an Eigen transform (body frame -> tank frame).
+inline Eigen::Isometry3d body_pose(const btRigidBody& body) {
+  const btTransform& t = body.getCenterOfMassTransform();
+  const btQuaternion q = t.getRotation();
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()).toRotationMatrix();
+  pose.translation() = to_eigen(t.getOrigin());
+  return pose;
+}
+
+}  // namespace icedem
