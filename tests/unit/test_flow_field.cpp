@@ -1,5 +1,6 @@
 // Water velocity models: still and uniform water, and the strip-wise cylinder potential
 // flow around the towed structure (physics-targets.md section 5).
+#include "dem/constants.hpp"
 #include "dem/flow_field.hpp"
 
 #include <gtest/gtest.h>
@@ -11,7 +12,6 @@
 namespace icedem {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTow = 0.07;  // m/s, towing speed of the NMRI tests
 
 // a straight 45-degree cone: radius 0.614 m at the waterline (Dw = 1.228 m), 0.171 m at the

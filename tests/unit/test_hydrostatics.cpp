@@ -1,6 +1,7 @@
 // Hydrostatics of convex bodies: exact volumes and centroids against closed forms, symmetry
 // and an independent column integration; equilibrium draft and righting moment of a floe
 // against physics-targets.md section 1.
+#include "dem/constants.hpp"
 #include "dem/hydrostatics.hpp"
 
 #include <gtest/gtest.h>
@@ -12,8 +13,6 @@
 
 namespace icedem {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // the NMRI small floe (physics-targets.md section 1)
 constexpr double kL = 0.3;        // m, side

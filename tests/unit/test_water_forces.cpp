@@ -1,6 +1,7 @@
 // Water wrench on a floe: buoyancy (reserve buoyancy, equilibrium, righting moment), form
 // drag and skin friction with their torque arms, damping, and the damping coefficients,
 // against physics-targets.md sections 1 and 5 and hand-computed per-face sums.
+#include "dem/constants.hpp"
 #include "dem/water_forces.hpp"
 
 #include <gtest/gtest.h>
@@ -9,8 +10,6 @@
 
 namespace icedem {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // the NMRI small floe (physics-targets.md section 1)
 constexpr double kL = 0.3;         // m, side
