@@ -32,9 +32,10 @@ void release_struck(World& world) {
     const btCollisionObject* a = m->getBody0();
     const btCollisionObject* b = m->getBody1();
     if (!a->isStaticObject() && !b->isStaticObject()) continue;  // frozen floes are static
-    FloeBody* frozen = world.frozen_floe(a);
-    if (!frozen) frozen = world.frozen_floe(b);
-    if (!frozen || (world.frozen_floe(a) && world.frozen_floe(b))) continue;
+    FloeBody* frozen_a = world.frozen_floe(a);
+    FloeBody* frozen_b = world.frozen_floe(b);
+    if ((frozen_a != nullptr) == (frozen_b != nullptr)) continue;  // both frozen (stale contact) or neither
+    FloeBody* frozen = frozen_a ? frozen_a : frozen_b;
     for (int k = 0; k < m->getNumContacts(); ++k) {
       const btManifoldPoint& p = m->getContactPoint(k);
       // the normal on B points from B to A: the closing speed is -(v_A - v_B) . n
