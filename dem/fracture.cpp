@@ -12,24 +12,55 @@ JointLoads joint_loads(const World& world, const IceJoint& joint) {
                               pose_a.linear() * Eigen::Vector3d::UnitY());
 }
 
-void check_fracture(const Scene& scene, State& state) {
+namespace {
+
+// First-order low-pass y += a (x - y), a = h / (tau + h): a load held for much
+// less than tau reaches only a fraction of its value, a sustained load reaches
+// all of it. It removes the one-step impulses of an unconverged PGS solve
+// without lowering the static capacity of a joint.
+void low_pass(JointLoads& y, const JointLoads& x, double a) {
+  y.axial += a * (x.axial - y.axial);
+  y.shear_in_plane += a * (x.shear_in_plane - y.shear_in_plane);
+  y.shear_vertical += a * (x.shear_vertical - y.shear_vertical);
+  y.bending_out_of_plane += a * (x.bending_out_of_plane - y.bending_out_of_plane);
+  y.bending_in_plane += a * (x.bending_in_plane - y.bending_in_plane);
+  y.torsion += a * (x.torsion - y.torsion);
+}
+
+}  // namespace
+
+void check_fracture(const Scene& scene, State& state, double h) {
   World& world = *state.world;
-  if (world.joints().empty()) return;
+  std::vector<IceJoint>& joints = world.joints();
+  if (joints.empty()) return;
   const JointCapacity capacity =
       paper_joint_capacity(scene.fracture.element_size, scene.ice.thickness, scene.ice.compressive_strength,
                            scene.ice.shear_strength, scene.ice.bending_strength);
-  for (IceJoint& joint : world.joints()) {
-    if (!joint.constraint) continue;  // broken already
-    const btRigidBody& a = *world.floes()[joint.body_a].body;
-    const btRigidBody& b = *world.floes()[joint.body_b].body;
-    if (!a.isActive() && !b.isActive()) continue;  // asleep: the feedback is stale (bullet-notes.md)
+  const double tau = scene.fracture.load_filter_time;
+  const double a = h / (tau + h);
+  if (tau > 0 && state.filtered_joint_loads.size() != joints.size())
+    state.filtered_joint_loads.resize(joints.size(), JointLoads{});
 
-    const JointLoads loads = joint_loads(world, joint);
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    IceJoint& joint = joints[i];
+    if (!joint.constraint) continue;  // broken already
+    const btRigidBody& body_a = *world.floes()[joint.body_a].body;
+    const btRigidBody& body_b = *world.floes()[joint.body_b].body;
+    // asleep: the feedback is stale (bullet-notes.md) and the filter keeps its last value
+    if (!body_a.isActive() && !body_b.isActive()) continue;
+
+    JointLoads loads = joint_loads(world, joint);
+    if (tau > 0) {
+      low_pass(state.filtered_joint_loads[i], loads, a);
+      loads = state.filtered_joint_loads[i];
+    }
     double ratio = 0;
     const FailureMode mode = failure_mode(loads, capacity, ratio);
     if (mode == FailureMode::kNone) continue;
 
-    state.fracture_events.push_back(FractureEvent{state.time, joint.floe, joint.index, static_cast<int>(mode), ratio});
+    const Eigen::Vector3d at = body_pose(body_a) * joint.midpoint_a;
+    state.fracture_events.push_back(
+        FractureEvent{state.time, joint.floe, joint.index, static_cast<int>(mode), ratio, at.x(), at.z()});
     ++state.breaks_by_mode[static_cast<int>(mode)];
     world.break_joint(joint);
   }

@@ -3,8 +3,9 @@
 // split in the joint frame, dem/joint_loads.hpp) is checked against the paper's
 // criteria (eq. 1-3); a joint that fails is removed and the break recorded.
 //
-// Known limit (issue 3, open): per-step joint loads from the PGS solver are
-// noisy and depend on solver.iterations; no filtering is applied yet.
+// Per-step joint loads from the PGS solver are noisy and depend on the
+// iteration count; fracture.joint_iterations and fracture.load_filter_time are
+// the two remedies (README, "Breakable ice": measured effect on breaks and cost).
 #pragma once
 
 #include "dem/joint_loads.hpp"
@@ -17,8 +18,9 @@ namespace icedem {
 /// element A, moved to the joint midpoint and split in the joint frame).
 JointLoads joint_loads(const World& world, const IceJoint& joint);
 
-/// Check every intact joint with an awake element; break those that fail and
-/// append their events to state.fracture_events.
-void check_fracture(const Scene& scene, State& state);
+/// Check every intact joint with an awake element after a Bullet step of `h`
+/// seconds (low-passing its loads if fracture.load_filter_time > 0); break
+/// those that fail and append their events to state.fracture_events.
+void check_fracture(const Scene& scene, State& state, double h);
 
 }  // namespace icedem

@@ -182,16 +182,20 @@ H5::CompType fracture_mem_type() {
   type.insertMember("joint", offsetof(FractureEvent, joint), H5::PredType::NATIVE_INT);
   type.insertMember("mode", offsetof(FractureEvent, mode), H5::PredType::NATIVE_INT);
   type.insertMember("ratio", offsetof(FractureEvent, ratio), H5::PredType::NATIVE_DOUBLE);
+  type.insertMember("x", offsetof(FractureEvent, x), H5::PredType::NATIVE_DOUBLE);
+  type.insertMember("z", offsetof(FractureEvent, z), H5::PredType::NATIVE_DOUBLE);
   return type;
 }
 
 H5::CompType fracture_file_type() {
-  H5::CompType type(std::size_t(28));
+  H5::CompType type(std::size_t(44));
   type.insertMember("time", 0, H5::PredType::IEEE_F64LE);
   type.insertMember("floe", 8, H5::PredType::STD_I32LE);
   type.insertMember("joint", 12, H5::PredType::STD_I32LE);
   type.insertMember("mode", 16, H5::PredType::STD_I32LE);
   type.insertMember("ratio", 20, H5::PredType::IEEE_F64LE);
+  type.insertMember("x", 28, H5::PredType::IEEE_F64LE);
+  type.insertMember("z", 36, H5::PredType::IEEE_F64LE);
   return type;
 }
 

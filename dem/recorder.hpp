@@ -23,7 +23,8 @@
 //   /snapshots/orientation     [k x nb x 4] f8  1     body-to-tank rotation, quaternion w,x,y,z
 //   /snapshots/awake           [k x nb]     u1  1     1 if the body was awake
 //   /fracture/events           [e]          compound (time f8 s, floe i4, joint i4, mode i4,
-//                                                     ratio f8 = load / threshold); may be empty
+//                                                     ratio f8 = load / threshold, x f8 m, z f8 m:
+//                                                     joint midpoint, tank frame); may be empty
 //   /meta   attributes: scenario (resolved TOML text), scenario_path, command_line, version,
 //           bullet_version, precision, seed (u8), format_version (i4), started_utc (ISO 8601),
 //           status, message, wall_time_s, finished_utc (after finish()).
@@ -101,6 +102,8 @@ struct FractureEvent {
   int joint;     // joint index within the floe
   int mode;      // failure mode code (defined by the fracture module)
   double ratio;  // 1, load / threshold of the criterion that fired (>= 1)
+  double x = 0;  // m, joint midpoint at the break, tank frame
+  double z = 0;  // m
 };
 
 /// Writes one run's HDF5 output file; see the layout at the top of this header.

@@ -152,6 +152,12 @@ std::vector<KeySpec> make_keys() {
   k.push_back(real("fracture.cfm", "-", 1.0e-10, 0.0, 1.0e6,
                    "constraint force mixing of the element joints (Bullet units)"));
   k.push_back(real("fracture.erp", "-", 0.8, 0.0, 1.0, "error reduction of the element joints (paper: 0.8)"));
+  k.push_back(integer("fracture.joint_iterations", 0, 0, 100000,
+                      "PGS iterations for the element joints (Bullet's per-constraint override; "
+                      "contacts keep solver.iterations); 0: solver.iterations"));
+  k.push_back(real("fracture.load_filter_time", "s", 0.0, 0.0, 100.0,
+                   "time constant of a first-order low-pass on each joint's loads before the "
+                   "failure check (damps one-step PGS spikes); 0: the raw per-step loads"));
 
   // activation (skip what the scene does not need)
   k.push_back(boolean("activation.sleeping", true,

@@ -98,6 +98,8 @@ struct FractureSettings {
   double cfm;           // -, Bullet units
   double erp;           // -
   double characteristic_length;  // m, l_c = (D / (rho_w g))^(1/4) of the ice ("auto")
+  int joint_iterations;          // PGS iterations of the joints; 0: solver.iterations
+  double load_filter_time;       // s, low-pass time constant of joint loads; 0: raw
 };
 
 enum class IslandMode { kContact, kBullet };

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "dem/flow_field.hpp"
+#include "dem/joint_loads.hpp"
 #include "dem/load_cell.hpp"
 #include "dem/recorder.hpp"
 #include "dem/world.hpp"
@@ -48,6 +49,8 @@ struct State {
 
   std::vector<FractureEvent> fracture_events;  // breaks of the last step; written by check_fracture
   std::array<int, 5> breaks_by_mode{};         // all breaks so far, by FailureMode value
+  std::vector<JointLoads> filtered_joint_loads;  // low-passed loads per World::joints() entry
+                                                 // (fracture.load_filter_time > 0)
 
   StageTimes stage_times;  // written by step()
 };

@@ -87,7 +87,7 @@ void step(const Scene& scene, State& state) {
     { StageTimer t(times.bullet); advance_bullet(state, h); }
     { StageTimer t(times.load_cell); read_load_cell(state, cell); }
     state.time = t_next;
-    { StageTimer t(times.fracture); check_fracture(scene, state); }
+    { StageTimer t(times.fracture); check_fracture(scene, state, h); }
   }
   state.load = cell.finish(scene.time.dt);
   { StageTimer t(times.activation); update_activation(scene, state); }

@@ -371,6 +371,11 @@ void World::add_breakable_floe(const Floe& floe, int floe_id) {
       joint.constraint->setParam(BT_CONSTRAINT_STOP_CFM, scene_.fracture.cfm, axis);
       joint.constraint->setParam(BT_CONSTRAINT_STOP_ERP, scene_.fracture.erp, axis);
     }
+    // more iterations for the joints than for contacts where asked: Bullet solves a
+    // constraint's rows for max(its override, solver.iterations) sweeps, contacts
+    // only for solver.iterations (btSequentialImpulseConstraintSolver)
+    if (scene_.fracture.joint_iterations > 0)
+      joint.constraint->setOverrideNumSolverIterations(scene_.fracture.joint_iterations);
     joint.feedback = std::make_unique<btJointFeedback>();
     joint.constraint->setJointFeedback(joint.feedback.get());
     dynamics_->addConstraint(joint.constraint.get(), false);  // the fragment filter handles collisions

@@ -165,3 +165,68 @@ TEST(Calibration, SaysWhenOnlyMoreIterationsCanStiffenThePlate) {
   EXPECT_NE(r.note.find("solver.iterations"), std::string::npos) << r.note;
   EXPECT_EQ(r.points.size(), 1u);  // one look at the stiffest joints is enough to know
 }
+
+TEST(Breakable, JointIterationsSolveTheJointsLongerThanTheContacts) {
+  // Bullet sweeps a constraint max(override, solver.iterations) times and contacts
+  // solver.iterations times: a plate (joints, no contacts) at 5 iterations with 30
+  // for its joints must deflect as at 30 iterations, and differ from 5 iterations alone
+  auto compliance = [](std::vector<std::string> set) {
+    set.insert(set.end(), {"validation.plate_size=1.5", "time.duration=6"});
+    const Scene s =
+        load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/plate_deflection_27_015.toml", set);
+    return measure_plate_compliance(s);
+  };
+  const double thirty = compliance({"solver.iterations=30"});
+  const double override = compliance({"solver.iterations=5", "fracture.joint_iterations=30"});
+  const double five = compliance({"solver.iterations=5"});
+  // 1e-6: the same sweeps over the same rows, only the (absent) contacts differ
+  EXPECT_NEAR(override, thirty, 1e-6 * thirty);
+  EXPECT_GT(five, 1.2 * thirty);  // measured about 2x: five sweeps leave the plate soft
+}
+
+namespace {
+// a two-element strip in air with a clamped root element: the root joint carries
+// the free element's weight, m g L_e / 2 = 0.51 N m of bending (capacity 0.99 N m)
+struct ClampedPair {
+  Scene scene;
+  State state;
+  explicit ClampedPair(std::vector<std::string> set)
+      : scene(bench([&] {
+          set.insert(set.end(), {"ice.bending_strength=36.4e3", "solver.iterations=100", "fracture.cfm=0"});
+          return set;
+        }())),
+        state(initial_state(scene, {strip(0.3, 0.15)})) {
+    lift(*state.world);
+    btRigidBody& root = *state.world->floes()[0].body;
+    root.setMassProps(0, btVector3(0, 0, 0));
+    root.updateInertiaTensor();
+  }
+  int breaks() const { return state.breaks_by_mode[static_cast<int>(FailureMode::kBending)]; }
+};
+}  // namespace
+
+TEST(Breakable, LoadFilterIgnoresAOneStepSpikeButNotASustainedOverload) {
+  // a 20 N push on the free element adds 20 N x 0.075 m = 1.5 N m: twice the capacity
+  const Eigen::Vector3d push(0, -20.0, 0);
+  {
+    ClampedPair raw({});
+    for (int i = 0; i < 50; ++i) step(raw.scene, raw.state);
+    EXPECT_EQ(raw.breaks(), 0);  // the weight alone is half the capacity
+    raw.state.point_loads = {{1, push}};
+    step(raw.scene, raw.state);
+    EXPECT_EQ(raw.breaks(), 1);  // unfiltered, one step over the capacity breaks it
+  }
+  ClampedPair filtered({"fracture.load_filter_time=0.2"});
+  for (int i = 0; i < 50; ++i) step(filtered.scene, filtered.state);  // 5 time constants
+  filtered.state.point_loads = {{1, push}};
+  step(filtered.scene, filtered.state);
+  filtered.state.point_loads.clear();
+  // the filter passes h / (tau + h) = 9 % of the spike: 0.51 + 0.14 N m < 0.99 N m
+  for (int i = 0; i < 50; ++i) step(filtered.scene, filtered.state);
+  EXPECT_EQ(filtered.breaks(), 0);
+  // held, the same push breaks it once the filter has caught up: (0.99 - 0.51) / 1.5
+  // = 32 % of the step, after -tau ln(1 - 0.32) / h, about 4 steps (give it 10)
+  filtered.state.point_loads = {{1, push}};
+  for (int i = 0; i < 10 && filtered.breaks() == 0; ++i) step(filtered.scene, filtered.state);
+  EXPECT_EQ(filtered.breaks(), 1);
+}

@@ -145,7 +145,7 @@ TEST(Recorder, RoundTripKeepsEveryValueAndShape) {
   const int n = 1234;  // two full 500-row blocks and a partial one
   const int k = 7;
   const std::vector<FractureEvent> events{
-      {1.5, 2, 17, 1, 1.02}, {1.5, 2, 18, 3, 1.5}, {9.25, 5, 0, 2, 3.75}};
+      {1.5, 2, 17, 1, 1.02, 3.25, -0.5}, {1.5, 2, 18, 3, 1.5, 3.5, 0.125}, {9.25, 5, 0, 2, 3.75, 7.0, 1.0}};
   {
     Recorder rec(path, test_meta(), bodies);
     for (int i = 0; i < n; ++i) {
@@ -206,19 +206,22 @@ TEST(Recorder, RoundTripKeepsEveryValueAndShape) {
     }
   }
 
-  // fracture events: compound (time, floe, joint, mode, ratio)
+  // fracture events: compound (time, floe, joint, mode, ratio, x, z)
   EXPECT_EQ(shape(file, "/fracture/events"), (std::vector<hsize_t>{3}));
   H5::DataSet event_set = file.openDataSet("/fracture/events");
   H5::CompType event_type = event_set.getCompType();
-  ASSERT_EQ(event_type.getNmembers(), 5);
+  ASSERT_EQ(event_type.getNmembers(), 7);
   EXPECT_EQ(event_type.getMemberName(0), "time");
   EXPECT_EQ(event_type.getMemberName(4), "ratio");
+  EXPECT_EQ(event_type.getMemberName(6), "z");
   H5::CompType mem(sizeof(FractureEvent));
   mem.insertMember("time", offsetof(FractureEvent, time), H5::PredType::NATIVE_DOUBLE);
   mem.insertMember("floe", offsetof(FractureEvent, floe), H5::PredType::NATIVE_INT);
   mem.insertMember("joint", offsetof(FractureEvent, joint), H5::PredType::NATIVE_INT);
   mem.insertMember("mode", offsetof(FractureEvent, mode), H5::PredType::NATIVE_INT);
   mem.insertMember("ratio", offsetof(FractureEvent, ratio), H5::PredType::NATIVE_DOUBLE);
+  mem.insertMember("x", offsetof(FractureEvent, x), H5::PredType::NATIVE_DOUBLE);
+  mem.insertMember("z", offsetof(FractureEvent, z), H5::PredType::NATIVE_DOUBLE);
   std::vector<FractureEvent> back(3);
   event_set.read(back.data(), mem);
   for (std::size_t i = 0; i < events.size(); ++i) {
@@ -227,6 +230,8 @@ TEST(Recorder, RoundTripKeepsEveryValueAndShape) {
     EXPECT_EQ(back[i].joint, events[i].joint);
     EXPECT_EQ(back[i].mode, events[i].mode);
     EXPECT_EQ(back[i].ratio, events[i].ratio);
+    EXPECT_EQ(back[i].x, events[i].x);
+    EXPECT_EQ(back[i].z, events[i].z);
   }
   EXPECT_EQ(string_attr(event_set, "mode_names"), "1 compression, 2 shear, 3 bending");
 
