@@ -11,14 +11,15 @@ inline Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z(
 
 inline btVector3 to_bt(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
 
-/// A body's centre-of-mass pose as an Eigen transform (body frame -> tank frame).
-inline Eigen::Isometry3d body_pose(const btRigidBody& body) {
-  const btTransform& t = body.getCenterOfMassTransform();
+inline Eigen::Isometry3d to_eigen(const btTransform& t) {
   const btQuaternion q = t.getRotation();
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()).toRotationMatrix();
   pose.translation() = to_eigen(t.getOrigin());
   return pose;
 }
+
+/// A body's centre-of-mass pose as an Eigen transform (body frame -> tank frame).
+inline Eigen::Isometry3d body_pose(const btRigidBody& body) { return to_eigen(body.getCenterOfMassTransform()); }
 
 }  // namespace icedem

@@ -315,7 +315,8 @@ Scene make_scene(const Scenario& sc) {
                                                                            : FractureMode::kOff,
                 real(sc, "fracture.element_size"), real(sc, "fracture.cfm"), real(sc, "fracture.erp"),
                 std::pow(D / (s.water.density * s.water.gravity), 0.25),
-                integer(sc, "fracture.joint_iterations"), real(sc, "fracture.load_filter_time")};
+                integer(sc, "fracture.joint_iterations"), real(sc, "fracture.load_filter_time"),
+                real(sc, "fracture.lattice_radius")};
   const bool breakable = s.fracture.mode == FractureMode::kOn ||
                          (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
   if (breakable && s.layout.file.empty() && get<std::string>(sc, "validation.case") == "none") {

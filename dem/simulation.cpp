@@ -55,7 +55,7 @@ RunMeta run_meta(const Scene& scene, const RunOptions& options) {
 std::vector<BodyOutline> body_outlines(const Scene& scene, const World& world) {
   std::vector<BodyOutline> out;
   for (const FloeBody& f : world.floes())
-    out.push_back(BodyOutline{f.floe_id, f.shape->outline, scene.ice.thickness});
+    if (!f.stand_in) out.push_back(BodyOutline{f.floe_id, f.shape->outline, scene.ice.thickness});
   return out;
 }
 
@@ -63,8 +63,9 @@ std::vector<BodyPose> body_poses(const World& world) {
   std::vector<BodyPose> poses;
   poses.reserve(world.floes().size());
   for (const FloeBody& f : world.floes()) {
-    const Eigen::Isometry3d pose = body_pose(*f.body);
-    poses.push_back(BodyPose{pose.translation(), Eigen::Quaterniond(pose.linear()), f.body->isActive()});
+    if (f.stand_in) continue;  // its elements are the output bodies
+    const Eigen::Isometry3d pose = world.output_pose(f);
+    poses.push_back(BodyPose{pose.translation(), Eigen::Quaterniond(pose.linear()), world.output_awake(f)});
   }
   return poses;
 }

@@ -5,6 +5,7 @@
 #include "dem/activation.hpp"
 #include "dem/fracture.hpp"
 #include "dem/health_check.hpp"
+#include "dem/lattice_region.hpp"
 #include "dem/load_cell.hpp"
 #include "dem/water_forces.hpp"
 
@@ -78,6 +79,7 @@ void step(const Scene& scene, State& state) {
   const double t0 = state.time;
   StageTimes& times = state.stage_times;
   state.fracture_events.clear();
+  { StageTimer t(times.activation); update_lattice_region(scene, state); }
   LoadCell cell;
   for (int k = 1; k <= scene.time.substeps; ++k) {
     const double t_next = t0 + k * h;

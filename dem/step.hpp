@@ -6,9 +6,11 @@
 
 namespace icedem {
 
-/// Advance the state by scene.time.dt: per Bullet substep, move the structure,
-/// apply water forces, let Bullet collide/solve/integrate and read the load
-/// cell; then average the load over the step and check for blow-ups.
+/// Advance the state by scene.time.dt: put the lattices of floes near the
+/// structure in place of their stand-ins; per Bullet substep, move the
+/// structure, apply water forces, let Bullet collide/solve/integrate, read the
+/// load cell and check the joints for fracture; then average the load over the
+/// step, update sleeping/freezing and check for blow-ups.
 /// Throws NumericalError on a blow-up.
 void step(const Scene& scene, State& state);
 

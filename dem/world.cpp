@@ -271,7 +271,7 @@ const FloeShape& World::shape_for(const Polygon& outline) {
   return *raw;
 }
 
-int World::add_body(const FloeShape& shape, const btTransform& pose, int floe_id, int fragment) {
+int World::add_body(const FloeShape& shape, const btTransform& pose, int floe_id, int fragment, bool in_world) {
   auto motion = std::make_unique<btDefaultMotionState>(pose);
   btRigidBody::btRigidBodyConstructionInfo ci(shape.mass, motion.get(), shape.collision.get(),
                                               to_bt(shape.inertia));
@@ -285,9 +285,14 @@ int World::add_body(const FloeShape& shape, const btTransform& pose, int floe_id
   // registered before it enters the broadphase, which asks the fragment filter at once
   const int index = static_cast<int>(floes_.size());
   floes_.push_back(FloeBody{body.get(), floe_id, &shape, false, fragment});
-  dynamics_->addRigidBody(body.get());
-  // floes start at rest at their equilibrium draft: asleep until something touches them
-  body->setActivationState(scene_.activation.sleeping ? ISLAND_SLEEPING : DISABLE_DEACTIVATION);
+  if (in_world) {
+    dynamics_->addRigidBody(body.get());
+    // floes start at rest at their equilibrium draft: asleep until something touches them
+    body->setActivationState(scene_.activation.sleeping ? ISLAND_SLEEPING : DISABLE_DEACTIVATION);
+  } else {
+    // not simulated: isActive() is false, so water forces, health checks and counts skip it
+    body->forceActivationState(DISABLE_SIMULATION);
+  }
   motion_states_.push_back(std::move(motion));
   bodies_.push_back(std::move(body));
   return index;
@@ -337,6 +342,28 @@ void World::add_breakable_floe(const Floe& floe, int floe_id) {
   const double draft = h * scene_.ice.density / scene_.water.density;
   const double yaw = floe.yaw + yaw0;
   const btQuaternion rotation(btVector3(0, 1, 0), yaw);
+
+  // far from the structure the floe is one rigid body: its elements wait outside the world
+  const bool dormant = scene_.fracture.lattice_radius > 0;
+  btTransform stand_in_pose;
+  if (dormant) {
+    const FloeShape& whole = shape_for(floe.shape);
+    stand_in_pose.setIdentity();
+    stand_in_pose.setOrigin(btVector3(floe.centre.x(), h / 2 - draft, floe.centre.y()));
+    stand_in_pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + whole.principal_yaw));
+    DormantLattice d;
+    d.stand_in = add_body(whole, stand_in_pose, floe_id);
+    floes_[d.stand_in].stand_in = true;
+    floes_[d.stand_in].lattice = static_cast<int>(lattices_.size());
+    d.first_element = static_cast<int>(floes_.size());
+    d.elements = static_cast<int>(lattice.centres.size());
+    d.first_joint = static_cast<int>(joints_.size());
+    d.joints = static_cast<int>(lattice.joints.size());
+    d.radius = 0;
+    for (const Eigen::Vector2d& v : whole.outline) d.radius = std::max(d.radius, v.norm());
+    lattices_.push_back(std::move(d));
+  }
+
   const int first = static_cast<int>(floes_.size());
   for (const Eigen::Vector2d& c : lattice.centres) {
     const Eigen::Vector2d at = floe.centre + rotate(c, yaw);
@@ -344,7 +371,13 @@ void World::add_breakable_floe(const Floe& floe, int floe_id) {
     pose.setIdentity();
     pose.setOrigin(btVector3(at.x(), h / 2 - draft, at.y()));
     pose.setRotation(rotation);
-    add_body(element, pose, floe_id, 0);  // one piece: its elements do not collide with each other
+    // one piece: its elements do not collide with each other (fragment 0)
+    const int index = add_body(element, pose, floe_id, 0, !dormant);
+    if (dormant) {
+      DormantLattice& d = lattices_.back();
+      floes_[index].lattice = static_cast<int>(lattices_.size()) - 1;
+      d.offsets.push_back(stand_in_pose.inverse() * pose);
+    }
   }
 
   // fixed joints at the middle of each shared face; softness set on all six axes
@@ -378,9 +411,56 @@ void World::add_breakable_floe(const Floe& floe, int floe_id) {
       joint.constraint->setOverrideNumSolverIterations(scene_.fracture.joint_iterations);
     joint.feedback = std::make_unique<btJointFeedback>();
     joint.constraint->setJointFeedback(joint.feedback.get());
-    dynamics_->addConstraint(joint.constraint.get(), false);  // the fragment filter handles collisions
+    // the fragment filter handles collisions; a dormant lattice's joints wait for wake_lattice
+    if (!dormant) dynamics_->addConstraint(joint.constraint.get(), false);
     joints_.push_back(std::move(joint));
   }
+}
+
+void World::wake_lattice(DormantLattice& lattice) {
+  if (lattice.replaced) return;
+  FloeBody& whole = floes_[lattice.stand_in];
+  if (whole.frozen) unfreeze(whole);
+  btRigidBody& w = *whole.body;
+  const btTransform T = w.getCenterOfMassTransform();
+  const btVector3 v = w.getLinearVelocity(), omega = w.getAngularVelocity();
+  dynamics_->removeRigidBody(&w);
+  w.forceActivationState(DISABLE_SIMULATION);
+  for (int i = 0; i < lattice.elements; ++i) {
+    btRigidBody& e = *floes_[lattice.first_element + i].body;
+    const btTransform pose = T * lattice.offsets[i];
+    e.setCenterOfMassTransform(pose);  // also the interpolation pose
+    e.getMotionState()->setWorldTransform(pose);
+    // rigid-body motion of the stand-in at the element's place
+    e.setLinearVelocity(v + omega.cross(pose.getOrigin() - T.getOrigin()));
+    e.setAngularVelocity(omega);
+    dynamics_->addRigidBody(&e);
+    // awake: the structure is near (the sleep clock starts again)
+    e.forceActivationState(scene_.activation.sleeping ? ACTIVE_TAG : DISABLE_DEACTIVATION);
+    e.setDeactivationTime(0);
+  }
+  for (int j = 0; j < lattice.joints; ++j) {
+    btTypedConstraint* c = joints_[lattice.first_joint + j].constraint.get();
+    if (c) dynamics_->addConstraint(c, false);
+  }
+  lattice.replaced = true;
+}
+
+bool World::output_awake(const FloeBody& floe) const {
+  if (floe.lattice >= 0 && !floe.stand_in && !lattices_[floe.lattice].replaced)
+    return floes_[lattices_[floe.lattice].stand_in].body->isActive();
+  return floe.body->isActive();
+}
+
+Eigen::Isometry3d World::output_pose(const FloeBody& floe) const {
+  if (floe.lattice >= 0 && !floe.stand_in) {
+    const DormantLattice& d = lattices_[floe.lattice];
+    if (!d.replaced) {
+      const int i = floe.body->getUserIndex2() - d.first_element;
+      return to_eigen(floes_[d.stand_in].body->getCenterOfMassTransform() * d.offsets[i]);
+    }
+  }
+  return body_pose(*floe.body);
 }
 
 void World::break_joint(IceJoint& joint) {

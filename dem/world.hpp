@@ -53,6 +53,21 @@ struct FloeBody {
   const FloeShape* shape;  // owned by World
   bool frozen = false;     // a fixed obstacle for now (dem/activation.hpp)
   int fragment = -1;       // breakable floes: elements of one fragment do not collide; -1: rigid floe
+  bool stand_in = false;   // the whole floe standing in for its dormant lattice (not an output body)
+  int lattice = -1;        // index into World::lattices() for a floe with a lattice region, else -1
+};
+
+/// A breakable floe simulated as one rigid body (its stand-in) until it comes
+/// within fracture.lattice_radius of the structure; then its elements and
+/// joints replace the stand-in for the rest of the run. Until then the elements
+/// and joints exist but are not in the Bullet world.
+struct DormantLattice {
+  int stand_in;                       // index into World::floes()
+  int first_element, elements;        // World::floes()[first_element, first_element + elements)
+  int first_joint, joints;            // World::joints()[first_joint, first_joint + joints)
+  std::vector<btTransform> offsets;   // element poses in the stand-in's body frame
+  double radius;                      // m, farthest outline vertex from the floe's centroid
+  bool replaced = false;              // the lattice is in the world, the stand-in is not
 };
 
 /// A fixed joint between two elements of a breakable floe (seed paper, Fig. 5).
@@ -123,6 +138,22 @@ class World {
   /// pieces that came apart collide with each other.
   void break_joint(IceJoint& joint);
 
+  /// Breakable floes that start as one rigid body (fracture.lattice_radius > 0).
+  std::vector<DormantLattice>& lattices() { return lattices_; }
+  const std::vector<DormantLattice>& lattices() const { return lattices_; }
+
+  /// Put a dormant lattice in the world in place of its stand-in: every element
+  /// takes the rigid-body motion of the stand-in at its place, the joints are
+  /// added intact, and the stand-in leaves the world.
+  void wake_lattice(DormantLattice& lattice);
+
+  /// Pose of an output body (a rigid floe or an element): an element of a
+  /// dormant lattice follows its stand-in.
+  Eigen::Isometry3d output_pose(const FloeBody& floe) const;
+
+  /// Whether an output body is being simulated (awake), through its stand-in while dormant.
+  bool output_awake(const FloeBody& floe) const;
+
   /// Whether a floe of this outline is made of breakable elements (fracture.mode).
   bool is_breakable(const Polygon& outline) const;
 
@@ -131,7 +162,8 @@ class World {
 
  private:
   const FloeShape& shape_for(const Polygon& outline);
-  int add_body(const FloeShape& shape, const btTransform& pose, int floe_id, int fragment = -1);
+  int add_body(const FloeShape& shape, const btTransform& pose, int floe_id, int fragment = -1,
+               bool in_world = true);
   void add_breakable_floe(const Floe& floe, int floe_id);
   void update_fragments(int floe_id);
   btRigidBody* add_static_box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extents,
@@ -152,6 +184,7 @@ class World {
   std::map<std::vector<double>, FloeShape*> shape_cache_;
   std::vector<FloeBody> floes_;
   std::vector<IceJoint> joints_;
+  std::vector<DormantLattice> lattices_;
   std::unique_ptr<btOverlapFilterCallback> fragment_filter_;
   int next_floe_id_ = 0;
   btRigidBody* structure_ = nullptr;

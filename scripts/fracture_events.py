@@ -1,0 +1,46 @@
+#!/usr/bin/python3
+"""Summarise the joint breaks of one icedem run: count by mode, and where they
+happened relative to the structure (distance ahead of its axis and sideways).
+
+    fracture_events.py RUN.h5 [--json]
+
+Prints one line (or a JSON object): breaks, by mode, breaks within 1 m of the
+structure axis, median and max distance from the axis at the time of the break.
+"""
+import json
+import sys
+
+import h5py
+import numpy as np
+
+
+def summarise(path):
+    with h5py.File(path, "r") as f:
+        events = f["/fracture/events"][:]
+        t = f["/load/time"][:]
+        pos = f["/structure/position"][:]
+    out = {"breaks": int(len(events))}
+    names = {0: "compression", 1: "shear", 2: "bending", 3: "tension", 4: "in_plane_bending"}
+    for code, name in names.items():
+        out[name] = int(np.sum(events["mode"] == code)) if len(events) else 0
+    if len(events) == 0:
+        out.update(within_1m=0, median_distance_m=float("nan"), max_distance_m=float("nan"))
+        return out
+    # structure axis at each break time (nearest recorded step)
+    i = np.clip(np.searchsorted(t, events["time"]), 0, len(t) - 1)
+    dx = events["x"] - pos[i, 0]
+    dz = events["z"] - pos[i, 2]
+    r = np.hypot(dx, dz)
+    out.update(within_1m=int(np.sum(r <= 1.0)), median_distance_m=float(np.median(r)),
+               max_distance_m=float(np.max(r)))
+    return out
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    s = summarise(sys.argv[1])
+    if "--json" in sys.argv:
+        print(json.dumps(s))
+    else:
+        print(" ".join(f"{k}={v:.3g}" if isinstance(v, float) else f"{k}={v}" for k, v in s.items()))
