@@ -43,9 +43,9 @@ CalibrationResult calibrate_cfm(const Scene& plate_scene, double target, double 
   const CalibrationPoint stiff = evaluate(cfm_min);
   if (stiff.modulus < target) {
     result.note = fmt::format("even the stiffest joints (fracture.cfm = {:g}) give E = {:.1f} MPa < {:.1f} MPa at "
-                              "solver.iterations = {}: the plate's softness is PGS non-convergence; raise "
-                              "solver.iterations", cfm_min, stiff.modulus / 1e6, target / 1e6,
-                              scene.solver.iterations);
+                              "{} joint iterations: the plate's softness is PGS non-convergence; raise "
+                              "fracture.joint_iterations (or solver.iterations)", cfm_min, stiff.modulus / 1e6,
+                              target / 1e6, joint_sweeps(scene));
     result.cfm = cfm_min;
     result.modulus = stiff.modulus;
     return result;

@@ -73,9 +73,9 @@ int calibrate_command(const std::string& scenario_path, const std::vector<std::s
   const Scene scene = load_scene(scenario_path, sets);
   if (target <= 0) target = scene.ice.elastic_modulus;
   std::cout << fmt::format("calibrating fracture.cfm for E = {:.1f} MPa: {} m plate of {} m elements, "
-                           "solver.iterations = {}, time.dt = {} s\n",
+                           "{} joint iterations, time.dt = {} s\n",
                            target / 1e6, scene.validation.plate_size, scene.fracture.element_size,
-                           scene.solver.iterations, scene.time.dt);
+                           joint_sweeps(scene), scene.time.dt);
   const CalibrationResult r = calibrate_cfm(scene, target);
   std::cout << "      cfm    w0/P mm/N    E MPa\n";
   for (const CalibrationPoint& p : r.points)

@@ -156,4 +156,10 @@ struct Scene {
   ValidationSettings validation;
 };
 
+/// PGS sweeps the element joints get per step: Bullet solves a constraint
+/// max(its override, solver.iterations) times (fracture.joint_iterations).
+inline int joint_sweeps(const Scene& s) {
+  return s.fracture.joint_iterations > s.solver.iterations ? s.fracture.joint_iterations : s.solver.iterations;
+}
+
 }  // namespace icedem

@@ -6,6 +6,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "dem/constants.hpp"
+#include "dem/fracture.hpp"
 #include "dem/joint_loads.hpp"
 
 namespace icedem {
@@ -88,6 +89,14 @@ void Validation::after_step(const Scene& scene, State& state) {
       first_break_ = state.fracture_events.front();
       load_at_break_ = tip_load_;
     }
+    if (!broken_) {
+      // the root joint's bending stress as the model sees it, beside the applied load
+      const double Le = scene.fracture.element_size, h = scene.ice.thickness;
+      const JointLoads root = joint_loads(*state.world, state.world->joints().front());
+      history_time_.push_back(state.time);
+      history_load_.push_back(tip_load_);
+      history_root_stress_.push_back(6 * std::abs(root.bending_out_of_plane) / (Le * h * h) / 1e3);
+    }
     // the tip load of the next step grows linearly (quasi-static: slow against the beam's response)
     tip_load_ = broken_ ? 0.0 : scene.validation.load_rate * state.time;
     // each free element's weight is carried by an upward force, as buoyancy carries a
@@ -141,6 +150,9 @@ nlohmann::json Validation::cantilever_result(const Scene& scene) const {
   j["at_root"] = k == 0;
   j["load_at_failure_N"] = load_at_break_;
   j["time_of_failure_s"] = first_break_.time;
+  j["lever_m"] = lever;
+  j["history"] = {{"time_s", history_time_}, {"tip_load_N", history_load_},
+                  {"root_joint_stress_kPa", history_root_stress_}};
   j["passed"] = std::abs(rel_error) <= scene.validation.tolerance && k == 0 &&
                 first_break_.mode == static_cast<int>(FailureMode::kBending);
   return j;

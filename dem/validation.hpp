@@ -69,6 +69,9 @@ class Validation {
   bool broken_ = false;
   FractureEvent first_break_{};
   double load_at_break_ = 0;  // N
+  // history for the plot (summary "history"): time s, tip load N, root-joint bending
+  // stress kPa from the joint feedback (6 M / (L_e T_e^2))
+  std::vector<double> history_time_, history_load_, history_root_stress_;
 };
 
 }  // namespace icedem

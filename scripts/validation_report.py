@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""Run the validation scenarios (scenarios/validation/) and plot them:
+
+  cantilever.png       seed paper Fig. 7: the bending stress at the root joint from the
+                       joint feedback and sigma' = 6 P l / (L_e T_e^2) from the tip load,
+                       against time, up to the break; sigma_b = 36.4 kPa
+  plate_deflection.png seed paper Fig. 6 as numbers: the centre deflection per unit load
+                       of each plate scenario against Hertz's reference (x finite-plate
+                       factor), with the tolerance band, and the inferred E
+  validation.md        the table of every case: value, reference, error, passed
+
+    scripts/validation_report.py [--icedem build/dem/icedem] [--out docs/validation]
+"""
+import argparse
+import glob
+import json
+import os
+import subprocess
+import tempfile
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def run(icedem, scenario, work):
+    name = os.path.splitext(os.path.basename(scenario))[0]
+    summary = os.path.join(work, name + ".json")
+    subprocess.run([icedem, "run", scenario, "-q", "-o", os.path.join(work, name + ".h5"),
+                    "--summary-json", summary], check=True, stdout=subprocess.DEVNULL)
+    with open(summary) as f:
+        return name, json.load(f)
+
+
+def plot_cantilever(name, s, out):
+    v = s["validation"]
+    h = v["history"]
+    le, t = 0.15, 0.033  # the scenario's element size and thickness (set in its file)
+    applied = [6 * p * v["lever_m"] / (le * t * t) / 1e3 for p in h["tip_load_N"]]
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    ax.plot(h["time_s"], applied, label="sigma' = 6 P l / (L_e T_e^2) from the tip load (eq. 6)")
+    ax.plot(h["time_s"], h["root_joint_stress_kPa"], "--", label="root joint, from Bullet's joint feedback")
+    ax.axhline(v["reference"], color="k", lw=1, ls=":", label=f"sigma_b = {v['reference']:.1f} kPa")
+    ax.plot([v["time_of_failure_s"]], [v["value"]], "rx", ms=10,
+            label=f"break: {v['failure_mode']} at joint {v['failed_joint']}, {v['value']:.2f} kPa "
+                  f"({100 * v['rel_error']:+.2f} %)")
+    ax.set_xlabel("time, s")
+    ax.set_ylabel("bending stress at the root, kPa")
+    ax.set_title(f"Cantilever test ({name}), seed paper Fig. 7")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "cantilever.png"), dpi=110)
+
+
+def plot_plates(plates, out):
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    for i, (name, s) in enumerate(plates):
+        v = s["validation"]
+        ref, tol = v["reference"], v["tolerance"]
+        ax.bar(i, v["value"], color="tab:blue" if v["passed"] else "tab:red", width=0.6)
+        ax.errorbar(i, ref, yerr=tol * ref, fmt="k_", capsize=12, ms=30)
+        ax.text(i, v["value"] * 1.02, f"{100 * v['rel_error']:+.1f} %\nE {v['elastic_modulus_MPa']:.1f} MPa",
+                ha="center", va="bottom", fontsize=8)
+    ax.set_xticks(range(len(plates)))
+    ax.set_xticklabels([n.replace("plate_deflection_", "") for n, _ in plates])
+    ax.set_ylabel("centre deflection per unit load, mm/N")
+    ax.set_title("Plate-deflection test (Fig. 6): bars = icedem, black = Hertz x finite plate +- tol.")
+    ax.set_ylim(0, max(s["validation"]["value"] for _, s in plates) * 1.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "plate_deflection.png"), dpi=110)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--icedem", default=os.path.join(ROOT, "build", "dem", "icedem"))
+    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "validation"))
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    results = []
+    with tempfile.TemporaryDirectory() as work:
+        for scenario in sorted(glob.glob(os.path.join(ROOT, "scenarios", "validation", "*.toml"))):
+            name, s = run(args.icedem, scenario, work)
+            results.append((name, s))
+            v = s["validation"]
+            print(f"{name}: {v['metric']} = {v['value']:.4g} (reference {v['reference']:.4g}), "
+                  f"error {100 * v['rel_error']:+.1f} %, {'passed' if v['passed'] else 'FAILED'}, "
+                  f"{s['wall_time_s']:.1f} s wall", flush=True)
+    for name, s in results:
+        if s["validation"]["case"] == "cantilever":
+            plot_cantilever(name, s, args.out)
+    plot_plates([(n, s) for n, s in results if s["validation"]["case"] == "plate_deflection"], args.out)
+    with open(os.path.join(args.out, "validation.md"), "w") as f:
+        f.write("# Validation cases\n\n`scripts/validation_report.py` (every scenarios/validation/*.toml)\n\n")
+        f.write("| scenario | metric | value | reference | error | tolerance | passed | extra | wall s |\n")
+        f.write("|---|---|---|---|---|---|---|---|---|\n")
+        for name, s in results:
+            v = s["validation"]
+            extra = (f"E {v['elastic_modulus_MPa']:.1f} MPa" if v["case"] == "plate_deflection"
+                     else f"{v['failure_mode']} at joint {v['failed_joint']}")
+            f.write(f"| {name} | {v['metric']} | {v['value']:.4g} | {v['reference']:.4g} | "
+                    f"{100 * v['rel_error']:+.1f} % | {100 * v['tolerance']:.0f} % | {v['passed']} | {extra} | "
+                    f"{s['wall_time_s']:.1f} |\n")
+    print(f"wrote {args.out}/cantilever.png, plate_deflection.png, validation.md")
+
+
+if __name__ == "__main__":
+    main()
