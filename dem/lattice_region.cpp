@@ -1,17 +1,33 @@
 #include "dem/lattice_region.hpp"
 
+#include <cmath>
+
 namespace icedem {
 
 void update_lattice_region(const Scene& scene, State& state) {
-  if (scene.fracture.lattice_radius <= 0) return;
+  const double radius = scene.fracture.lattice_radius;
+  if (radius <= 0) return;
   World& world = *state.world;
   const Eigen::Vector3d& axis = state.structure_position;
   for (DormantLattice& lattice : world.lattices()) {
-    if (lattice.replaced) continue;
-    const btVector3& c = world.floes()[lattice.stand_in].body->getCenterOfMassPosition();
+    if (lattice.broken) continue;  // pieces stay pieces
     // the floe's nearest point is at least |centre - axis| - radius from the axis
+    const btRigidBody& whole = *world.floes()[lattice.stand_in].body;
+    btVector3 c = whole.getCenterOfMassPosition();
+    if (lattice.replaced) {
+      c.setZero();
+      for (int i = 0; i < lattice.elements; ++i)
+        c += world.floes()[lattice.first_element + i].body->getCenterOfMassPosition();
+      c /= lattice.elements;
+    }
     const double gap = std::hypot(c.x() - axis.x(), c.z() - axis.z()) - lattice.radius;
-    if (gap < scene.fracture.lattice_radius) world.wake_lattice(lattice);
+    if (!lattice.replaced && gap < radius) {
+      world.wake_lattice(lattice);
+    } else if (lattice.replaced && gap > radius + kLatticeHysteresis) {
+      // left the region intact: a rigid body again; its joints' filtered loads restart
+      if (world.make_dormant(lattice) && !state.filtered_joint_loads.empty())
+        for (int j = 0; j < lattice.joints; ++j) state.filtered_joint_loads[lattice.first_joint + j] = JointLoads{};
+    }
   }
 }
 

@@ -1,10 +1,12 @@
-// The lattice region (fracture.lattice_radius): a breakable floe far from the
-// structure cannot break, so it is simulated as one rigid body (its stand-in)
-// and becomes its lattice of elements and joints only when some part of it comes
-// within lattice_radius of the structure axis. Far from the cone this saves the
-// joint rows, which are most of the solver's work in a breakable scene; the cost
-// is that a floe never breaks before it reaches the region (scripts/
-// fracture_remedy.sh measures where breaks happen with lattices everywhere).
+// The lattice region (fracture.lattice_radius): a breakable floe is simulated
+// as one rigid body (its stand-in) while it is far from the structure, and as
+// its lattice of elements and joints while some part of it is within
+// lattice_radius of the structure axis; an intact lattice that has moved
+// kLatticeHysteresis beyond the radius becomes a rigid body again, a broken
+// one stays a lattice. This saves the joint rows, most of the solver's work in a
+// breakable scene; the price is that ice outside the region cannot break
+// (scripts/fracture_remedy.sh measures where breaks happen with lattices
+// everywhere; README, "Breakable ice").
 #pragma once
 
 #include "dem/scene.hpp"
@@ -12,9 +14,14 @@
 
 namespace icedem {
 
+/// m: how far beyond fracture.lattice_radius an intact lattice must be before it
+/// becomes a rigid body again (so that a floe at the edge does not switch every step).
+constexpr double kLatticeHysteresis = 0.5;
+
 /// Replace every stand-in that has come within fracture.lattice_radius of the
 /// structure axis (horizontal distance to its nearest possible point) by its
-/// element lattice. Does nothing when the radius is 0.
+/// element lattice, and every intact lattice beyond the radius plus the
+/// hysteresis by its stand-in. Does nothing when the radius is 0.
 void update_lattice_region(const Scene& scene, State& state);
 
 }  // namespace icedem

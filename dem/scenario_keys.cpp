@@ -156,9 +156,9 @@ std::vector<KeySpec> make_keys() {
                       "PGS iterations for the element joints (Bullet's per-constraint override; "
                       "contacts keep solver.iterations); 0: solver.iterations"));
   k.push_back(real("fracture.lattice_radius", "m", 0.0, 0.0, 1.0e4,
-                   "a breakable floe is one rigid body until some part of it comes within this "
-                   "horizontal distance of the structure axis, then its element lattice for the "
-                   "rest of the run; 0: lattices from the start"));
+                   "a breakable floe is its element lattice while some part of it is within this "
+                   "horizontal distance of the structure axis, else one rigid body (an intact "
+                   "lattice turns back 0.5 m beyond it; a broken one stays); 0: lattices always"));
   k.push_back(real("fracture.load_filter_time", "s", 0.0, 0.0, 100.0,
                    "time constant of a first-order low-pass on each joint's loads before the "
                    "failure check (damps one-step PGS spikes); 0: the raw per-step loads"));

@@ -100,7 +100,7 @@ struct FractureSettings {
   double characteristic_length;  // m, l_c = (D / (rho_w g))^(1/4) of the ice ("auto")
   int joint_iterations;          // PGS iterations of the joints; 0: solver.iterations
   double load_filter_time;       // s, low-pass time constant of joint loads; 0: raw
-  double lattice_radius;         // m, breakable floes are rigid until this near the structure; 0: never
+  double lattice_radius;         // m, breakable floes are lattices only this near the structure; 0: always
 };
 
 enum class IslandMode { kContact, kBullet };

@@ -452,6 +452,43 @@ bool World::output_awake(const FloeBody& floe) const {
   return floe.body->isActive();
 }
 
+bool World::make_dormant(DormantLattice& lattice) {
+  if (!lattice.replaced || lattice.broken) return false;
+  for (int i = 0; i < lattice.elements; ++i)
+    if (floes_[lattice.first_element + i].frozen) return false;
+  // the floe's motion: centre of mass and mean velocities of its (equal) elements,
+  // orientation from the first element through its offset
+  btVector3 centre(0, 0, 0), v(0, 0, 0), omega(0, 0, 0);
+  bool awake = false;
+  for (int i = 0; i < lattice.elements; ++i) {
+    const btRigidBody& e = *floes_[lattice.first_element + i].body;
+    centre += e.getCenterOfMassPosition();
+    v += e.getLinearVelocity();
+    omega += e.getAngularVelocity();
+    awake = awake || e.isActive();
+  }
+  const double n = lattice.elements;
+  btTransform T = floes_[lattice.first_element].body->getCenterOfMassTransform() * lattice.offsets[0].inverse();
+  T.setOrigin(centre / n);
+
+  for (int j = 0; j < lattice.joints; ++j) dynamics_->removeConstraint(joints_[lattice.first_joint + j].constraint.get());
+  for (int i = 0; i < lattice.elements; ++i) {
+    btRigidBody& e = *floes_[lattice.first_element + i].body;
+    dynamics_->removeRigidBody(&e);
+    e.forceActivationState(DISABLE_SIMULATION);
+  }
+  btRigidBody& w = *floes_[lattice.stand_in].body;
+  w.setCenterOfMassTransform(T);
+  w.getMotionState()->setWorldTransform(T);
+  w.setLinearVelocity(v / n);
+  w.setAngularVelocity(omega / n);
+  dynamics_->addRigidBody(&w);
+  w.forceActivationState(!scene_.activation.sleeping ? DISABLE_DEACTIVATION : awake ? ACTIVE_TAG : ISLAND_SLEEPING);
+  w.setDeactivationTime(0);
+  lattice.replaced = false;
+  return true;
+}
+
 Eigen::Isometry3d World::output_pose(const FloeBody& floe) const {
   if (floe.lattice >= 0 && !floe.stand_in) {
     const DormantLattice& d = lattices_[floe.lattice];
@@ -465,6 +502,8 @@ Eigen::Isometry3d World::output_pose(const FloeBody& floe) const {
 
 void World::break_joint(IceJoint& joint) {
   if (!joint.constraint) return;
+  const int lattice = floes_[joint.body_a].lattice;
+  if (lattice >= 0) lattices_[lattice].broken = true;
   dynamics_->removeConstraint(joint.constraint.get());
   joint.constraint.reset();
   update_fragments(joint.floe);

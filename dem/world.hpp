@@ -57,10 +57,11 @@ struct FloeBody {
   int lattice = -1;        // index into World::lattices() for a floe with a lattice region, else -1
 };
 
-/// A breakable floe simulated as one rigid body (its stand-in) until it comes
-/// within fracture.lattice_radius of the structure; then its elements and
-/// joints replace the stand-in for the rest of the run. Until then the elements
-/// and joints exist but are not in the Bullet world.
+/// A breakable floe simulated as one rigid body (its stand-in) while it is
+/// farther than fracture.lattice_radius from the structure; nearer, its
+/// elements and joints replace the stand-in. An intact lattice that has left
+/// the region becomes the stand-in again; a broken one stays a lattice. A
+/// dormant lattice's elements and joints exist but are not in the Bullet world.
 struct DormantLattice {
   int stand_in;                       // index into World::floes()
   int first_element, elements;        // World::floes()[first_element, first_element + elements)
@@ -68,6 +69,7 @@ struct DormantLattice {
   std::vector<btTransform> offsets;   // element poses in the stand-in's body frame
   double radius;                      // m, farthest outline vertex from the floe's centroid
   bool replaced = false;              // the lattice is in the world, the stand-in is not
+  bool broken = false;                // a joint has broken: it stays a lattice
 };
 
 /// A fixed joint between two elements of a breakable floe (seed paper, Fig. 5).
@@ -146,6 +148,12 @@ class World {
   /// takes the rigid-body motion of the stand-in at its place, the joints are
   /// added intact, and the stand-in leaves the world.
   void wake_lattice(DormantLattice& lattice);
+
+  /// The reverse, for a lattice with every joint intact and no frozen element:
+  /// the stand-in returns at the elements' centre of mass with their mean motion,
+  /// and the elements and joints leave the world. Returns false (and does
+  /// nothing) if the lattice is broken or frozen.
+  bool make_dormant(DormantLattice& lattice);
 
   /// Pose of an output body (a rigid floe or an element): an element of a
   /// dormant lattice follows its stand-in.

@@ -307,3 +307,54 @@ TEST(LatticeRegion, TheLatticeTakesOverTheStandInsMotionWhenTheStructureComesNea
     EXPECT_EQ(state.breaks_by_mode[static_cast<int>(FailureMode::kBending)], 0);
   }
 }
+
+TEST(LatticeRegion, AnIntactLatticeThatLeavesTheRegionIsOneBodyAgainABrokenOneStays) {
+  // the structure axis at x = 11.5 (its waterline edge at 10.89 m), the floe at x = 10 (edge at
+  // 10.3 m): the floe's nearest point is 1.08 m away, inside a 1.2 m region. The structure then
+  // moves off at 0.5 m/s: past 1.2 + 0.5 m after about 1.3 s
+  const Scene scene = bench({"fracture.lattice_radius=1.2", "structure.start_x=11.5", "structure.speed=0.5"});
+  State state = initial_state(scene, {strip(0.6, 0.6)});
+  World& world = *state.world;
+  DormantLattice& d = world.lattices()[0];
+  update_lattice_region(scene, state);
+  ASSERT_TRUE(d.replaced);
+  // the lattice drifts and turns slowly as one piece
+  const btVector3 v(-0.05, 0, 0.02), w(0, 0.1, 0);
+  btVector3 centre(0, 0, 0);
+  for (int i = 0; i < d.elements; ++i) centre += world.floes()[d.first_element + i].body->getCenterOfMassPosition();
+  centre /= d.elements;
+  for (int i = 0; i < d.elements; ++i) {
+    btRigidBody& e = *world.floes()[d.first_element + i].body;
+    e.setLinearVelocity(v + w.cross(e.getCenterOfMassPosition() - centre));
+    e.setAngularVelocity(w);
+  }
+  std::vector<Eigen::Vector3d> before(d.elements);
+  for (int i = 0; i < 150 && d.replaced; ++i) {
+    for (int k = 0; k < d.elements; ++k) before[k] = body_pose(*world.floes()[d.first_element + k].body).translation();
+    step(scene, state);
+  }
+  ASSERT_FALSE(d.replaced);
+  const btRigidBody& whole = *world.floes()[d.stand_in].body;
+  EXPECT_TRUE(whole.isInWorld());
+  EXPECT_EQ(world.dynamics().getNumConstraints(), 0);
+  // the stand-in took over where the elements were: each element's output pose is within
+  // one step's motion (under 2 mm at these speeds) of its place before that step
+  for (int k = 0; k < d.elements; ++k) {
+    EXPECT_FALSE(world.floes()[d.first_element + k].body->isInWorld());
+    EXPECT_LT((world.output_pose(world.floes()[d.first_element + k]).translation() - before[k]).norm(), 0.002);
+  }
+  // with the elements' mean motion (water drag has slowed it, but not reversed it)
+  EXPECT_LT(whole.getLinearVelocity().x(), 0.0);
+  EXPECT_GT(whole.getAngularVelocity().y(), 0.0);
+
+  // a broken lattice stays a lattice
+  Scene near = scene;
+  State s2 = initial_state(near, {strip(0.6, 0.6)});
+  DormantLattice& d2 = s2.world->lattices()[0];
+  update_lattice_region(near, s2);
+  ASSERT_TRUE(d2.replaced);
+  s2.world->break_joint(s2.world->joints()[0]);
+  EXPECT_TRUE(d2.broken);
+  EXPECT_FALSE(s2.world->make_dormant(d2));
+  EXPECT_TRUE(d2.replaced);
+}
