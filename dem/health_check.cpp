@@ -18,14 +18,20 @@ namespace {
 
 }  // namespace
 
-void check_health(const Scene& scene, const State& state) {
+double check_health(const Scene& scene, const State& state) {
+  double max_angular_speed = 0;
   for (const FloeBody& floe : state.world->floes()) {
     const btRigidBody* body = floe.body;
     if (!body->isActive()) continue;  // a sleeping body does not move
-    const std::string who = fmt::format("floe {}", floe.floe_id);
+    // an element of a breakable floe is named by its body index too (HDF5 /bodies order
+    // differs only by the stand-ins of a lattice region)
+    const std::string who = floe.fragment >= 0 ? fmt::format("floe {} (element body {})", floe.floe_id,
+                                                              body->getUserIndex2())
+                                               : fmt::format("floe {}", floe.floe_id);
     const btVector3& x = body->getCenterOfMassPosition();
     const btScalar v = body->getLinearVelocity().length();
     const btScalar w = body->getAngularVelocity().length();
+    max_angular_speed = std::max(max_angular_speed, static_cast<double>(w));
     if (!std::isfinite(x.length())) blow_up(state, who, "|position|", x.length(), "m (not finite)");
     if (x.length() > kBlowUpDistance)
       blow_up(state, who, "|position|", x.length(), fmt::format("m, beyond {} m", kBlowUpDistance));
@@ -38,6 +44,7 @@ void check_health(const Scene& scene, const State& state) {
   }
   if (!state.load.force.allFinite() || !state.load.moment.allFinite())
     blow_up(state, "structure", "ice load |F|", state.load.force.norm(), "N (not finite)");
+  return max_angular_speed;
 }
 
 }  // namespace icedem

@@ -9,7 +9,8 @@ namespace icedem {
 
 /// Throws NumericalError if an awake floe's position or velocity is not finite,
 /// its speed exceeds kBlowUpSpeed or it is farther than kBlowUpDistance from the
-/// origin, or if the structure load is not finite.
-void check_health(const Scene& scene, const State& state);
+/// origin, or if the structure load is not finite. Returns the largest angular
+/// speed of an awake floe or element (rad/s), a diagnostic recorded every step.
+double check_health(const Scene& scene, const State& state);
 
 }  // namespace icedem

@@ -211,7 +211,8 @@ struct Recorder::Impl {
   std::size_t appended_rows = 0;
 
   // per-step series
-  Series time, force, moment, surge, cone_contacts, structure_position, awake_bodies, contact_points;
+  Series time, force, moment, surge, cone_contacts, structure_position, awake_bodies, contact_points,
+      max_angular_speed;
   // snapshots
   Series snap_time, snap_position, snap_orientation, snap_awake;
   // fracture events
@@ -241,7 +242,7 @@ struct Recorder::Impl {
     const std::size_t n = load_buffer.size();
     if (n == 0) return;
     // gather the buffered samples column by column
-    std::vector<double> t(n), f(3 * n), m(3 * n), sx(n), p(3 * n);
+    std::vector<double> t(n), f(3 * n), m(3 * n), sx(n), p(3 * n), w(n);
     std::vector<int> contacts(n), awake(n), points(n);
     for (std::size_t i = 0; i < n; ++i) {
       const LoadSample& s = load_buffer[i];
@@ -256,6 +257,7 @@ struct Recorder::Impl {
       contacts[i] = s.cone_contacts;
       awake[i] = s.awake_bodies;
       points[i] = s.contact_points;
+      w[i] = s.max_angular_speed;
     }
     const auto& dbl = H5::PredType::NATIVE_DOUBLE;
     const auto& integer = H5::PredType::NATIVE_INT;
@@ -267,6 +269,7 @@ struct Recorder::Impl {
     structure_position.write(p.data(), n, dbl);
     awake_bodies.write(awake.data(), n, integer);
     contact_points.write(points.data(), n, integer);
+    max_angular_speed.write(w.data(), n, dbl);
     load_buffer.clear();
   }
 
@@ -370,6 +373,9 @@ struct Recorder::Impl {
                                  "bodies being solved (not sleeping)");
     contact_points = create_series(diagnostics, "contact_points", i4, {}, kSeriesChunkRows, "1",
                                    "contact points in the whole world (solver load)");
+    max_angular_speed = create_series(diagnostics, "max_angular_speed", f8, {}, kSeriesChunkRows, "rad/s",
+                                      "fastest-turning awake floe or element (a growing rocking of "
+                                      "elements shows here before a blow-up)");
 
     // body outlines: a flat vertex list indexed by offsets (CSR), since outlines differ in size
     bodies = outlines.size();
@@ -422,7 +428,7 @@ struct Recorder::Impl {
   // every object must be closed for the file to close: HDF5 keeps it open while any is
   void close() {
     for (Series* s : {&time, &force, &moment, &surge, &cone_contacts, &structure_position,
-                      &awake_bodies, &contact_points, &snap_time, &snap_position, &snap_orientation, &snap_awake,
+                      &awake_bodies, &contact_points, &max_angular_speed, &snap_time, &snap_position, &snap_orientation, &snap_awake,
                       &events})
       s->dataset.reset();
     meta.reset();

@@ -14,6 +14,7 @@
 //   /structure/position        [n x 3]      f8  m     structure reference point, tank frame
 //   /diagnostics/awake_bodies  [n]          i4  1     bodies being solved (not sleeping)
 //   /diagnostics/contact_points [n]         i4  1     contact points in the whole world
+//   /diagnostics/max_angular_speed [n]      f8  rad/s fastest-turning awake floe or element
 //   /bodies/floe_id            [nb]         i4  1     floe of body i (body order = snapshot order)
 //   /bodies/thickness          [nb]         f8  m
 //   /bodies/vertex_offset      [nb+1]       i8  1     body i's outline: vertices[off[i]:off[i+1]]
@@ -93,6 +94,7 @@ struct LoadSample {
   int cone_contacts;                   // contact points on the structure
   int awake_bodies;                    // bodies being solved
   int contact_points = 0;              // contact points in the whole world (solver load)
+  double max_angular_speed = 0;        // rad/s, fastest-turning awake floe or element
 };
 
 /// One joint break.

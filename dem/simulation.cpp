@@ -176,7 +176,8 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       // record
       const LoadReading& load = state.load;
       recorder.append(LoadSample{state.time, load.force, load.moment, state.structure_position,
-                                 load.contacts, state.awake_floes, state.contact_points});
+                                 load.contacts, state.awake_floes, state.contact_points,
+                                 state.max_angular_speed});
       history.time.push_back(state.time);
       history.surge.push_back(-load.force.x());  // resisting towing, positive
       history.heave.push_back(load.force.y());

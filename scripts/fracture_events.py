@@ -5,7 +5,9 @@ happened relative to the structure (distance ahead of its axis and sideways).
     fracture_events.py RUN.h5 [--json]
 
 Prints one line (or a JSON object): breaks, by mode, breaks within 1 m of the
-structure axis, median and max distance from the axis at the time of the break.
+structure axis, median and max distance from the axis at the time of the break,
+and the steps in which some element turned faster than 15 rad/s (a rocking
+element; /diagnostics/max_angular_speed) with the fastest turn of the run.
 """
 import json
 import sys
@@ -14,12 +16,20 @@ import h5py
 import numpy as np
 
 
+# rad/s: a 0.15 m element turning this fast moves its edge at over 1 m/s, 15 times
+# the tow speed; floes in the channel turn at a few rad/s at most
+ROCKING_RAD_S = 15.0
+
+
 def summarise(path):
     with h5py.File(path, "r") as f:
         events = f["/fracture/events"][:]
         t = f["/load/time"][:]
         pos = f["/structure/position"][:]
+        w = f["/diagnostics/max_angular_speed"][:] if "/diagnostics/max_angular_speed" in f else np.zeros(0)
     out = {"breaks": int(len(events))}
+    out["rocking_steps"] = int(np.sum(w > ROCKING_RAD_S))
+    out["max_angular_speed"] = float(np.max(w)) if len(w) else float("nan")
     names = {0: "compression", 1: "shear", 2: "bending", 3: "tension", 4: "in_plane_bending"}
     for code, name in names.items():
         out[name] = int(np.sum(events["mode"] == code)) if len(events) else 0

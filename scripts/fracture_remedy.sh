@@ -27,27 +27,37 @@ scenario="$ICEDEM_ROOT/scenarios/paper/large_floes_breakable_015.toml"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
-# name | --set options. CFM per joint-iteration count from `icedem calibrate` on
+# name | --set options. CFM per (ERP, joint iterations) from `icedem calibrate` on
 # scenarios/validation/plate_deflection_27_015.toml (2.7 m plate, 60 MPa).
-# The full lattice everywhere (fracture.lattice_radius = 0) so that every joint is solved.
+# Lattices everywhere (fracture.lattice_radius = 0) except in the last variant.
+common="fracture.lattice_radius=0 fracture.load_filter_time=0"
 variants=(
-  "10 it, paper CFM 1e-10 (no calibration: 12 MPa)|solver.iterations=10 fracture.joint_iterations=0 fracture.cfm=1e-10 fracture.load_filter_time=0"
-  "30 it, paper CFM 1e-10 (no calibration: 30 MPa)|solver.iterations=30 fracture.joint_iterations=0 fracture.cfm=1e-10 fracture.load_filter_time=0"
-  "10 it, joints 100 it, CFM 0.0059|solver.iterations=10 fracture.joint_iterations=100 fracture.cfm=0.0059 fracture.load_filter_time=0"
-  "10 it, joints 100 it, CFM 0.0059, filter 0.1 s|solver.iterations=10 fracture.joint_iterations=100 fracture.cfm=0.0059 fracture.load_filter_time=0.1"
-  "30 it, joints 100 it, CFM 0.0059|solver.iterations=30 fracture.joint_iterations=100 fracture.cfm=0.0059 fracture.load_filter_time=0"
-  "10 it, joints 200 it, CFM 0.0074|solver.iterations=10 fracture.joint_iterations=200 fracture.cfm=0.0074 fracture.load_filter_time=0"
+  "10 it, ERP 0.8, paper CFM 1e-10 (12 MPa)|solver.iterations=10 fracture.joint_iterations=0 fracture.erp=0.8 fracture.cfm=1e-10 $common"
+  "30 it, ERP 0.8, paper CFM 1e-10 (30 MPa)|solver.iterations=30 fracture.joint_iterations=0 fracture.erp=0.8 fracture.cfm=1e-10 $common"
+  "joints 100 it, ERP 0.8, CFM 0.0059|solver.iterations=10 fracture.joint_iterations=100 fracture.erp=0.8 fracture.cfm=0.0059 $common"
+  "joints 100 it, ERP 0.8, CFM 0.0059, filter 0.1 s|solver.iterations=10 fracture.joint_iterations=100 fracture.erp=0.8 fracture.cfm=0.0059 fracture.lattice_radius=0 fracture.load_filter_time=0.1"
+  "contacts 30 it, joints 100 it, ERP 0.8, CFM 0.0059|solver.iterations=30 fracture.joint_iterations=100 fracture.erp=0.8 fracture.cfm=0.0059 $common"
+  "joints 200 it, ERP 0.8, CFM 0.0074|solver.iterations=10 fracture.joint_iterations=200 fracture.erp=0.8 fracture.cfm=0.0074 $common"
+  "joints 100 it, ERP 0.5, CFM 0.0022|solver.iterations=10 fracture.joint_iterations=100 fracture.erp=0.5 fracture.cfm=0.0022 $common"
+  "joints 200 it, ERP 0.2, CFM 0.00107 (chosen)|solver.iterations=10 fracture.joint_iterations=200 fracture.erp=0.2 fracture.cfm=0.00107 $common"
+  "chosen, lattice radius 1.5 m (the scenario)|solver.iterations=10 fracture.joint_iterations=200 fracture.erp=0.2 fracture.cfm=0.00107 fracture.lattice_radius=1.5 fracture.load_filter_time=0"
 )
+if [ -n "${ICEDEM_VARIANTS:-}" ]; then  # e.g. ICEDEM_VARIANTS="8 9": run only those (1-based)
+  picked=()
+  for i in $ICEDEM_VARIANTS; do picked+=("${variants[$((i - 1))]}"); done
+  variants=("${picked[@]}")
+fi
 
 report="$ICEDEM_ROOT/bench/results/fracture-remedy-$(date -u +%Y%m%d-%H%M%S).md"
 {
   echo "# Joint-break iteration study, $(date -u +%F), $(nproc) cores"
   echo
   echo "\`scripts/fracture_remedy.sh --duration $duration --seeds \"$seeds\"\`: $scenario,"
-  echo "${duration} s per run, seeds $seeds, full lattice (fracture.lattice_radius = 0)."
+  echo "${duration} s per run, seeds $seeds. Rocking steps: steps in which an element turned faster"
+  echo "than 15 rad/s (/diagnostics/max_angular_speed); a failed run is a numerical blow-up."
   echo
-  echo "| variant | seed | breaks | bending | shear | compression | within 1 m | max surge N | mean surge N | wall s | x real time | wall / first |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| variant | seed | breaks | bending | shear | compression | within 1 m | rocking steps | max rad/s | max surge N | mean surge N | wall s | x real time | wall / first |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 } | tee "$report"
 first_wall=""
 for v in "${variants[@]}"; do
@@ -56,8 +66,12 @@ for v in "${variants[@]}"; do
   for kv in ${v#*|}; do sets+=(--set "$kv"); done
   for seed in $seeds; do
     out="$work/run.h5"
-    "$bin" run "$scenario" -q -o "$out" --summary-json "$work/s.json" --set time.duration="$duration" \
-      --set seed="$seed" --set fracture.lattice_radius=0 "${sets[@]}" >/dev/null
+    rm -f "$work/s.json"
+    if ! "$bin" run "$scenario" -q -o "$out" --summary-json "$work/s.json" --set time.duration="$duration" \
+      --set seed="$seed" "${sets[@]}" >/dev/null 2>"$work/err"; then
+      echo "| $name | $seed | failed: $(tail -2 "$work/err" | head -1) |||||||||||" | tee -a "$report"
+      continue
+    fi
     line=$(/usr/bin/python3 - "$work/s.json" "$out" "$ICEDEM_ROOT/scripts" <<'PY'
 import json, sys
 sys.path.insert(0, sys.argv[3])
@@ -65,6 +79,7 @@ from fracture_events import summarise
 s = json.load(open(sys.argv[1]))
 e = summarise(sys.argv[2])
 print(f"{e['breaks']} | {e['bending']} | {e['shear']} | {e['compression']} | {e['within_1m']} | "
+      f"{e['rocking_steps']} | {e['max_angular_speed']:.0f} | "
       f"{s['max_fx_N']:.1f} | {s['mean_fx_N']:.1f} | {s['wall_time_s']:.0f} | {s['realtime_factor']:.2f}|{s['wall_time_s']}")
 PY
 )

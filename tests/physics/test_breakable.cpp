@@ -148,7 +148,7 @@ namespace {
 Scene small_plate() {
   return load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/plate_deflection_27_015.toml",
                     {"validation.plate_size=1.5", "time.duration=6", "solver.iterations=30",
-                     "fracture.joint_iterations=0"});
+                     "fracture.joint_iterations=0", "fracture.erp=0.8"});
 }
 }  // namespace
 
