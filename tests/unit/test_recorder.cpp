@@ -54,6 +54,7 @@ LoadSample sample(int i) {
   s.structure_position = {2.0 + 0.0014 * i, 0.0, 0.25};
   s.cone_contacts = i % 7;
   s.awake_bodies = 100 + i;
+  s.max_angular_speed = 0.125 * i;
   return s;
 }
 
@@ -123,7 +124,9 @@ void expect_load_rows(const H5::H5File& file, int n) {
   const std::vector<double> p = read_doubles(file, "/structure/position");
   const auto contacts = read<int>(file, "/load/cone_contacts", H5::PredType::NATIVE_INT);
   const auto awake = read<int>(file, "/diagnostics/awake_bodies", H5::PredType::NATIVE_INT);
+  const std::vector<double> w = read_doubles(file, "/diagnostics/max_angular_speed");
   ASSERT_EQ(t.size(), std::size_t(n));
+  ASSERT_EQ(w.size(), std::size_t(n));
   // doubles are stored as IEEE f8: the round trip is bit-exact
   for (int i = 0; i < n; ++i) {
     const LoadSample s = sample(i);
@@ -136,6 +139,7 @@ void expect_load_rows(const H5::H5File& file, int n) {
     ASSERT_EQ(surge[i], -s.force.x()) << "row " << i;  // surge = -force_x
     ASSERT_EQ(contacts[i], s.cone_contacts) << "row " << i;
     ASSERT_EQ(awake[i], s.awake_bodies) << "row " << i;
+    ASSERT_EQ(w[i], s.max_angular_speed) << "row " << i;
   }
 }
 
