@@ -11,7 +11,8 @@ and writes a PNG and a CSV. Usage:
                                    [--iterations 50] [--joint-iterations 0] [--plate 2.7]
 
 --iterations sets solver.iterations, --joint-iterations fracture.joint_iterations
-(0: the joints get solver.iterations too).
+(0: the joints get solver.iterations too). --replot redraws the PNG from the CSV
+of the same settings without running anything.
 """
 import argparse
 import csv
@@ -46,6 +47,7 @@ def main():
     ap.add_argument("--iterations", type=int, default=50)
     ap.add_argument("--joint-iterations", type=int, default=0)
     ap.add_argument("--erp", type=float, default=0.8, help="fracture.erp (the scenarios use 0.2)")
+    ap.add_argument("--replot", action="store_true")
     ap.add_argument("--plate", type=float, default=2.7, help="nominal plate side, m (rounded to whole elements)")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
@@ -54,30 +56,33 @@ def main():
     cfms = [1e-10, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1]
     if args.erp < 0.5:
         cfms = [1e-10, 1e-4, 3e-4, 1e-3, 2e-3, 3e-3, 1e-2, 3e-2]
-    rows = []
-    with tempfile.TemporaryDirectory() as work:
-        for le in sizes:
-            plate = round(args.plate / le) * le
-            for cfm in cfms:
-                v = run(args.icedem, [f"fracture.element_size={le}", f"validation.plate_size={plate:.4f}",
-                                      f"fracture.cfm={cfm}", f"solver.iterations={args.iterations}",
-                                      f"fracture.joint_iterations={args.joint_iterations}",
-                                      f"fracture.erp={args.erp}"], work)
-                rows.append({"element_size_m": le, "plate_m": plate, "cfm": cfm,
-                             "w0_mm_per_N": v["value"], "reference_mm_per_N": v["reference"],
-                             "E_MPa": v["elastic_modulus_MPa"]})
-                print(f"L_e {le:.2f} m, plate {plate:.2f} m, cfm {cfm:g}: w0/P {v['value']:.4f} mm/N, "
-                      f"E {v['elastic_modulus_MPa']:.1f} MPa", flush=True)
-
     tag = f"{args.iterations}it" + (f"_joints{args.joint_iterations}it" if args.joint_iterations else "")
     tag += f"_erp{args.erp:g}" if args.erp != 0.8 else ""
     if abs(args.plate - 2.7) > 1e-9:
         tag += f"_{args.plate:g}m"
     stem = os.path.join(args.out, f"fig6_modulus_vs_cfm_{tag}")
-    with open(stem + ".csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
+    if args.replot:
+        with open(stem + ".csv") as f:
+            rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    else:
+        rows = []
+        with tempfile.TemporaryDirectory() as work:
+            for le in sizes:
+                plate = round(args.plate / le) * le
+                for cfm in cfms:
+                    v = run(args.icedem, [f"fracture.element_size={le}", f"validation.plate_size={plate:.4f}",
+                                          f"fracture.cfm={cfm}", f"solver.iterations={args.iterations}",
+                                          f"fracture.joint_iterations={args.joint_iterations}",
+                                          f"fracture.erp={args.erp}"], work)
+                    rows.append({"element_size_m": le, "plate_m": plate, "cfm": cfm,
+                                 "w0_mm_per_N": v["value"], "reference_mm_per_N": v["reference"],
+                                 "E_MPa": v["elastic_modulus_MPa"]})
+                    print(f"L_e {le:.2f} m, plate {plate:.2f} m, cfm {cfm:g}: w0/P {v['value']:.4f} mm/N, "
+                          f"E {v['elastic_modulus_MPa']:.1f} MPa", flush=True)
+        with open(stem + ".csv", "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+            w.writeheader()
+            w.writerows(rows)
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     for le in sizes:
         pts = [r for r in rows if r["element_size_m"] == le]
@@ -86,7 +91,7 @@ def main():
     ax.set_xlabel("joint CFM (Bullet units, fracture.cfm)")
     ax.set_ylabel("elastic modulus from plate deflection, MPa")
     joints = (f", joints {args.joint_iterations}" if args.joint_iterations else "") + f", ERP {args.erp:g}"
-    ax.set_title(f"Plate-deflection test, ~{args.plate} m plate, {args.iterations} PGS iterations{joints}")
+    ax.set_title(f"Plate deflection, ~{args.plate} m plate, {args.iterations} PGS iterations{joints}", fontsize=10)
     ax.legend()
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
