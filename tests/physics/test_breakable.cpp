@@ -100,6 +100,13 @@ TEST(Breakable, PiecesCollideOnceBrokenApart) {
   EXPECT_NE(world.floes()[0].fragment, world.floes()[1].fragment);
   step(scene, state);
   EXPECT_TRUE(manifold_between());  // the two pieces now touch as separate bodies
+  // breaking removes a joint, not ice: both elements are still simulated, mass unchanged
+  double mass = 0;
+  for (const FloeBody& f : world.floes()) {
+    EXPECT_TRUE(f.body->isInWorld());
+    mass += 1.0 / f.body->getInvMass();
+  }
+  EXPECT_NEAR(mass, 930.0 * 0.3 * 0.15 * 0.033, 1e-12);
 }
 
 TEST(Breakable, PlateDeflectionMatchesHertzWithinFivePercent) {
