@@ -353,7 +353,8 @@ Scene make_scene(const Scenario& sc) {
                   : vcase == "cantilever"     ? ValidationCase::kCantilever
                                               : ValidationCase::kNone,
                   real(sc, "validation.plate_size"), real(sc, "validation.load"), real(sc, "validation.tolerance"),
-                  integer(sc, "validation.beam_elements"), real(sc, "validation.load_rate")};
+                  integer(sc, "validation.beam_elements"), real(sc, "validation.load_rate"),
+                  real(sc, "validation.tip_speed")};
   if (s.validation.kind != ValidationCase::kNone && s.fracture.mode != FractureMode::kOn)
     fail(sc, "fracture.mode", fmt::format("the {} case needs ice elements: set fracture.mode = \"on\"", vcase));
   if (s.validation.kind == ValidationCase::kPlateDeflection) {

@@ -205,6 +205,9 @@ std::vector<KeySpec> make_keys() {
                      "of elements in air loaded at its tip until it breaks (Fig. 7, eq. 6)"));
   k.push_back(integer("validation.beam_elements", 4, 2, 100, "cantilever: elements along the beam, root included"));
   k.push_back(positive("validation.load_rate", "N/s", 0.2, 1.0e4, "cantilever: growth rate of the tip load"));
+  k.push_back(real("validation.tip_speed", "m/s", 0.0, 0.0, 10.0,
+                   "cantilever: > 0 floats the beam and pushes its tip down at this speed (the "
+                   "paper's test, eq. 6 with the fragment's buoyancy); 0: a load ramp in air"));
   k.push_back(positive("validation.plate_size", "m", 2.7, 100.0, "side of the square plate (paper: 2.7 / 5.4 m)"));
   k.push_back(positive("validation.load", "N", 10.0, 1.0e4, "downward point load at the plate centre"));
   k.push_back(positive("validation.tolerance", "-", 0.05, 10.0,

@@ -133,6 +133,7 @@ struct ValidationSettings {
   double tolerance;   // -, relative
   int beam_elements;  // cantilever: elements along the beam
   double load_rate;   // N/s, cantilever tip load growth
+  double tip_speed;   // m/s, floating cantilever pushed down at the tip; 0: load ramp in air
 };
 
 /// Everything one run needs, validated and in SI units.

@@ -47,7 +47,73 @@ double modulus_from_compliance(const Scene& s, double compliance, double factor)
   return 3 * (1 - nu * nu) * factor * factor / (16 * s.water.density * s.water.gravity * h * h * h * compliance * compliance);
 }
 
+// A kinematic body pinned to the beam's tip element by a ball joint, moved down at
+// validation.tip_speed: displacement control, with the push force from the joint's
+// feedback. It has no contact response and collides with nothing.
+struct Validation::Pusher {
+  DynamicsWorld* dynamics;
+  btSphereShape shape{0.01};
+  btDefaultMotionState motion;
+  std::unique_ptr<btRigidBody> body;
+  std::unique_ptr<btPoint2PointConstraint> pin;
+  btJointFeedback feedback;
+  btVector3 start;  // m, tip element centre at t = 0
+
+  Pusher(DynamicsWorld& world, btRigidBody& tip, int iterations) : dynamics(&world) {
+    start = tip.getCenterOfMassPosition();
+    btTransform pose;
+    pose.setIdentity();
+    pose.setOrigin(start);
+    motion.setWorldTransform(pose);
+    body = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0, &motion, &shape));
+    body->setCollisionFlags(body->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT |
+                            btCollisionObject::CF_NO_CONTACT_RESPONSE);
+    body->setActivationState(DISABLE_DEACTIVATION);
+    dynamics->addRigidBody(body.get(), 0, 0);  // no collision group: never a pair
+    pin = std::make_unique<btPoint2PointConstraint>(tip, *body, btVector3(0, 0, 0), btVector3(0, 0, 0));
+    pin->setOverrideNumSolverIterations(iterations);
+    pin->setJointFeedback(&feedback);
+    dynamics->addConstraint(pin.get(), true);
+  }
+  ~Pusher() {
+    dynamics->removeConstraint(pin.get());
+    dynamics->removeRigidBody(body.get());
+  }
+  // the tip's target at time t (Bullet moves a kinematic body to its motion state's pose)
+  void move_to(double depth) {
+    btTransform pose;
+    pose.setIdentity();
+    pose.setOrigin(start - btVector3(0, depth, 0));
+    motion.setWorldTransform(pose);
+  }
+  // N, downward force the pusher puts on the tip in the last step
+  double push() const { return -feedback.m_appliedForceBodyA.y(); }
+};
+
+Validation::~Validation() = default;
+
+namespace {
+// kPa, the bending stress of the beam's root joint from its feedback: 6 M / (L_e T_e^2)
+double root_stress(const Scene& scene, const State& state) {
+  const double Le = scene.fracture.element_size, h = scene.ice.thickness;
+  const JointLoads root = joint_loads(*state.world, state.world->joints().front());
+  return 6 * std::abs(root.bending_out_of_plane) / (Le * h * h) / 1e3;
+}
+}  // namespace
+
 Validation::Validation(const Scene& scene, State& state) : kind_(scene.validation.kind) {
+  if (kind_ == ValidationCase::kCantilever && scene.validation.tip_speed > 0) {
+    // the paper's test: the beam floats at its draft, its root element clamped there
+    std::vector<FloeBody>& bodies = state.world->floes();
+    for (FloeBody& f : bodies) x0_.push_back(f.body->getCenterOfMassPosition().x());
+    element_mass_ = bodies.front().shape->mass;
+    bodies.front().body->setMassProps(0, btVector3(0, 0, 0));
+    bodies.front().body->updateInertiaTensor();
+    for (FloeBody& f : bodies) f.body->activate(true);
+    pusher_ = std::make_unique<Pusher>(state.world->dynamics(), *bodies.back().body, joint_sweeps(scene));
+    pusher_->move_to(scene.validation.tip_speed * scene.time.dt);
+    return;
+  }
   if (kind_ == ValidationCase::kCantilever) {
     // the beam 1 m up in the air, its root element clamped (zero inverse mass)
     std::vector<FloeBody>& bodies = state.world->floes();
@@ -83,6 +149,21 @@ Validation::Validation(const Scene& scene, State& state) : kind_(scene.validatio
 }
 
 void Validation::after_step(const Scene& scene, State& state) {
+  if (kind_ == ValidationCase::kCantilever && pusher_) {
+    const double push = pusher_->push();
+    if (!broken_ && !state.fracture_events.empty()) {
+      broken_ = true;
+      first_break_ = state.fracture_events.front();
+      load_at_break_ = push;  // the peak: the force of the step in which it broke
+    }
+    history_time_.push_back(state.time);
+    history_load_.push_back(push);
+    history_depth_.push_back(pusher_->start.y() - state.world->floes().back().body->getCenterOfMassPosition().y());
+    if (!broken_) last_root_stress_ = root_stress(scene, state);
+    history_root_stress_.push_back(broken_ ? 0.0 : last_root_stress_);
+    pusher_->move_to(scene.validation.tip_speed * (state.time + scene.time.dt));
+    return;
+  }
   if (kind_ == ValidationCase::kCantilever) {
     if (!broken_ && !state.fracture_events.empty()) {
       broken_ = true;
@@ -91,11 +172,10 @@ void Validation::after_step(const Scene& scene, State& state) {
     }
     if (!broken_) {
       // the root joint's bending stress as the model sees it, beside the applied load
-      const double Le = scene.fracture.element_size, h = scene.ice.thickness;
-      const JointLoads root = joint_loads(*state.world, state.world->joints().front());
+      last_root_stress_ = root_stress(scene, state);
       history_time_.push_back(state.time);
       history_load_.push_back(tip_load_);
-      history_root_stress_.push_back(6 * std::abs(root.bending_out_of_plane) / (Le * h * h) / 1e3);
+      history_root_stress_.push_back(last_root_stress_);
     }
     // the tip load of the next step grows linearly (quasi-static: slow against the beam's response)
     tip_load_ = broken_ ? 0.0 : scene.validation.load_rate * state.time;
@@ -140,8 +220,29 @@ nlohmann::json Validation::cantilever_result(const Scene& scene) const {
   const double Le = scene.fracture.element_size, h = scene.ice.thickness;
   const double x_joint = x0_[k] + Le / 2;
   const double lever = x0_.back() - x_joint;  // m, joint to the load point (the tip element's centre)
-  // eq. 6, sigma' = 6 (P_c - P_b) l / (L_e T_e^2); the weight is balanced, so P_b = 0
-  const double sigma = 6 * load_at_break_ * lever / (Le * h * h);
+  // eq. 6, sigma' = 6 (P_c - P_b) l / (L_e T_e^2). In air the weight is balanced, so
+  // P_b = 0; floating, P_b is the fragment's buoyancy: the mean push 0.5-1.5 s after the
+  // break, when the fragment hangs on the pusher alone (the paper's Fig. 7a)
+  double buoyancy = 0;
+  if (pusher_) {
+    int n = 0;
+    for (std::size_t i = 0; i < history_time_.size(); ++i) {
+      const double after = history_time_[i] - first_break_.time;
+      if (after >= 0.5 && after <= 1.5) {
+        buoyancy += history_load_[i];
+        ++n;
+      }
+    }
+    if (n == 0) {
+      j["value"] = nullptr;
+      j["rel_error"] = nullptr;
+      j["passed"] = false;
+      j["note"] = "the run ended less than 0.5 s after the break: no fragment buoyancy P_b";
+      return j;
+    }
+    buoyancy /= n;
+  }
+  const double sigma = 6 * (load_at_break_ - buoyancy) * lever / (Le * h * h);
   const double rel_error = (sigma - scene.ice.bending_strength) / scene.ice.bending_strength;
   j["value"] = sigma / 1e3;
   j["rel_error"] = rel_error;
@@ -151,8 +252,12 @@ nlohmann::json Validation::cantilever_result(const Scene& scene) const {
   j["load_at_failure_N"] = load_at_break_;
   j["time_of_failure_s"] = first_break_.time;
   j["lever_m"] = lever;
+  j["fragment_buoyancy_N"] = buoyancy;
+  j["root_joint_stress_at_failure_kPa"] = last_root_stress_;
+  j["floating"] = static_cast<bool>(pusher_);
   j["history"] = {{"time_s", history_time_}, {"tip_load_N", history_load_},
                   {"root_joint_stress_kPa", history_root_stress_}};
+  if (pusher_) j["history"]["tip_depth_m"] = history_depth_;
   j["passed"] = std::abs(rel_error) <= scene.validation.tolerance && k == 0 &&
                 first_break_.mode == static_cast<int>(FailureMode::kBending);
   return j;
