@@ -1,0 +1,1 @@
+"""Parameter sweeps of icedem runs (issue 5): description, expansion, execution."""

@@ -1,0 +1,101 @@
+"""Running a sweep's runs: one shell command per run, executed by GNU parallel
+on this machine or by a Slurm job array, and the status of every run read back
+from its directory (so a rerun skips what is finished, in any order).
+
+A run's directory holds run.h5, summary.json, log.txt (stdout and stderr) and
+exit_code, written last. A run is finished when exit_code is 0 and
+summary.json exists; failed when exit_code is not 0 (its error is the last
+"error" line of log.txt); pending otherwise (never started, or killed).
+"""
+import os
+import shlex
+import subprocess
+from dataclasses import dataclass
+
+from .spec import ROOT
+
+DEFAULT_ICEDEM = os.path.join(ROOT, "build", "dem", "icedem")
+
+
+@dataclass
+class Status:
+    run: object   # spec.Run
+    state: str    # "done", "failed" or "pending"
+    error: str = ""
+
+
+def command(run, out_dir, icedem):
+    """The shell command that runs `run` in its directory and records its exit code."""
+    d = os.path.join(out_dir, run.path)
+    args = [icedem, "run", run.scenario_file, "-q", "-o", "run.h5", "--summary-json", "summary.json"]
+    for s in run.sets:
+        args += ["--set", s]
+    return (f"mkdir -p {shlex.quote(d)} && cd {shlex.quote(d)} && rm -f exit_code summary.json && "
+            f"{shlex.join(args)} > log.txt 2>&1; code=$?; echo $code > exit_code; exit $code")
+
+
+def status(run, out_dir):
+    d = os.path.join(out_dir, run.path)
+    try:
+        with open(os.path.join(d, "exit_code")) as f:
+            code = f.read().strip()
+    except FileNotFoundError:
+        return Status(run, "pending")
+    if code == "0" and os.path.isfile(os.path.join(d, "summary.json")):
+        return Status(run, "done")
+    error = f"exit code {code}"
+    try:
+        with open(os.path.join(d, "log.txt"), errors="replace") as f:
+            lines = [l.strip() for l in f if l.strip()]
+        errors = [l for l in lines if "error" in l.lower()]
+        if errors or lines:
+            error += ": " + (errors[-1] if errors else lines[-1])
+    except FileNotFoundError:
+        pass
+    return Status(run, "failed", error)
+
+
+def write_jobs(runs, out_dir, icedem, path):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        for r in runs:
+            f.write(command(r, out_dir, icedem) + "\n")
+
+
+def run_parallel(runs, out_dir, icedem, jobs=0):
+    """Run every unfinished run with GNU parallel (jobs 0: one per core). Returns the statuses."""
+    todo = [r for r in runs if status(r, out_dir).state != "done"]
+    if todo:
+        jobs_file = os.path.join(out_dir, "jobs.txt")
+        write_jobs(todo, out_dir, icedem, jobs_file)
+        cmd = ["parallel", "--will-cite", "--jobs", str(jobs) if jobs > 0 else "100%",
+               "--joblog", os.path.join(out_dir, "joblog.txt"), "--arg-file", jobs_file]
+        # parallel's exit code counts failed jobs; the statuses below report them one by one
+        subprocess.run(cmd, check=False)
+    return [status(r, out_dir) for r in runs]
+
+
+def slurm_script(runs, out_dir, icedem, name):
+    """Write a Slurm job-array script for the unfinished runs; returns (script path, task count)."""
+    todo = [r for r in runs if status(r, out_dir).state != "done"]
+    sdir = os.path.join(out_dir, "slurm")
+    jobs_file = os.path.join(sdir, "jobs.txt")
+    write_jobs(todo, out_dir, icedem, jobs_file)
+    script = os.path.join(sdir, "array.sh")
+    with open(script, "w") as f:
+        f.write(f"""#!/bin/bash
+# icedem sweep "{name}": {len(todo)} runs, one per array task (scripts/sweep slurm)
+#SBATCH --job-name=icedem-{name}
+#SBATCH --array=0-{max(len(todo) - 1, 0)}
+#SBATCH --cpus-per-task=1
+#SBATCH --output={sdir}/task-%a.out
+line=$(sed -n "$((SLURM_ARRAY_TASK_ID + 1))p" {shlex.quote(jobs_file)})
+exec bash -c "$line"
+""")
+    return script, len(todo)
+
+
+def submit_slurm(script, wait=True):
+    """sbatch the array script; with wait, block until every task ends (exit code: the highest)."""
+    cmd = ["sbatch"] + (["--wait"] if wait else []) + [script]
+    return subprocess.run(cmd, check=False).returncode

@@ -1,0 +1,147 @@
+"""A sweep description (TOML) and its expansion into runs.
+
+    name = "friction"
+    seeds = [1, 2, 3]              # or a count: seeds = 10 means 1..10
+    set = ["time.duration=100"]    # overrides for every run (optional)
+
+    [[scenario]]
+    name = "small_rigid"
+    file = "scenarios/paper/small_floes.toml"   # relative to the repository root
+    set = ["output.snapshot_interval=0"]       # overrides for this scenario (optional)
+
+    [grid]                          # every combination of these values
+    "friction.ice_ice" = [0.3, 0.5, 0.7]
+    "friction.ice_structure" = [0.1, 0.2, 0.3]
+
+Runs = scenarios x grid combinations x seeds. A configuration is a scenario
+with one grid combination; its seeds are its runs. Each run has a stable,
+readable directory: <scenario>/<key=value,...>/seed<N>, so a rerun finds
+what an earlier one finished whatever the order of the list.
+"""
+import itertools
+import os
+import tomllib
+from dataclasses import dataclass, field
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+class SweepError(Exception):
+    """A bad sweep description: the message names the file and the key."""
+
+
+@dataclass(frozen=True)
+class Run:
+    scenario: str              # scenario name in the sweep
+    scenario_file: str         # absolute path
+    grid: tuple                # ((key, value), ...) of this configuration, in the sweep's key order
+    seed: int
+    sets: tuple = field(default=())  # every --set, grid and seed included, in order
+
+    @property
+    def config(self):
+        """Directory of the configuration (all seeds)."""
+        label = ",".join(f"{k}={fmt(v)}" for k, v in self.grid) or "base"
+        return os.path.join(self.scenario, label)
+
+    @property
+    def path(self):
+        """Directory of this run, relative to the sweep's output directory."""
+        return os.path.join(self.config, f"seed{self.seed}")
+
+
+def fmt(value):
+    """A grid value as TOML would write it in --set (and in directory names)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return value
+    return repr(value)
+
+
+def _fail(path, key, expected, got=None):
+    what = f"{path}: key '{key}': expected {expected}"
+    if got is not None:
+        what += f", got {got!r}"
+    raise SweepError(what)
+
+
+def _string_list(path, key, value):
+    if not isinstance(value, list) or not all(isinstance(s, str) and "=" in s for s in value):
+        _fail(path, key, 'a list of "key=value" strings', value)
+    return list(value)
+
+
+def load(path):
+    """Parse a sweep file; returns (name, runs). Raises SweepError naming file and key."""
+    try:
+        with open(path, "rb") as f:
+            doc = tomllib.load(f)
+    except FileNotFoundError:
+        raise SweepError(f"{path}: no such sweep file")
+    except tomllib.TOMLDecodeError as e:
+        raise SweepError(f"{path}: {e}")
+    known = {"name", "seeds", "set", "scenario", "grid"}
+    for key in doc:
+        if key not in known:
+            _fail(path, key, "one of " + ", ".join(sorted(known)) + " (unknown key)")
+    name = doc.get("name", os.path.splitext(os.path.basename(path))[0])
+    if not isinstance(name, str) or not name:
+        _fail(path, "name", "a non-empty string", name)
+
+    seeds = doc.get("seeds", [1])
+    if isinstance(seeds, int) and not isinstance(seeds, bool):
+        if seeds < 1:
+            _fail(path, "seeds", "a count of at least 1 or a list of seeds", seeds)
+        seeds = list(range(1, seeds + 1))
+    if not isinstance(seeds, list) or not seeds or not all(
+            isinstance(s, int) and not isinstance(s, bool) and s >= 0 for s in seeds):
+        _fail(path, "seeds", "a count or a non-empty list of non-negative integers", seeds)
+    if len(set(seeds)) != len(seeds):
+        _fail(path, "seeds", "distinct seeds", seeds)
+    common = _string_list(path, "set", doc.get("set", []))
+
+    scenarios = doc.get("scenario")
+    if not isinstance(scenarios, list) or not scenarios:
+        _fail(path, "scenario", "at least one [[scenario]] table with name and file")
+    names = set()
+    parsed = []
+    for i, sc in enumerate(scenarios):
+        where = f"scenario[{i}]"
+        if not isinstance(sc, dict):
+            _fail(path, where, "a table")
+        for key in sc:
+            if key not in ("name", "file", "set"):
+                _fail(path, f"{where}.{key}", "one of name, file, set (unknown key)")
+        sc_name = sc.get("name")
+        if not isinstance(sc_name, str) or not sc_name or "/" in sc_name:
+            _fail(path, f"{where}.name", "a non-empty name without '/'", sc_name)
+        if sc_name in names:
+            _fail(path, f"{where}.name", "a name not used by another scenario", sc_name)
+        names.add(sc_name)
+        file = sc.get("file")
+        if not isinstance(file, str):
+            _fail(path, f"{where}.file", "a scenario file path", file)
+        full = file if os.path.isabs(file) else os.path.join(ROOT, file)
+        if not os.path.isfile(full):
+            _fail(path, f"{where}.file", "an existing scenario file", file)
+        parsed.append((sc_name, full, _string_list(path, f"{where}.set", sc.get("set", []))))
+
+    grid = doc.get("grid", {})
+    if not isinstance(grid, dict):
+        _fail(path, "grid", "a table of key = [values]")
+    for key, values in grid.items():
+        if not isinstance(values, list) or not values:
+            _fail(path, f"grid.{key}", "a non-empty list of values", values)
+        if len(set(map(fmt, values))) != len(values):
+            _fail(path, f"grid.{key}", "distinct values", values)
+
+    keys = list(grid)
+    runs = []
+    for sc_name, full, sc_sets in parsed:
+        for combo in itertools.product(*(grid[k] for k in keys)):
+            g = tuple(zip(keys, combo))
+            for seed in seeds:
+                sets = tuple(common + sc_sets + [f"{k}={fmt(v)}" for k, v in g] + [f"seed={seed}"])
+                runs.append(Run(sc_name, full, g, seed, sets))
+    return name, runs

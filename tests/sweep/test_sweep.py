@@ -1,0 +1,160 @@
+"""Tests of scripts/sweep: expansion, bad files, resume, failure reporting, and a
+tiny sweep end to end through GNU parallel with the real icedem.
+
+    /usr/bin/python3 tests/sweep/test_sweep.py ICEDEM WORKDIR
+"""
+import os
+import subprocess
+import sys
+import tempfile
+import textwrap
+import unittest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from sweeplib import execute, spec  # noqa: E402
+
+ICEDEM = None
+WORK = None
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+def write(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def sweep_file(text):
+    f = tempfile.NamedTemporaryFile("w", suffix=".toml", dir=WORK, delete=False)
+    f.write(textwrap.dedent(text))
+    f.close()
+    return f.name
+
+
+TINY = """
+    name = "tiny"
+    seeds = [1, 2]
+    set = ["time.duration=10", "output.snapshot_interval=0"]
+    [[scenario]]
+    name = "short"
+    file = "scenarios/examples/short_tow.toml"
+    [grid]
+    "friction.ice_structure" = [0.1, 0.3]
+"""
+
+
+class Expansion(unittest.TestCase):
+    def test_scenarios_times_grid_times_seeds(self):
+        name, runs = spec.load(sweep_file("""
+            seeds = 3
+            [[scenario]]
+            name = "a"
+            file = "scenarios/examples/short_tow.toml"
+            [[scenario]]
+            name = "b"
+            file = "scenarios/examples/short_tow.toml"
+            set = ["ice.thickness=0.04"]
+            [grid]
+            "friction.ice_ice" = [0.3, 0.5, 0.7]
+            "friction.ice_structure" = [0.1, 0.2]
+        """))
+        self.assertEqual(len(runs), 2 * 3 * 2 * 3)
+        self.assertEqual(len({r.config for r in runs}), 12)
+        self.assertEqual(len({r.path for r in runs}), len(runs))  # every run its own directory
+        self.assertEqual(sorted({r.seed for r in runs}), [1, 2, 3])  # a count means 1..N
+        b = [r for r in runs if r.scenario == "b"][0]
+        # overrides in order: common, scenario, grid, seed (later ones win in icedem)
+        self.assertEqual(b.sets, ("ice.thickness=0.04", "friction.ice_ice=0.3", "friction.ice_structure=0.1", "seed=1"))
+        self.assertEqual(b.path, os.path.join("b", "friction.ice_ice=0.3,friction.ice_structure=0.1", "seed1"))
+
+    def test_no_grid_is_one_configuration(self):
+        _, runs = spec.load(sweep_file("""
+            seeds = [4, 9]
+            [[scenario]]
+            name = "a"
+            file = "scenarios/examples/short_tow.toml"
+        """))
+        self.assertEqual([r.path for r in runs], [os.path.join("a", "base", "seed4"), os.path.join("a", "base", "seed9")])
+
+    def test_bad_files_name_the_key(self):
+        cases = {
+            'seeds = 0\n[[scenario]]\nname="a"\nfile="scenarios/examples/short_tow.toml"': "'seeds'",
+            'seeds = [1, 1]\n[[scenario]]\nname="a"\nfile="scenarios/examples/short_tow.toml"': "distinct",
+            '[[scenario]]\nname="a"\nfile="nope.toml"': "scenario[0].file",
+            '[[scenario]]\nname="a"\nfile="scenarios/examples/short_tow.toml"\n[grid]\n"x" = []': "grid.x",
+            'sed = [1]\n[[scenario]]\nname="a"\nfile="scenarios/examples/short_tow.toml"': "'sed'",
+            'seeds = [1]': "'scenario'",
+            '[[scenario]]\nname="a"\nfile="scenarios/examples/short_tow.toml"\nset=["noequals"]': "scenario[0].set",
+        }
+        for text, needle in cases.items():
+            path = sweep_file(text)
+            with self.assertRaises(spec.SweepError, msg=text) as cm:
+                spec.load(path)
+            self.assertIn(path, str(cm.exception))
+            self.assertIn(needle, str(cm.exception))
+
+
+class Execution(unittest.TestCase):
+    def test_tiny_sweep_end_to_end_resume_and_failures(self):
+        path = sweep_file(TINY)
+        out = tempfile.mkdtemp(dir=WORK)
+        _, runs = spec.load(path)
+        statuses = execute.run_parallel(runs, out, ICEDEM)
+        self.assertEqual([s.state for s in statuses], ["done"] * 4, [s.error for s in statuses])
+        for r in runs:
+            self.assertTrue(os.path.isfile(os.path.join(out, r.path, "run.h5")))
+        # resume: nothing is rerun (summaries untouched)
+        stamps = {r.path: os.stat(os.path.join(out, r.path, "summary.json")).st_mtime_ns for r in runs}
+        execute.run_parallel(runs, out, ICEDEM)
+        for r in runs:
+            self.assertEqual(os.stat(os.path.join(out, r.path, "summary.json")).st_mtime_ns, stamps[r.path])
+        # a killed run (no exit code) is pending and is run again
+        os.remove(os.path.join(out, runs[0].path, "exit_code"))
+        self.assertEqual(execute.status(runs[0], out).state, "pending")
+        execute.run_parallel(runs, out, ICEDEM)
+        self.assertEqual(execute.status(runs[0], out).state, "done")
+
+        # a failing configuration is reported with icedem's error, the others still run
+        bad = sweep_file(TINY.replace("[0.1, 0.3]", "[0.1, 7.0]"))
+        out2 = tempfile.mkdtemp(dir=WORK)
+        _, runs2 = spec.load(bad)
+        statuses = execute.run_parallel(runs2, out2, ICEDEM)
+        failed = [s for s in statuses if s.state == "failed"]
+        self.assertEqual(len(failed), 2)
+        self.assertEqual(sum(s.state == "done" for s in statuses), 2)
+        for s in failed:
+            self.assertIn("friction.ice_structure", s.error)
+            self.assertIn("exit code 2", s.error)
+        # the command line reports them and exits 1
+        p = subprocess.run([os.path.join(ROOT, "scripts", "sweep"), "status", bad, "--out", out2],
+                           capture_output=True, text=True)
+        self.assertEqual(p.returncode, 1)
+        self.assertIn("2 failed", p.stdout)
+        self.assertEqual(p.stdout.count("FAILED"), 2)
+
+    def test_slurm_script_lists_only_unfinished_runs(self):
+        path = sweep_file(TINY)
+        out = tempfile.mkdtemp(dir=WORK)
+        _, runs = spec.load(path)
+        # pretend the first run finished
+        d = os.path.join(out, runs[0].path)
+        os.makedirs(d)
+        write(os.path.join(d, "summary.json"), "{}")
+        write(os.path.join(d, "exit_code"), "0\n")
+        script, n = execute.slurm_script(runs, out, ICEDEM, "tiny")
+        self.assertEqual(n, 3)
+        text = read(script)
+        self.assertIn("#SBATCH --array=0-2", text)
+        jobs = read(os.path.join(out, "slurm", "jobs.txt")).splitlines()
+        self.assertEqual(len(jobs), 3)
+        self.assertFalse(any(runs[0].path in j for j in jobs))
+
+
+if __name__ == "__main__":
+    ICEDEM, WORK = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    os.makedirs(WORK, exist_ok=True)
+    unittest.main(argv=sys.argv[:1], verbosity=2)
