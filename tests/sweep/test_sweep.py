@@ -38,7 +38,7 @@ def sweep_file(text):
 TINY = """
     name = "tiny"
     seeds = [1, 2]
-    set = ["time.duration=10", "output.snapshot_interval=0"]
+    set = ["time.duration=20", "output.snapshot_interval=0"]
     [[scenario]]
     name = "short"
     file = "scenarios/examples/short_tow.toml"
@@ -98,6 +98,42 @@ class Expansion(unittest.TestCase):
             self.assertIn(needle, str(cm.exception))
 
 
+class Aggregation(unittest.TestCase):
+    def test_confidence_interval_of_three_values(self):
+        from sweeplib import aggregate as agg
+        m, half = agg.mean_ci([1.0, 2.0, 3.0])
+        # t(0.975, 2) = 4.302653, sample std 1: 4.302653 / sqrt(3)
+        self.assertAlmostEqual(m, 2.0, places=12)
+        self.assertAlmostEqual(half, 4.302653 / 3 ** 0.5, places=5)
+        m1, half1 = agg.mean_ci([5.0])
+        self.assertEqual(m1, 5.0)
+        self.assertTrue(half1 != half1)  # nan: no interval from one seed
+
+    def test_spectral_peak_of_a_noisy_sine(self):
+        from sweeplib import aggregate as agg
+        import numpy as np
+        rng = np.random.default_rng(1)
+        t = np.arange(0, 300, 0.02)
+        x = 10 + 5 * np.sin(2 * np.pi * 0.233 * t) + rng.normal(0, 2, t.size)
+        # Welch with 60 s segments resolves 1/60 Hz: the peak within one bin of 0.233 Hz
+        self.assertLess(abs(agg.spectral_peak(t, x) - 0.233), 1 / 60)
+
+    def test_rows_average_over_seeds_and_sum_breaks(self):
+        from sweeplib import aggregate as agg
+        recs = [{"mean_fx_N": m, "max_fx_N": 10 * m, "peak_interval_s": 4.0, "spectral_peak_hz": 0.25,
+                 "breaks_by_mode": {"bending": b}, "realtime_factor": 5.0} for m, b in ((1.0, 2), (3.0, 1))]
+        rows = agg.aggregate({"s/a=1": ("s", (("a", 1),), recs)})
+        self.assertEqual(len(rows), 1)
+        r = rows[0]
+        self.assertEqual(r["seeds"], 2)
+        self.assertEqual(r["a"], 1)
+        self.assertAlmostEqual(r["mean_fx_N"], 2.0)
+        self.assertAlmostEqual(r["max_fx_N"], 20.0)
+        self.assertAlmostEqual(r["spectral_peak_period_s"], 4.0)
+        self.assertEqual(r["breaks_bending"], 3)
+        self.assertEqual(r["breaks_shear"], 0)
+
+
 class Execution(unittest.TestCase):
     def test_tiny_sweep_end_to_end_resume_and_failures(self):
         path = sweep_file(TINY)
@@ -117,6 +153,20 @@ class Execution(unittest.TestCase):
         self.assertEqual(execute.status(runs[0], out).state, "pending")
         execute.run_parallel(runs, out, ICEDEM)
         self.assertEqual(execute.status(runs[0], out).state, "done")
+
+        # aggregation: one row per configuration, both seeds in it, in CSV and HDF5
+        p = subprocess.run([os.path.join(ROOT, "scripts", "sweep"), "aggregate", path, "--out", out],
+                           capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        import csv
+        import h5py
+        with open(os.path.join(out, "results.csv")) as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual(len(rows), 2)
+        self.assertEqual({r["seeds"] for r in rows}, {"2"})
+        self.assertTrue(all(float(r["mean_fx_N"]) > 0 for r in rows))
+        with h5py.File(os.path.join(out, "results.h5"), "r") as h:
+            self.assertEqual(h["configurations"].shape, (2,))
 
         # a failing configuration is reported with icedem's error, the others still run
         bad = sweep_file(TINY.replace("[0.1, 0.3]", "[0.1, 7.0]"))
