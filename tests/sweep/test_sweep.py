@@ -167,6 +167,12 @@ class Execution(unittest.TestCase):
         self.assertTrue(all(float(r["mean_fx_N"]) > 0 for r in rows))
         with h5py.File(os.path.join(out, "results.h5"), "r") as h:
             self.assertEqual(h["configurations"].shape, (2,))
+        # figures from the aggregated table and the runs (no snapshots here: no top view)
+        p = subprocess.run([os.path.join(ROOT, "scripts", "sweep_figures.py"), path, "--out", out],
+                           capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        for kind in ("loads_vs_fis", "history"):
+            self.assertTrue(os.path.getsize(os.path.join(out, "figures", f"{kind}_short.png")) > 1000)
 
         # a failing configuration is reported with icedem's error, the others still run
         bad = sweep_file(TINY.replace("[0.1, 0.3]", "[0.1, 7.0]"))

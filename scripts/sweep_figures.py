@@ -1,0 +1,167 @@
+#!/usr/bin/python3
+"""Figures of a friction sweep laid out like the seed paper's (run
+`scripts/sweep aggregate` first):
+
+  loads_vs_fis_<scenario>.png   average and max surge load against f_is, one line per
+                                f_ii, 95 % confidence bars over seeds (Figs. 8, 12, 16)
+  history_<scenario>.png        surge load time histories at f_ii = 0.5 for each f_is,
+                                first seed (Figs. 9, 13, 17)
+  topview_<scenario>.png        floes and cone seen from above at three times, f_ii = 0.5,
+                                f_is = 0.2, first seed (Figs. 4, 11, 14, 18)
+
+    scripts/sweep_figures.py SWEEP.toml [--out DIR] [--figures DIR]
+"""
+import argparse
+import csv
+import os
+import sys
+
+import h5py
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweeplib import execute, spec  # noqa: E402
+
+FII, FIS = "friction.ice_ice", "friction.ice_structure"
+
+
+def load_rows(out):
+    with open(os.path.join(out, "results.csv")) as f:
+        return list(csv.DictReader(f))
+
+
+def loads_vs_fis(rows, scenario, path):
+    rows = [r for r in rows if r["scenario"] == scenario and r.get(FIS)]
+    if not rows:
+        return False
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    # one line per f_ii; a sweep that does not vary it gives one line (the scenario's f_ii)
+    fiis = sorted({float(r[FII]) for r in rows}) if rows[0].get(FII) else [None]
+    for fii in fiis:
+        pts = sorted(((float(r[FIS]), r) for r in rows if fii is None or float(r[FII]) == fii), key=lambda p: p[0])
+        x = [p[0] for p in pts]
+        for ax, key in zip(axes, ("mean_fx_N", "max_fx_N")):
+            y = [float(p[1][key]) for p in pts]
+            e = [float(p[1][key + "_ci95"]) for p in pts]
+            e = [0 if np.isnan(v) else v for v in e]
+            ax.errorbar(x, y, yerr=e, marker="o", capsize=3,
+                        label=f"f_ii = {fii:g}" if fii is not None else "scenario's f_ii")
+    for ax, title in zip(axes, ("average surge load", "maximum surge load")):
+        ax.set_xlabel("ice-structure friction f_is")
+        ax.set_ylabel("N")
+        ax.set_title(f"{scenario}: {title}")
+        ax.grid(alpha=0.3)
+        ax.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return True
+
+
+def history(runs, out, scenario, path):
+    sel = [r for r in runs if r.scenario == scenario and dict(r.grid).get(FII, 0.5) == 0.5
+           and r.seed == min(x.seed for x in runs) and execute.status(r, out).state == "done"]
+    if not sel:
+        return False
+    fig, axes = plt.subplots(len(sel), 1, figsize=(10, 2.2 * len(sel)), sharex=True, squeeze=False)
+    for ax, r in zip(axes[:, 0], sorted(sel, key=lambda r: dict(r.grid).get(FIS, 0))):
+        with h5py.File(os.path.join(out, r.path, "run.h5"), "r") as h:
+            ax.plot(h["/load/time"][:], h["/load/surge"][:], lw=0.6)
+        ax.set_ylabel("surge N")
+        ax.set_title(f"{scenario}, f_ii = 0.5, f_is = {dict(r.grid).get(FIS)}", fontsize=9)
+        ax.grid(alpha=0.3)
+    axes[-1, 0].set_xlabel("time, s")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return True
+
+
+def yaw_of(q):
+    """Rotation about the vertical (y) axis of quaternions w, x, y, z (floes stay nearly flat)."""
+    w, x, y, z = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
+    return np.arctan2(2 * (w * y + x * z), 1 - 2 * (y * y + x * x))
+
+
+def waterline_radius(h5):
+    """The structure's radius at the waterline, from the resolved scenario in /meta."""
+    import tomllib
+    profile = tomllib.loads(h5["/meta"].attrs["scenario"])["structure"]["profile"]
+    ys = [p[0] for p in profile]
+    rs = [p[1] for p in profile]
+    return float(np.interp(0.0, ys, rs))
+
+
+def topview(runs, out, scenario, path):
+    sel = [r for r in runs if r.scenario == scenario and dict(r.grid).get(FII, 0.5) == 0.5
+           and dict(r.grid).get(FIS, 0.2) == 0.2 and execute.status(r, out).state == "done"]
+    if not sel:
+        return False
+    r = min(sel, key=lambda r: r.seed)
+    with h5py.File(os.path.join(out, r.path, "run.h5"), "r") as h:
+        if "/snapshots/time" not in h or len(h["/snapshots/time"]) == 0:
+            return False
+        st = h["/snapshots/time"][:]
+        off = h["/bodies/vertex_offset"][:]
+        verts = h["/bodies/vertices"][:]
+        t = h["/load/time"][:]
+        spos = h["/structure/position"][:]
+        radius = waterline_radius(h)
+        picks = [int(round(i)) for i in np.linspace(0, len(st) - 1, 3)]
+        fig, axes = plt.subplots(3, 1, figsize=(11, 8), sharex=True)
+        for ax, k in zip(axes, picks):
+            pos = h["/snapshots/position"][k]
+            yaw = yaw_of(h["/snapshots/orientation"][k])
+            polys = []
+            for b in range(len(off) - 1):
+                v = verts[off[b]:off[b + 1]]
+                c, s = np.cos(yaw[b]), np.sin(yaw[b])
+                # body frame (x, z) -> tank (x, z): rotation by yaw about +y
+                x = pos[b, 0] + c * v[:, 0] + s * v[:, 1]
+                z = pos[b, 2] - s * v[:, 0] + c * v[:, 1]
+                polys.append(np.column_stack([x, z]))
+            ax.add_collection(PolyCollection(polys, facecolor="0.85", edgecolor="0.3", lw=0.3))
+            i = min(np.searchsorted(t, st[k]), len(t) - 1)
+            ax.add_patch(plt.Circle((spos[i, 0], spos[i, 2]), radius, color="tab:red", alpha=0.6))
+            ax.set_aspect("equal")
+            ax.set_ylabel("z, m")
+            ax.set_title(f"{scenario}, t = {st[k]:.0f} s", fontsize=9)
+            ax.autoscale_view()
+        axes[-1].set_xlabel("x, m (towing direction)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return True
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("sweep")
+    ap.add_argument("--out", help="the sweep's output directory (default sweeps/<name>)")
+    ap.add_argument("--figures", help="where the PNGs go (default OUT/figures)")
+    args = ap.parse_args()
+    name, runs = spec.load(args.sweep)
+    out = os.path.abspath(args.out or os.path.join(spec.ROOT, "sweeps", name))
+    figs = args.figures or os.path.join(out, "figures")
+    os.makedirs(figs, exist_ok=True)
+    rows = load_rows(out)
+    written = []
+    for scenario in dict.fromkeys(r.scenario for r in runs):
+        for kind, fn in (("loads_vs_fis", lambda p: loads_vs_fis(rows, scenario, p)),
+                         ("history", lambda p: history(runs, out, scenario, p)),
+                         ("topview", lambda p: topview(runs, out, scenario, p))):
+            p = os.path.join(figs, f"{kind}_{scenario}.png")
+            if fn(p):
+                written.append(p)
+    for p in written:
+        print("wrote", p)
+    return 0 if written else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
