@@ -134,6 +134,47 @@ class Aggregation(unittest.TestCase):
         self.assertEqual(r["breaks_shear"], 0)
 
 
+class XdmfExport(unittest.TestCase):
+    def test_every_data_item_exists_with_its_dimensions_and_cells_are_consistent(self):
+        import xml.etree.ElementTree as ET
+        import h5py
+        import numpy as np
+        out = tempfile.mkdtemp(dir=WORK)
+        run = os.path.join(out, "run.h5")
+        subprocess.run([ICEDEM, "run", os.path.join(ROOT, "scenarios/examples/short_tow.toml"), "-q", "-o", run,
+                        "--set", "time.duration=10", "--set", "output.snapshot_interval=5"], check=True,
+                       stdout=subprocess.DEVNULL)
+        subprocess.run([os.path.join(ROOT, "scripts", "xdmf_snapshots.py"), run], check=True, stdout=subprocess.DEVNULL)
+        root = ET.parse(os.path.join(out, "run.xdmf")).getroot()
+        grids = root.findall(".//Grid[@GridType='Uniform']")
+        with h5py.File(run, "r") as h:
+            self.assertEqual(len(grids), len(h["/snapshots/time"]))
+            nb = len(h["/bodies/floe_id"])
+            pos0 = h["/snapshots/position"][0]
+            thick = h["/bodies/thickness"][:]
+        with h5py.File(os.path.join(out, "run_views.h5"), "r") as v:
+            for item in root.iter("DataItem"):
+                file, dataset = item.text.split(":")
+                self.assertEqual(file, "run_views.h5")
+                dims = tuple(int(d) for d in item.get("Dimensions").split())
+                self.assertEqual(v[dataset].shape, dims, dataset)
+            # Mixed topology: (3, n, ids...) per polygon, two per body, ids inside the points
+            topo = v["topology"][:]
+            npts = v["points/0"].shape[0]
+            i, cells = 0, 0
+            while i < len(topo):
+                self.assertEqual(topo[i], 3)
+                n = topo[i + 1]
+                self.assertTrue(np.all(topo[i + 2:i + 2 + n] < npts))
+                i += 2 + n
+                cells += 1
+            self.assertEqual(cells, 2 * nb)
+            # body 0's top face is centred h/2 above its centre of mass at t = 0 (floes start level)
+            n0 = topo[1]
+            top0 = v["points/0"][topo[2:2 + n0]]
+            self.assertLess(np.linalg.norm(top0.mean(axis=0) - (pos0[0] + [0, thick[0] / 2, 0])), 1e-9)
+
+
 class Execution(unittest.TestCase):
     def test_tiny_sweep_end_to_end_resume_and_failures(self):
         path = sweep_file(TINY)
