@@ -8,6 +8,9 @@
                                 first seed (Figs. 9, 13, 17)
   topview_<scenario>.png        floes and cone seen from above at three times, f_ii = 0.5,
                                 f_is = 0.2, first seed (Figs. 4, 11, 14, 18)
+  frontview_<scenario>.png      front view of floe trajectories: heave against sway relative
+                                to the cone axis, of every body within 1 m ahead or behind
+                                the axis, from the snapshots of the same run (Fig. 10)
 
     scripts/sweep_figures.py SWEEP.toml [--out DIR] [--figures DIR]
 """
@@ -139,6 +142,39 @@ def topview(runs, out, scenario, path):
     return True
 
 
+def front_view(runs, out, scenario, path):
+    sel = [r for r in runs if r.scenario == scenario and dict(r.grid).get(FII, 0.5) == 0.5
+           and dict(r.grid).get(FIS, 0.2) == 0.2 and execute.status(r, out).state == "done"]
+    if not sel:
+        return False
+    r = min(sel, key=lambda r: r.seed)
+    with h5py.File(os.path.join(out, r.path, "run.h5"), "r") as h:
+        if "/snapshots/time" not in h or len(h["/snapshots/time"]) < 2:
+            return False
+        st = h["/snapshots/time"][:]
+        pos = h["/snapshots/position"][:]
+        t = h["/load/time"][:]
+        spos = h["/structure/position"][:]
+        radius = waterline_radius(h)
+    axis = spos[np.clip(np.searchsorted(t, st), 0, len(t) - 1)]
+    dx = pos[:, :, 0] - axis[:, None, 0]
+    near = np.abs(dx) < 1.0
+    fig, ax = plt.subplots(figsize=(8, 4))
+    for b in np.where(near.any(axis=0))[0]:
+        k = near[:, b]
+        ax.plot(pos[k, b, 2] - axis[k, 2], pos[k, b, 1], "-", lw=0.5, alpha=0.6)
+    ax.axvspan(-radius, radius, color="tab:red", alpha=0.15, label="cone at the waterline")
+    ax.set_xlabel("sway z relative to the cone axis, m")
+    ax.set_ylabel("heave y, m")
+    ax.set_title(f"{scenario}: floe trajectories within 1 m of the cone axis (f_ii 0.5, f_is 0.2)", fontsize=9)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return True
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("sweep")
@@ -154,7 +190,8 @@ def main():
     for scenario in dict.fromkeys(r.scenario for r in runs):
         for kind, fn in (("loads_vs_fis", lambda p: loads_vs_fis(rows, scenario, p)),
                          ("history", lambda p: history(runs, out, scenario, p)),
-                         ("topview", lambda p: topview(runs, out, scenario, p))):
+                         ("topview", lambda p: topview(runs, out, scenario, p)),
+                         ("frontview", lambda p: front_view(runs, out, scenario, p))):
             p = os.path.join(figs, f"{kind}_{scenario}.png")
             if fn(p):
                 written.append(p)
