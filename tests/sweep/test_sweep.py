@@ -233,6 +233,35 @@ class Execution(unittest.TestCase):
         self.assertIn("2 failed", p.stdout)
         self.assertEqual(p.stdout.count("FAILED"), 2)
 
+    def test_report_sets_the_sweep_beside_the_paper(self):
+        # the paper's scenario names on the short channel: small and large rigid floes
+        path = sweep_file("""
+            name = "mini_paper"
+            seeds = [1]
+            set = ["time.duration=25", "output.snapshot_interval=0"]
+            [[scenario]]
+            name = "small_rigid"
+            file = "scenarios/examples/short_tow.toml"
+            [[scenario]]
+            name = "large_rigid"
+            file = "scenarios/examples/short_tow.toml"
+            set = ["ice.floe_size=0.6", "ice.concentration=0.7"]
+            [grid]
+            "friction.ice_ice" = [0.5]
+            "friction.ice_structure" = [0.1, 0.2]
+        """)
+        out = tempfile.mkdtemp(dir=WORK)
+        for cmd in (["sweep", "run", path, "--icedem", ICEDEM], ["sweep", "aggregate", path],
+                    ["sweep_figures.py", path], ["report", path]):
+            p = subprocess.run([os.path.join(ROOT, "scripts", cmd[0])] + cmd[1:] + ["--out", out],
+                               capture_output=True, text=True)
+            self.assertEqual(p.returncode, 0, cmd[0] + ": " + p.stdout + p.stderr)
+        text = read(os.path.join(out, "report.md"))
+        ratio = [l for l in text.splitlines() if l.startswith("| ratio larger/smaller floes, mean load")][0]
+        self.assertNotIn("n/a |", ratio.split("|")[3])  # a number, not n/a
+        self.assertIn("![loads_vs_fis_small_rigid.png](figures/loads_vs_fis_small_rigid.png)", text)
+        self.assertEqual(text.count("| small_rigid/"), 2)
+
     def test_slurm_script_lists_only_unfinished_runs(self):
         path = sweep_file(TINY)
         out = tempfile.mkdtemp(dir=WORK)
