@@ -5,6 +5,7 @@
 # the ratio of each run time to the default in the same session.
 #
 #   scripts/bench.sh [--duration SECONDS] [--quick]
+#   scripts/bench.sh --micro      the Google Benchmark microbenchmarks of the hot paths
 #
 # --quick runs 100 s of simulated time (CI uses it). Results also go to
 # bench/results/bench-<date>.md. Set ICEDEM_BENCH_FLOAT=0 to skip the float build.
@@ -15,11 +16,15 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --duration) duration="$2"; shift 2 ;;
     --quick) duration=100; shift ;;
+    --micro) micro=1; shift ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
 ensure_packages
 build_project
+if [ "${micro:-0}" = 1 ]; then
+  exec "$ICEDEM_BUILD/bench/micro/icedem_micro"
+fi
 scenario="$ICEDEM_ROOT/scenarios/paper/small_floes.toml"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
