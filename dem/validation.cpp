@@ -79,7 +79,8 @@ struct Validation::Pusher {
     dynamics->removeConstraint(pin.get());
     dynamics->removeRigidBody(body.get());
   }
-  // the tip's target at time t (Bullet moves a kinematic body to its motion state's pose)
+  // put the pusher `depth` m below the tip's start for the next step (Bullet moves a
+  // kinematic body to its motion state's pose over the step)
   void move_to(double depth) {
     btTransform pose;
     pose.setIdentity();
