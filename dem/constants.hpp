@@ -18,6 +18,12 @@ constexpr double kBlowUpSpeed = 50.0;
 /// is 35 m long and 1.8 m deep.
 constexpr double kBlowUpDistance = 1000.0;
 
+/// Angular speed above which a floe or element is rocking unstably, rad/s: a
+/// 0.15 m element turning this fast moves its edge at over 1 m/s, 15 times the
+/// tow speed, while stable runs stay below 2 rad/s (README, "Breakable ice").
+/// A warning, not a blow-up: the run goes on.
+constexpr double kRockingAngularSpeed = 15.0;
+
 constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace icedem

@@ -183,6 +183,10 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       history.heave.push_back(load.force.y());
       history.sway.push_back(load.force.z());
       awake_sum += state.awake_floes;
+      if (state.max_angular_speed > summary.max_angular_speed) {
+        summary.max_angular_speed = state.max_angular_speed;
+        summary.max_angular_speed_time = state.time;
+      }
       for (const FractureEvent& e : state.fracture_events) recorder.append_fracture(e);
       if (snapshot_every && state.step % snapshot_every == 0)
         recorder.append_snapshot(state.time, body_poses(*state.world));

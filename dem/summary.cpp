@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "dem/constants.hpp"
 #include "dem/joint_loads.hpp"
 
 namespace icedem {
@@ -31,6 +32,12 @@ std::string summary_table(const RunSummary& s) {
       out += fmt::format("  inferred elastic modulus {:.1f} MPa (target {:.1f} MPa)\n",
                          v["elastic_modulus_MPa"].get<double>(), v["elastic_modulus_target_MPa"].get<double>());
   }
+  // an element turning this fast is rocking unstably, not moving with the ice (README,
+  // "Breakable ice": at ERP 0.8 elements rock with a growing period-2 oscillation)
+  if (s.max_angular_speed > kRockingAngularSpeed)
+    out += fmt::format("  warning: a floe or element turned at {:.1f} rad/s (t = {:.2f} s): unstable joints? "
+                       "/diagnostics/max_angular_speed has the history; README, \"Breakable ice\"\n",
+                       s.max_angular_speed, s.max_angular_speed_time);
   if (!s.has_statistics) {
     out += fmt::format("  no load statistics: {}\n", s.statistics_note);
     return out;
@@ -79,6 +86,7 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["floes"] = s.floes;
   j["achieved_concentration"] = s.achieved_concentration;
   j["mean_awake"] = s.mean_awake;
+  j["max_angular_speed_rad_s"] = s.max_angular_speed;
   if (!s.validation.is_null()) j["validation"] = s.validation;
   const StageTimes& t = s.stage_times;
   j["stage_time_s"] = {{"structure", t.structure}, {"water", t.water},         {"bullet", t.bullet},
