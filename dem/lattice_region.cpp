@@ -12,14 +12,7 @@ void update_lattice_region(const Scene& scene, State& state) {
   for (DormantLattice& lattice : world.lattices()) {
     if (lattice.broken) continue;  // pieces stay pieces
     // the floe's nearest point is at least |centre - axis| - radius from the axis
-    const btRigidBody& whole = *world.floes()[lattice.stand_in].body;
-    btVector3 c = whole.getCenterOfMassPosition();
-    if (lattice.replaced) {
-      c.setZero();
-      for (int i = 0; i < lattice.elements; ++i)
-        c += world.floes()[lattice.first_element + i].body->getCenterOfMassPosition();
-      c /= lattice.elements;
-    }
+    const btVector3 c = world.lattice_centre(lattice);
     const double gap = std::hypot(c.x() - axis.x(), c.z() - axis.z()) - lattice.radius;
     if (!lattice.replaced && gap < radius) {
       world.wake_lattice(lattice);

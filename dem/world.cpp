@@ -458,18 +458,17 @@ bool World::make_dormant(DormantLattice& lattice) {
     if (floes_[lattice.first_element + i].frozen) return false;
   // the floe's motion: centre of mass and mean velocities of its (equal) elements,
   // orientation from the first element through its offset
-  btVector3 centre(0, 0, 0), v(0, 0, 0), omega(0, 0, 0);
+  btVector3 v(0, 0, 0), omega(0, 0, 0);
   bool awake = false;
   for (int i = 0; i < lattice.elements; ++i) {
     const btRigidBody& e = *floes_[lattice.first_element + i].body;
-    centre += e.getCenterOfMassPosition();
     v += e.getLinearVelocity();
     omega += e.getAngularVelocity();
     awake = awake || e.isActive();
   }
   const double n = lattice.elements;
   btTransform T = floes_[lattice.first_element].body->getCenterOfMassTransform() * lattice.offsets[0].inverse();
-  T.setOrigin(centre / n);
+  T.setOrigin(lattice_centre(lattice));
 
   for (int j = 0; j < lattice.joints; ++j) dynamics_->removeConstraint(joints_[lattice.first_joint + j].constraint.get());
   for (int i = 0; i < lattice.elements; ++i) {
@@ -487,6 +486,13 @@ bool World::make_dormant(DormantLattice& lattice) {
   w.setDeactivationTime(0);
   lattice.replaced = false;
   return true;
+}
+
+btVector3 World::lattice_centre(const DormantLattice& lattice) const {
+  if (!lattice.replaced) return floes_[lattice.stand_in].body->getCenterOfMassPosition();
+  btVector3 centre(0, 0, 0);
+  for (int i = 0; i < lattice.elements; ++i) centre += floes_[lattice.first_element + i].body->getCenterOfMassPosition();
+  return centre / lattice.elements;
 }
 
 Eigen::Isometry3d World::output_pose(const FloeBody& floe) const {

@@ -155,6 +155,10 @@ class World {
   /// nothing) if the lattice is broken or frozen.
   bool make_dormant(DormantLattice& lattice);
 
+  /// Centre of mass of a breakable floe with a lattice region: its stand-in's while
+  /// dormant, else the mean of its (equal) elements' centres.
+  btVector3 lattice_centre(const DormantLattice& lattice) const;
+
   /// Pose of an output body (a rigid floe or an element): an element of a
   /// dormant lattice follows its stand-in.
   Eigen::Isometry3d output_pose(const FloeBody& floe) const;
