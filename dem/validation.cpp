@@ -149,14 +149,17 @@ Validation::Validation(const Scene& scene, State& state) : kind_(scene.validatio
     state.point_loads.emplace_back(i, Eigen::Vector3d(0, -scene.validation.load / centre_.size(), 0));
 }
 
+void Validation::note_first_break(const State& state, double tip_load) {
+  if (broken_ || state.fracture_events.empty()) return;
+  broken_ = true;
+  first_break_ = state.fracture_events.front();
+  load_at_break_ = tip_load;
+}
+
 void Validation::after_step(const Scene& scene, State& state) {
   if (kind_ == ValidationCase::kCantilever && pusher_) {
     const double push = pusher_->push();
-    if (!broken_ && !state.fracture_events.empty()) {
-      broken_ = true;
-      first_break_ = state.fracture_events.front();
-      load_at_break_ = push;  // the peak: the force of the step in which it broke
-    }
+    note_first_break(state, push);  // the peak: the force of the step in which it broke
     history_time_.push_back(state.time);
     history_load_.push_back(push);
     history_depth_.push_back(pusher_->start.y() - state.world->floes().back().body->getCenterOfMassPosition().y());
@@ -166,11 +169,7 @@ void Validation::after_step(const Scene& scene, State& state) {
     return;
   }
   if (kind_ == ValidationCase::kCantilever) {
-    if (!broken_ && !state.fracture_events.empty()) {
-      broken_ = true;
-      first_break_ = state.fracture_events.front();
-      load_at_break_ = tip_load_;
-    }
+    note_first_break(state, tip_load_);
     if (!broken_) {
       // the root joint's bending stress as the model sees it, beside the applied load
       last_root_stress_ = root_stress(scene, state);

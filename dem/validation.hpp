@@ -67,6 +67,8 @@ class Validation {
  private:
   nlohmann::json plate_result(const Scene& scene) const;
   nlohmann::json cantilever_result(const Scene& scene) const;
+  // cantilever: remember the first break of the step just taken and the tip load then
+  void note_first_break(const State& state, double tip_load);
 
   ValidationCase kind_ = ValidationCase::kNone;
   // plate deflection
