@@ -33,6 +33,20 @@ from sweeplib import execute, spec  # noqa: E402
 FII, FIS = "friction.ice_ice", "friction.ice_structure"
 
 
+def save(fig, path):
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def reference_run(runs, out, scenario):
+    """The finished run of `scenario` at the paper's reference friction (f_ii 0.5, f_is 0.2,
+    or whatever the sweep does not vary) with the lowest seed; None if there is none."""
+    sel = [r for r in runs if r.scenario == scenario and dict(r.grid).get(FII, 0.5) == 0.5
+           and dict(r.grid).get(FIS, 0.2) == 0.2 and execute.status(r, out).state == "done"]
+    return min(sel, key=lambda r: r.seed) if sel else None
+
+
 def load_rows(out):
     with open(os.path.join(out, "results.csv")) as f:
         return list(csv.DictReader(f))
@@ -60,9 +74,7 @@ def loads_vs_fis(rows, scenario, path):
         ax.set_title(f"{scenario}: {title}")
         ax.grid(alpha=0.3)
         ax.legend()
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save(fig, path)
     return True
 
 
@@ -79,9 +91,7 @@ def history(runs, out, scenario, path):
         ax.set_title(f"{scenario}, f_ii = 0.5, f_is = {dict(r.grid).get(FIS)}", fontsize=9)
         ax.grid(alpha=0.3)
     axes[-1, 0].set_xlabel("time, s")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save(fig, path)
     return True
 
 
@@ -101,11 +111,9 @@ def waterline_radius(h5):
 
 
 def topview(runs, out, scenario, path):
-    sel = [r for r in runs if r.scenario == scenario and dict(r.grid).get(FII, 0.5) == 0.5
-           and dict(r.grid).get(FIS, 0.2) == 0.2 and execute.status(r, out).state == "done"]
-    if not sel:
+    r = reference_run(runs, out, scenario)
+    if r is None:
         return False
-    r = min(sel, key=lambda r: r.seed)
     with h5py.File(os.path.join(out, r.path, "run.h5"), "r") as h:
         if "/snapshots/time" not in h or len(h["/snapshots/time"]) == 0:
             return False
@@ -136,18 +144,14 @@ def topview(runs, out, scenario, path):
             ax.set_title(f"{scenario}, t = {st[k]:.0f} s", fontsize=9)
             ax.autoscale_view()
         axes[-1].set_xlabel("x, m (towing direction)")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save(fig, path)
     return True
 
 
 def front_view(runs, out, scenario, path):
-    sel = [r for r in runs if r.scenario == scenario and dict(r.grid).get(FII, 0.5) == 0.5
-           and dict(r.grid).get(FIS, 0.2) == 0.2 and execute.status(r, out).state == "done"]
-    if not sel:
+    r = reference_run(runs, out, scenario)
+    if r is None:
         return False
-    r = min(sel, key=lambda r: r.seed)
     with h5py.File(os.path.join(out, r.path, "run.h5"), "r") as h:
         if "/snapshots/time" not in h or len(h["/snapshots/time"]) < 2:
             return False
@@ -169,9 +173,7 @@ def front_view(runs, out, scenario, path):
     ax.set_title(f"{scenario}: floe trajectories within 1 m of the cone axis (f_ii 0.5, f_is 0.2)", fontsize=9)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save(fig, path)
     return True
 
 
