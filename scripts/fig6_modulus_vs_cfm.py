@@ -96,7 +96,7 @@ def main():
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
     fig.savefig(stem + ".png", dpi=110)
-    print(f"wrote {stem}.png and {stem}.csv")
+    print(f"wrote {stem}.png" + ("" if args.replot else f" and {stem}.csv"))
 
 
 if __name__ == "__main__":
