@@ -16,7 +16,8 @@
 Runs = scenarios x grid combinations x seeds. A configuration is a scenario
 with one grid combination; its seeds are its runs. Each run has a stable,
 readable directory: <scenario>/<key=value,...>/seed<N>, so a rerun finds
-what an earlier one finished whatever the order of the list.
+what an earlier one finished whatever the order of the list. The list is
+seed-major (all configurations for the first seed, then the second, ...).
 """
 import itertools
 import os
@@ -136,12 +137,15 @@ def load(path):
         if len(set(map(fmt, values))) != len(values):
             _fail(path, f"grid.{key}", "distinct values", values)
 
+    # Seed-major order: every configuration's first seed runs before any
+    # configuration's second, so a sweep stopped part-way (a long grid is many
+    # CPU hours) leaves a balanced ensemble that aggregates over fewer seeds.
     keys = list(grid)
+    combos = [tuple(zip(keys, c)) for c in itertools.product(*(grid[k] for k in keys))]
     runs = []
-    for sc_name, full, sc_sets in parsed:
-        for combo in itertools.product(*(grid[k] for k in keys)):
-            g = tuple(zip(keys, combo))
-            for seed in seeds:
+    for seed in seeds:
+        for sc_name, full, sc_sets in parsed:
+            for g in combos:
                 sets = tuple(common + sc_sets + [f"{k}={fmt(v)}" for k, v in g] + [f"seed={seed}"])
                 runs.append(Run(sc_name, full, g, seed, sets))
     return name, runs

@@ -70,6 +70,10 @@ class Expansion(unittest.TestCase):
         # overrides in order: common, scenario, grid, seed (later ones win in icedem)
         self.assertEqual(b.sets, ("ice.thickness=0.04", "friction.ice_ice=0.3", "friction.ice_structure=0.1", "seed=1"))
         self.assertEqual(b.path, os.path.join("b", "friction.ice_ice=0.3,friction.ice_structure=0.1", "seed1"))
+        # seed-major: the first 12 runs are every configuration once, at seed 1,
+        # so a sweep stopped part-way still covers the whole grid
+        self.assertEqual(len({r.config for r in runs[:12]}), 12)
+        self.assertEqual({r.seed for r in runs[:12]}, {1})
 
     def test_no_grid_is_one_configuration(self):
         _, runs = spec.load(sweep_file("""
