@@ -30,6 +30,19 @@ double equal_area_vertex_radius(double r, int segments) {
   return r * std::sqrt(2.0 * kPi / (n * std::sin(2.0 * kPi / n)));
 }
 
+double hull_depth(const std::vector<ProfileStation>& profile, int segments, const Eigen::Vector3d& p) {
+  if (profile.empty() || p.y() < profile.front().y || p.y() > profile.back().y) return -1.0;
+  const double vertex_r = equal_area_vertex_radius(profile_radius(profile, p.y()), segments);
+  // the nearest side of a regular n-gon is the one of the point's sector (between
+  // two vertices); its outward normal points to the sector's middle and the side
+  // lies at the inscribed radius R cos(pi/n)
+  const double sector = 2.0 * kPi / segments;
+  double a = std::atan2(p.z(), p.x());
+  if (a < 0) a += 2.0 * kPi;
+  const double middle = (std::floor(a / sector) + 0.5) * sector;
+  return vertex_r * std::cos(kPi / segments) - (p.x() * std::cos(middle) + p.z() * std::sin(middle));
+}
+
 namespace {
 
 // a ring of `segments` vertices at height y (first vertex on +x)

@@ -23,6 +23,13 @@ double profile_radius(const std::vector<ProfileStation>& profile, double y);
 /// the circle of radius r, so the faceted hull keeps the cross-section area.
 double equal_area_vertex_radius(double r, int segments);
 
+/// How deep a point lies inside the faceted hull (the Bullet shape: a regular
+/// `segments`-gon of equal_area_vertex_radius at every height, first vertex on
+/// +x): its horizontal distance to the nearest side of the hull's section at
+/// the point's height, m; <= 0 outside, and negative above the deck or below
+/// the keel. `p` is in the structure frame (axis along y through the origin).
+double hull_depth(const std::vector<ProfileStation>& profile, int segments, const Eigen::Vector3d& p);
+
 /// The profile as convex pieces (frusta between stations; consecutive stations
 /// on one straight generator are merged). Each piece is a point cloud in the
 /// structure frame whose convex hull is the piece.

@@ -45,6 +45,7 @@ struct Floe {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // m, (x, z) of the area centroid, tank frame
   double yaw = 0.0;  // rad, rotation about +y (polygon.hpp convention)
   Polygon shape;     // m, local convex outline, ccw, area centroid at the origin
+  int layer = 0;     // rafted ice: starts `layer` thicknesses (+ min gap) above the floating layer
 };
 
 /// The rectangle (in the horizontal plane) that floes must lie inside.

@@ -1,7 +1,9 @@
 // Health checks: stop a numerical blow-up with a message naming the step, the
-// body and the quantity, instead of writing NaNs for the rest of the run.
+// body and the quantity, instead of writing NaNs for the rest of the run; and
+// measure, every step, what the stress suite bounds (dem/diagnostics.hpp).
 #pragma once
 
+#include "dem/diagnostics.hpp"
 #include "dem/scene.hpp"
 #include "dem/state.hpp"
 
@@ -9,8 +11,9 @@ namespace icedem {
 
 /// Throws NumericalError if an awake floe's position or velocity is not finite,
 /// its speed exceeds kBlowUpSpeed or it is farther than kBlowUpDistance from the
-/// origin, or if the structure load is not finite. Returns the largest angular
-/// speed of an awake floe or element (rad/s), a diagnostic recorded every step.
-double check_health(const Scene& scene, const State& state);
+/// origin, or if the structure load is not finite. Returns the step's
+/// diagnostics: speeds and kinetic energy of the awake ice, the ice mass in the
+/// tank, the widest intact joint and the deepest ice vertex in the structure.
+StepDiagnostics check_health(const Scene& scene, const State& state);
 
 }  // namespace icedem

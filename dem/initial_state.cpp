@@ -41,7 +41,18 @@ Layout scene_layout(const Scene& scene) {
   p.max_yaw = scene.layout.max_yaw;
   p.sweeps = scene.layout.sweeps;
   p.min_gap = scene.layout.min_gap;
-  return generate_square_layout(p);
+  Layout layout = generate_square_layout(p);
+  // rafted ice: each further layer is its own arrangement, stacked on the first
+  for (int k = 1; k < scene.layout.layers; ++k) {
+    p.seed = scene.seed + static_cast<uint64_t>(k);
+    const Layout layer = generate_square_layout(p);
+    for (Floe f : layer.floes) {
+      f.layer = k;
+      layout.floes.push_back(f);
+    }
+    layout.achieved_concentration += layer.achieved_concentration;
+  }
+  return layout;
 }
 
 std::unique_ptr<FlowField> make_flow(const Scene& scene) {

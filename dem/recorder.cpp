@@ -211,8 +211,8 @@ struct Recorder::Impl {
   std::size_t appended_rows = 0;
 
   // per-step series
-  Series time, force, moment, surge, cone_contacts, structure_position, awake_bodies, contact_points,
-      max_angular_speed;
+  Series time, force, moment, surge, cone_contacts, structure_position, awake_bodies, contact_points;
+  std::vector<Series> diagnostics = std::vector<Series>(kDiagnosticCount);  // kDiagnosticColumns order
   // snapshots
   Series snap_time, snap_position, snap_orientation, snap_awake;
   // fracture events
@@ -242,7 +242,7 @@ struct Recorder::Impl {
     const std::size_t n = load_buffer.size();
     if (n == 0) return;
     // gather the buffered samples column by column
-    std::vector<double> t(n), f(3 * n), m(3 * n), sx(n), p(3 * n), w(n);
+    std::vector<double> t(n), f(3 * n), m(3 * n), sx(n), p(3 * n);
     std::vector<int> contacts(n), awake(n), points(n);
     for (std::size_t i = 0; i < n; ++i) {
       const LoadSample& s = load_buffer[i];
@@ -257,7 +257,6 @@ struct Recorder::Impl {
       contacts[i] = s.cone_contacts;
       awake[i] = s.awake_bodies;
       points[i] = s.contact_points;
-      w[i] = s.max_angular_speed;
     }
     const auto& dbl = H5::PredType::NATIVE_DOUBLE;
     const auto& integer = H5::PredType::NATIVE_INT;
@@ -269,7 +268,11 @@ struct Recorder::Impl {
     structure_position.write(p.data(), n, dbl);
     awake_bodies.write(awake.data(), n, integer);
     contact_points.write(points.data(), n, integer);
-    max_angular_speed.write(w.data(), n, dbl);
+    std::vector<double> column(n);
+    for (std::size_t c = 0; c < diagnostics.size(); ++c) {
+      for (std::size_t i = 0; i < n; ++i) column[i] = load_buffer[i].diagnostics.*kDiagnosticColumns[c].field;
+      diagnostics[c].write(column.data(), n, dbl);
+    }
     load_buffer.clear();
   }
 
@@ -368,14 +371,15 @@ struct Recorder::Impl {
     H5::Group structure = file->createGroup("/structure");
     structure_position = create_series(structure, "position", f8, {3}, kSeriesChunkRows, "m",
                                        "structure reference point, tank frame");
-    H5::Group diagnostics = file->createGroup("/diagnostics");
-    awake_bodies = create_series(diagnostics, "awake_bodies", i4, {}, kSeriesChunkRows, "1",
+    H5::Group diagnostics_group = file->createGroup("/diagnostics");
+    awake_bodies = create_series(diagnostics_group, "awake_bodies", i4, {}, kSeriesChunkRows, "1",
                                  "bodies being solved (not sleeping)");
-    contact_points = create_series(diagnostics, "contact_points", i4, {}, kSeriesChunkRows, "1",
+    contact_points = create_series(diagnostics_group, "contact_points", i4, {}, kSeriesChunkRows, "1",
                                    "contact points in the whole world (solver load)");
-    max_angular_speed = create_series(diagnostics, "max_angular_speed", f8, {}, kSeriesChunkRows, "rad/s",
-                                      "fastest-turning awake floe or element (a growing rocking of "
-                                      "elements shows here before a blow-up)");
+    for (std::size_t c = 0; c < diagnostics.size(); ++c) {
+      const DiagnosticColumn& col = kDiagnosticColumns[c];
+      diagnostics[c] = create_series(diagnostics_group, col.name, f8, {}, kSeriesChunkRows, col.unit, col.description);
+    }
 
     // body outlines: a flat vertex list indexed by offsets (CSR), since outlines differ in size
     bodies = outlines.size();
@@ -428,9 +432,10 @@ struct Recorder::Impl {
   // every object must be closed for the file to close: HDF5 keeps it open while any is
   void close() {
     for (Series* s : {&time, &force, &moment, &surge, &cone_contacts, &structure_position,
-                      &awake_bodies, &contact_points, &max_angular_speed, &snap_time, &snap_position, &snap_orientation, &snap_awake,
+                      &awake_bodies, &contact_points, &snap_time, &snap_position, &snap_orientation, &snap_awake,
                       &events})
       s->dataset.reset();
+    for (Series& s : diagnostics) s.dataset.reset();
     meta.reset();
     file->close();
     finished = true;

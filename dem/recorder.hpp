@@ -15,6 +15,11 @@
 //   /diagnostics/awake_bodies  [n]          i4  1     bodies being solved (not sleeping)
 //   /diagnostics/contact_points [n]         i4  1     contact points in the whole world
 //   /diagnostics/max_angular_speed [n]      f8  rad/s fastest-turning awake floe or element
+//   /diagnostics/max_speed     [n]          f8  m/s   fastest awake floe or element
+//   /diagnostics/kinetic_energy [n]         f8  J     kinetic energy of the awake ice
+//   /diagnostics/ice_mass      [n]          f8  kg    ice in the world inside the tank
+//   /diagnostics/max_joint_gap [n]          f8  m     widest separation of an intact joint's anchors
+//   /diagnostics/max_cone_penetration [n]   f8  m     deepest ice vertex inside the structure hull
 //   /bodies/floe_id            [nb]         i4  1     floe of body i (body order = snapshot order)
 //   /bodies/thickness          [nb]         f8  m
 //   /bodies/vertex_offset      [nb+1]       i8  1     body i's outline: vertices[off[i]:off[i+1]]
@@ -58,6 +63,8 @@
 #include <string>
 #include <vector>
 
+#include "dem/diagnostics.hpp"
+
 namespace icedem {
 
 /// The outline of one body (floe or floe element) as it is stored under /bodies.
@@ -94,7 +101,7 @@ struct LoadSample {
   int cone_contacts;                   // contact points on the structure
   int awake_bodies;                    // bodies being solved
   int contact_points = 0;              // contact points in the whole world (solver load)
-  double max_angular_speed = 0;        // rad/s, fastest-turning awake floe or element
+  StepDiagnostics diagnostics;         // speeds, energy, ice mass, joint gap, cone penetration
 };
 
 /// One joint break.

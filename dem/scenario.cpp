@@ -291,7 +291,9 @@ Scene make_scene(const Scenario& sc) {
     file = p.string();
   }
   s.layout = {file, real(sc, "layout.max_yaw_deg") * kPi / 180.0, integer(sc, "layout.sweeps"),
-              real(sc, "layout.min_gap")};
+              real(sc, "layout.min_gap"), integer(sc, "layout.layers")};
+  if (s.layout.layers > 1 && !s.layout.file.empty())
+    fail(sc, "layout.layers", "1 with a layout.file (layers stack generated fields only)");
 
   s.friction = {real(sc, "friction.ice_ice"), real(sc, "friction.ice_structure")};
 

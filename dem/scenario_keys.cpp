@@ -113,6 +113,10 @@ std::vector<KeySpec> make_keys() {
                       "Monte-Carlo relaxation sweeps that randomise a generated layout"));
   k.push_back(real("layout.min_gap", "m", 0.002, 0.0, 1.0,
                    "smallest clearance between generated floes (keeps them out of contact at t = 0)"));
+  k.push_back(integer("layout.layers", 1, 1, 10,
+                      "rafted ice: a generated field repeated in this many layers, each its own "
+                      "arrangement (seed + layer), layer k starting k ice thicknesses (plus "
+                      "layout.min_gap) above the floating one; concentration is per layer"));
 
   // friction (Coulomb; combined by material pair, not Bullet's product rule)
   k.push_back(real("friction.ice_ice", "-", 0.5, 0.0, 5.0,

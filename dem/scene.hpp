@@ -69,6 +69,7 @@ struct LayoutSettings {
   double max_yaw;    // rad
   int sweeps;        // Monte-Carlo sweeps
   double min_gap;    // m
+  int layers;        // generated floe layers stacked at t = 0 (1: one floating layer)
 };
 
 struct FrictionSettings {

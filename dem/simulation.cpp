@@ -177,16 +177,13 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       const LoadReading& load = state.load;
       recorder.append(LoadSample{state.time, load.force, load.moment, state.structure_position,
                                  load.contacts, state.awake_floes, state.contact_points,
-                                 state.max_angular_speed});
+                                 state.diagnostics});
       history.time.push_back(state.time);
       history.surge.push_back(-load.force.x());  // resisting towing, positive
       history.heave.push_back(load.force.y());
       history.sway.push_back(load.force.z());
       awake_sum += state.awake_floes;
-      if (state.max_angular_speed > summary.max_angular_speed) {
-        summary.max_angular_speed = state.max_angular_speed;
-        summary.max_angular_speed_time = state.time;
-      }
+      summary.health.add(state.time, state.diagnostics);
       for (const FractureEvent& e : state.fracture_events) recorder.append_fracture(e);
       if (snapshot_every && state.step % snapshot_every == 0)
         recorder.append_snapshot(state.time, body_poses(*state.world));

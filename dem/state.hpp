@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "dem/diagnostics.hpp"
 #include "dem/flow_field.hpp"
 #include "dem/joint_loads.hpp"
 #include "dem/load_cell.hpp"
@@ -44,7 +45,7 @@ struct State {
   std::vector<std::pair<int, Eigen::Vector3d>> point_loads;
   int awake_floes = 0;     // floes simulated in the last step
   int contact_points = 0;  // contact points in the world after the last step
-  double max_angular_speed = 0;  // rad/s, fastest-turning awake body in the last step
+  StepDiagnostics diagnostics;   // health of the last step (speeds, energy, mass, gaps); check_health
 
   std::optional<double> first_contact_time;  // s, first step with ice on the structure
 

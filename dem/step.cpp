@@ -97,7 +97,7 @@ void step(const Scene& scene, State& state) {
   state.contact_points = state.world->contact_points();
   if (!state.first_contact_time && state.load.contacts > 0) state.first_contact_time = state.time;
   ++state.step;
-  { StageTimer t(times.health); state.max_angular_speed = check_health(scene, state); }
+  { StageTimer t(times.health); state.diagnostics = check_health(scene, state); }
 }
 
 }  // namespace icedem

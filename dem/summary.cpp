@@ -34,10 +34,10 @@ std::string summary_table(const RunSummary& s) {
   }
   // an element turning this fast is rocking unstably, not moving with the ice (README,
   // "Breakable ice": at ERP 0.8 elements rock with a growing period-2 oscillation)
-  if (s.max_angular_speed > kRockingAngularSpeed)
+  if (s.health.max.max_angular_speed > kRockingAngularSpeed)
     out += fmt::format("  warning: a floe or element turned at {:.1f} rad/s (t = {:.2f} s): unstable joints? "
                        "/diagnostics/max_angular_speed has the history; README, \"Breakable ice\"\n",
-                       s.max_angular_speed, s.max_angular_speed_time);
+                       s.health.max.max_angular_speed, s.health.max_time[0]);
   if (!s.has_statistics) {
     out += fmt::format("  no load statistics: {}\n", s.statistics_note);
     return out;
@@ -86,7 +86,14 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["floes"] = s.floes;
   j["achieved_concentration"] = s.achieved_concentration;
   j["mean_awake"] = s.mean_awake;
-  j["max_angular_speed_rad_s"] = s.max_angular_speed;
+  j["max_angular_speed_rad_s"] = s.health.max.max_angular_speed;
+  // the largest value of each per-step diagnostic and when (scripts/stress bounds them)
+  for (std::size_t c = 0; c < kDiagnosticCount; ++c) {
+    const DiagnosticColumn& col = kDiagnosticColumns[c];
+    j["health"][col.name] = {{"max", num(s.health.max.*col.field)}, {"unit", col.unit}, {"time_s", s.health.max_time[c]}};
+  }
+  j["health"]["ice_mass_initial_kg"] = num(s.health.initial_ice_mass);
+  j["health"]["ice_mass_max_relative_change"] = num(s.health.max_ice_mass_change);
   if (!s.validation.is_null()) j["validation"] = s.validation;
   const StageTimes& t = s.stage_times;
   j["stage_time_s"] = {{"structure", t.structure}, {"water", t.water},         {"bullet", t.bullet},

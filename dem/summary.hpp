@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dem/diagnostics.hpp"
 #include "dem/state.hpp"
 #include "dem/statistics.hpp"
 
@@ -36,8 +37,7 @@ struct RunSummary {
   int breaks = 0;           // joint failures (0 with rigid floes)
   std::array<int, 5> breaks_by_mode{};  // by FailureMode: compression, shear, bending, tension, in-plane bending
   StageTimes stage_times;   // s of wall time per stage of step()
-  double max_angular_speed = 0.0;       // rad/s, fastest turn of an awake floe or element in the run
-  double max_angular_speed_time = 0.0;  // s, when
+  DiagnosticExtremes health;  // extremes of the per-step diagnostics (speeds, energy, ice mass, ...)
   nlohmann::json validation;  // validation block of a validation case, null otherwise
 };
 

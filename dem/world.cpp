@@ -201,14 +201,26 @@ btRigidBody* World::add_static_box(const Eigen::Vector3d& centre, const Eigen::V
   return raw;
 }
 
+namespace {
+constexpr double kTankWallTop = 0.5;  // m above the still-water line
+}
+
+Eigen::AlignedBox3d World::tank_box() const {
+  const ChannelSettings& c = scene_.channel;
+  const double x0 = std::min(scene_.structure.start_x, c.start_x) - 2.0;  // tank start, behind the carriage
+  const double x1 = c.start_x + c.length + 1.0;                           // 1 m beyond the channel end
+  return {Eigen::Vector3d(x0, -c.tank_depth, -c.tank_width / 2),
+          Eigen::Vector3d(x1, kTankWallTop, c.tank_width / 2)};
+}
+
 void World::add_boundaries() {
   const ChannelSettings& c = scene_.channel;
   const double h = scene_.ice.thickness;
   const double draft = h * scene_.ice.density / scene_.water.density;
   const double y_ice = h / 2 - draft;  // centre of a floating sheet
-  const double x0 = std::min(scene_.structure.start_x, c.start_x) - 2.0;  // tank start, behind the carriage
+  const Eigen::AlignedBox3d tank = tank_box();
+  const double x0 = tank.min().x(), x1 = tank.max().x();
   const double x_end = c.start_x + c.length;
-  const double x1 = x_end + 1.0;
   const double side = (c.tank_width - c.width) / 2;  // mother ice left along each wall
 
   // mother ice along both sides of the channel: fixed sheets at the waterline
@@ -220,7 +232,7 @@ void World::add_boundaries() {
   if (c.end_wall) add_static_box({x_end + 0.5, y_ice, 0.0}, {0.5, h / 2, c.width / 2}, kBoundary);
 
   // tank walls, ends and floor (floes pushed under the ice must not fall out)
-  const double wall = 0.1, top = 0.5;
+  const double wall = 0.1, top = kTankWallTop;
   const double ymid = (top - c.tank_depth) / 2, yhalf = (top + c.tank_depth) / 2;
   for (double sign : {-1.0, 1.0})
     add_static_box({(x0 + x1) / 2, ymid, sign * (c.tank_width / 2 + wall)},
@@ -313,6 +325,12 @@ bool World::is_breakable(const Polygon& outline) const {
   return false;
 }
 
+double World::initial_height(const Floe& floe) const {
+  const double h = scene_.ice.thickness;
+  const double draft = h * scene_.ice.density / scene_.water.density;  // Archimedes, flat prism
+  return h / 2 - draft + floe.layer * (h + scene_.layout.min_gap);
+}
+
 void World::add_floe(const Floe& floe) {
   const int floe_id = next_floe_id_++;
   if (is_breakable(floe.shape)) {
@@ -320,11 +338,9 @@ void World::add_floe(const Floe& floe) {
     return;
   }
   const FloeShape& shape = shape_for(floe.shape);
-  const double h = scene_.ice.thickness;
-  const double draft = h * scene_.ice.density / scene_.water.density;  // Archimedes, flat prism
   btTransform pose;
   pose.setIdentity();
-  pose.setOrigin(btVector3(floe.centre.x(), h / 2 - draft, floe.centre.y()));
+  pose.setOrigin(btVector3(floe.centre.x(), initial_height(floe), floe.centre.y()));
   pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + shape.principal_yaw));
   add_body(shape, pose, floe_id);
 }
@@ -338,8 +354,7 @@ void World::add_breakable_floe(const Floe& floe, int floe_id) {
   const ElementLattice lattice = make_element_lattice(outline, Le);
   const FloeShape& element = shape_for(square(Le));
 
-  const double h = scene_.ice.thickness;
-  const double draft = h * scene_.ice.density / scene_.water.density;
+  const double y = initial_height(floe);
   const double yaw = floe.yaw + yaw0;
   const btQuaternion rotation(btVector3(0, 1, 0), yaw);
 
@@ -349,7 +364,7 @@ void World::add_breakable_floe(const Floe& floe, int floe_id) {
   if (dormant) {
     const FloeShape& whole = shape_for(floe.shape);
     stand_in_pose.setIdentity();
-    stand_in_pose.setOrigin(btVector3(floe.centre.x(), h / 2 - draft, floe.centre.y()));
+    stand_in_pose.setOrigin(btVector3(floe.centre.x(), y, floe.centre.y()));
     stand_in_pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + whole.principal_yaw));
     DormantLattice d;
     d.stand_in = add_body(whole, stand_in_pose, floe_id);
@@ -369,7 +384,7 @@ void World::add_breakable_floe(const Floe& floe, int floe_id) {
     const Eigen::Vector2d at = floe.centre + rotate(c, yaw);
     btTransform pose;
     pose.setIdentity();
-    pose.setOrigin(btVector3(at.x(), h / 2 - draft, at.y()));
+    pose.setOrigin(btVector3(at.x(), y, at.y()));
     pose.setRotation(rotation);
     // one piece: its elements do not collide with each other (fragment 0)
     const int index = add_body(element, pose, floe_id, 0, !dormant);

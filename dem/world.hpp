@@ -102,9 +102,17 @@ class World {
   /// Add the mother ice along the channel sides and end, the tank walls and floor.
   void add_boundaries();
 
+  /// Inside of the tank (x, y, z), m: between its end walls and side walls, from
+  /// the floor up to the walls' top; ice outside it has escaped.
+  Eigen::AlignedBox3d tank_box() const;
+
   /// Add one floe floating at its equilibrium draft, at rest: a rigid body, or a
   /// lattice of elements and joints if the scene makes it breakable.
   void add_floe(const Floe& floe);
+
+  /// Height of a floe's centre at t = 0, m: at its equilibrium draft, or
+  /// resting on the layers below it (rafted ice, layout.layers).
+  double initial_height(const Floe& floe) const;
 
   /// Add every floe of a layout.
   void add_floes(const std::vector<Floe>& floes);

@@ -46,6 +46,28 @@ TEST(Floating, FloeSettlesAtArchimedesDraft) {
   EXPECT_NEAR(draft, 0.033 * 930.0 / 1000.0, 1e-6);  // settled to a micrometre
 }
 
+TEST(Floating, RaftedFloeRestsOnTheOneBelowAtTheirCombinedDraft) {
+  // layout.layers: a floe of layer 1 starts on top of the floating layer; the
+  // pair then floats as one plate of twice the thickness (Archimedes: its
+  // bottom at 2 h rho_i / rho_w = 61.38 mm), the upper one resting on the lower
+  const Scene scene = bench_scene();
+  Floe upper = square_floe(10, 0);
+  upper.layer = 1;
+  State state = initial_state(scene, {square_floe(10, 0), upper});
+  const double h = scene.ice.thickness;
+  const btRigidBody& lower_body = *state.world->floes()[0].body;
+  const btRigidBody& upper_body = *state.world->floes()[1].body;
+  ASSERT_NEAR(upper_body.getCenterOfMassPosition().y() - lower_body.getCenterOfMassPosition().y(),
+              h + scene.layout.min_gap, 1e-12);
+  run_for(scene, state, 10.0);
+  const double bottom = lower_body.getCenterOfMassPosition().y() - h / 2;
+  // 1 mm: the contact between the floes keeps up to about one collision margin
+  // (1 mm) of overlap or gap
+  EXPECT_NEAR(-bottom, 2 * h * 930.0 / 1000.0, 0.001);
+  EXPECT_NEAR(upper_body.getCenterOfMassPosition().y() - lower_body.getCenterOfMassPosition().y(), h, 0.001);
+  EXPECT_LT(roll_pitch_deg(upper_body), 0.5);  // still a flat stack
+}
+
 TEST(Floating, TiltedFloeRightsItself) {
   const Scene scene = bench_scene();
   State state = initial_state(scene, {square_floe(10, 0)});

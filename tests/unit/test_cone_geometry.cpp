@@ -104,3 +104,24 @@ TEST(ConeGeometry, StlHasOneFacetPerTriangle) {
   // translated by the offset: the hull spans x = 2 -+ max radius
   EXPECT_NEAR(min_x, 2.0 - equal_area_vertex_radius(0.736, 16), 1e-6);
 }
+
+// hull_depth measures tunnelling in the stress suite: zero on the faceted hull's
+// surface (at its vertices and at its face middles), the inscribed radius on
+// the axis, negative outside (radially, above the deck, below the keel)
+TEST(ConeGeometry, HullDepthIsZeroOnTheFacetedSurfaceAndPositiveInside) {
+  const int n = 48;
+  const double y = -0.1;
+  const double vertex_r = equal_area_vertex_radius(profile_radius(kTable2, y), n);
+  const double face_r = vertex_r * std::cos(kPi / n);
+  EXPECT_NEAR(hull_depth(kTable2, n, {0.0, y, 0.0}), face_r, 1e-12);
+  for (int k : {0, 5, 47}) {
+    const double a = 2 * kPi * k / n;  // vertex k (the first on +x)
+    EXPECT_NEAR(hull_depth(kTable2, n, {vertex_r * std::cos(a), y, vertex_r * std::sin(a)}), 0.0, 1e-12) << k;
+    const double m = a + kPi / n;  // middle of the face after vertex k
+    EXPECT_NEAR(hull_depth(kTable2, n, {face_r * std::cos(m), y, face_r * std::sin(m)}), 0.0, 1e-12) << k;
+    const double out = face_r + 0.001;  // a millimetre outside, normal to the face
+    EXPECT_NEAR(hull_depth(kTable2, n, {out * std::cos(m), y, out * std::sin(m)}), -0.001, 1e-12) << k;
+  }
+  EXPECT_LT(hull_depth(kTable2, n, {0.0, kTable2.front().y - 0.01, 0.0}), 0.0);  // below the keel
+  EXPECT_LT(hull_depth(kTable2, n, {0.0, kTable2.back().y + 0.01, 0.0}), 0.0);   // above the deck
+}

@@ -54,7 +54,7 @@ LoadSample sample(int i) {
   s.structure_position = {2.0 + 0.0014 * i, 0.0, 0.25};
   s.cone_contacts = i % 7;
   s.awake_bodies = 100 + i;
-  s.max_angular_speed = 0.125 * i;
+  s.diagnostics = {0.125 * i, 0.01 * i, 0.5 * i, 100.0 - i, 1e-4 * i, 2e-4 * i};
   return s;
 }
 
@@ -124,9 +124,15 @@ void expect_load_rows(const H5::H5File& file, int n) {
   const std::vector<double> p = read_doubles(file, "/structure/position");
   const auto contacts = read<int>(file, "/load/cone_contacts", H5::PredType::NATIVE_INT);
   const auto awake = read<int>(file, "/diagnostics/awake_bodies", H5::PredType::NATIVE_INT);
+  // the diagnostics' dataset names spelled out here, independently of dem/diagnostics.hpp
   const std::vector<double> w = read_doubles(file, "/diagnostics/max_angular_speed");
+  const std::vector<double> v = read_doubles(file, "/diagnostics/max_speed");
+  const std::vector<double> ke = read_doubles(file, "/diagnostics/kinetic_energy");
+  const std::vector<double> mass = read_doubles(file, "/diagnostics/ice_mass");
+  const std::vector<double> gap = read_doubles(file, "/diagnostics/max_joint_gap");
+  const std::vector<double> depth = read_doubles(file, "/diagnostics/max_cone_penetration");
   ASSERT_EQ(t.size(), std::size_t(n));
-  ASSERT_EQ(w.size(), std::size_t(n));
+  for (const auto* d : {&w, &v, &ke, &mass, &gap, &depth}) ASSERT_EQ(d->size(), std::size_t(n));
   // doubles are stored as IEEE f8: the round trip is bit-exact
   for (int i = 0; i < n; ++i) {
     const LoadSample s = sample(i);
@@ -139,7 +145,12 @@ void expect_load_rows(const H5::H5File& file, int n) {
     ASSERT_EQ(surge[i], -s.force.x()) << "row " << i;  // surge = -force_x
     ASSERT_EQ(contacts[i], s.cone_contacts) << "row " << i;
     ASSERT_EQ(awake[i], s.awake_bodies) << "row " << i;
-    ASSERT_EQ(w[i], s.max_angular_speed) << "row " << i;
+    ASSERT_EQ(w[i], s.diagnostics.max_angular_speed) << "row " << i;
+    ASSERT_EQ(v[i], s.diagnostics.max_speed) << "row " << i;
+    ASSERT_EQ(ke[i], s.diagnostics.kinetic_energy) << "row " << i;
+    ASSERT_EQ(mass[i], s.diagnostics.ice_mass) << "row " << i;
+    ASSERT_EQ(gap[i], s.diagnostics.max_joint_gap) << "row " << i;
+    ASSERT_EQ(depth[i], s.diagnostics.max_cone_penetration) << "row " << i;
   }
 }
 

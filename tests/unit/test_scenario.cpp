@@ -154,3 +154,9 @@ TEST(Scenario, EveryShippedScenarioIsValid) {
   }
   EXPECT_GE(checked, 1);
 }
+
+TEST(Scenario, LayersStackGeneratedFieldsOnly) {
+  const std::string msg = error_of("[layout]\nlayers = 2\nfile = \"scenarios/examples/floes_small.csv\"\n");
+  EXPECT_NE(msg.find("layout.layers"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("layout.file"), std::string::npos) << msg;
+}

@@ -9,12 +9,11 @@ using namespace icedem;
 TEST(Summary, WarnsWhenAnElementTurnsFasterThanTheRockingThreshold) {
   RunSummary s;
   s.status = "complete";
-  s.max_angular_speed = 1.5;  // a stable run: floes turn at a few rad/s at most
+  s.health.max.max_angular_speed = 1.5;  // a stable run: floes turn at a few rad/s at most
   EXPECT_EQ(summary_table(s).find("warning"), std::string::npos);
   EXPECT_DOUBLE_EQ(summary_json(s)["max_angular_speed_rad_s"].get<double>(), 1.5);
 
-  s.max_angular_speed = kRockingAngularSpeed + 25.0;
-  s.max_angular_speed_time = 165.2;
+  s.health.add(165.2, StepDiagnostics{kRockingAngularSpeed + 25.0});
   const std::string table = summary_table(s);
   EXPECT_NE(table.find("warning: a floe or element turned at 40.0 rad/s (t = 165.20 s)"), std::string::npos)
       << table;

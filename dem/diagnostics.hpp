@@ -1,0 +1,67 @@
+// Per-step numerical-health diagnostics: what the health check measures after
+// every step, the recorder writes under /diagnostics and the summary reduces to
+// its extremes. The stress suite (scripts/stress) judges a run by them, so each
+// has a physical bound there.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+
+namespace icedem {
+
+struct StepDiagnostics {
+  double max_angular_speed = 0;     // rad/s, fastest-turning awake floe or element
+  double max_speed = 0;             // m/s, fastest awake floe or element (centre of mass)
+  double kinetic_energy = 0;        // J, translation + rotation of the awake ice bodies
+  double ice_mass = 0;              // kg, ice in the Bullet world with its centre inside the tank
+  double max_joint_gap = 0;         // m, widest separation of an intact joint's two anchors
+  double max_cone_penetration = 0;  // m, deepest ice vertex inside the structure hull (radial)
+};
+
+/// One diagnostic: its dataset name under /diagnostics, unit and meaning.
+struct DiagnosticColumn {
+  const char* name;
+  const char* unit;
+  const char* description;
+  double StepDiagnostics::*field;
+};
+
+inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
+    {"max_angular_speed", "rad/s",
+     "fastest-turning awake floe or element (a growing rocking of elements shows here before a blow-up)",
+     &StepDiagnostics::max_angular_speed},
+    {"max_speed", "m/s", "fastest awake floe or element (centre of mass)", &StepDiagnostics::max_speed},
+    {"kinetic_energy", "J", "kinetic energy (translation and rotation) of the awake ice",
+     &StepDiagnostics::kinetic_energy},
+    {"ice_mass", "kg", "mass of the ice in the world with its centre inside the tank", &StepDiagnostics::ice_mass},
+    {"max_joint_gap", "m", "widest separation of the two anchors of an intact element joint",
+     &StepDiagnostics::max_joint_gap},
+    {"max_cone_penetration", "m", "deepest ice vertex inside the structure hull, radially (tunnelling shows here)",
+     &StepDiagnostics::max_cone_penetration},
+};
+inline constexpr std::size_t kDiagnosticCount = std::size(kDiagnosticColumns);
+
+/// The extremes of the diagnostics over a run.
+struct DiagnosticExtremes {
+  StepDiagnostics max;                          // largest value of each diagnostic
+  double max_time[kDiagnosticCount] = {};       // s, when (kDiagnosticColumns order)
+  double initial_ice_mass = -1;                 // kg, after the first step (-1: no step yet)
+  double max_ice_mass_change = 0;               // largest |m - m0| / m0 (ice lost or created)
+
+  void add(double time, const StepDiagnostics& d) {
+    for (std::size_t c = 0; c < kDiagnosticCount; ++c) {
+      const auto field = kDiagnosticColumns[c].field;
+      if (d.*field > max.*field) {
+        max.*field = d.*field;
+        max_time[c] = time;
+      }
+    }
+    if (initial_ice_mass < 0) initial_ice_mass = d.ice_mass;
+    if (initial_ice_mass > 0)
+      max_ice_mass_change = std::max(max_ice_mass_change, std::abs(d.ice_mass - initial_ice_mass) / initial_ice_mass);
+  }
+};
+
+}  // namespace icedem
