@@ -19,6 +19,7 @@
 #include "dem/initial_state.hpp"
 #include "dem/scenario.hpp"
 #include "dem/simulation.hpp"
+#include "dem/step_size_advice.hpp"
 
 using namespace icedem;
 
@@ -56,6 +57,7 @@ int check_command(const std::string& scenario_path, const std::vector<std::strin
   std::cout << fmt::format("{}: ok ({} floes, concentration {:.2f} %, {:.0f} s at dt {} s)\n", scenario_path,
                            layout.floes.size(), 100 * layout.achieved_concentration, scene.time.duration,
                            scene.time.dt);
+  for (const std::string& w : step_size_warnings(scene)) std::cout << "warning: " << w << "\n";
   return kExitOk;
 }
 

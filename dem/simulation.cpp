@@ -14,6 +14,7 @@
 #include "dem/recorder.hpp"
 #include "dem/statistics.hpp"
 #include "dem/step.hpp"
+#include "dem/step_size_advice.hpp"
 #include "dem/validation.hpp"
 
 namespace icedem {
@@ -133,6 +134,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   RunSummary summary;
   summary.scenario = scene.source_path;
   summary.output = options.output;
+  summary.warnings = step_size_warnings(scene);
 
   // initial conditions
   const Layout layout = scene_layout(scene);

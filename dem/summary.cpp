@@ -14,6 +14,7 @@ std::string summary_table(const RunSummary& s) {
   std::string out;
   out += fmt::format("icedem run: {}  ->  {}  [{}]\n", s.scenario, s.output, s.status);
   if (!s.message.empty()) out += fmt::format("  {}\n", s.message);
+  for (const std::string& w : s.warnings) out += fmt::format("  warning: {}\n", w);
   out += fmt::format("  floes {:d} (concentration {:.2f} %), steps {:d}, simulated {:.1f} s in {:.1f} s wall "
                      "({:.1f}x real time, {:.0f} steps/s), awake bodies {:.1f} on average\n",
                      s.floes, 100 * s.achieved_concentration, s.steps, s.sim_time_s, s.wall_time_s, rtf,
@@ -86,6 +87,7 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["floes"] = s.floes;
   j["achieved_concentration"] = s.achieved_concentration;
   j["mean_awake"] = s.mean_awake;
+  j["warnings"] = s.warnings;
   j["max_angular_speed_rad_s"] = s.health.max.max_angular_speed;
   // the largest value of each per-step diagnostic and when (scripts/stress bounds them)
   for (std::size_t c = 0; c < kDiagnosticCount; ++c) {

@@ -38,6 +38,7 @@ struct RunSummary {
   std::array<int, 5> breaks_by_mode{};  // by FailureMode: compression, shear, bending, tension, in-plane bending
   StageTimes stage_times;   // s of wall time per stage of step()
   DiagnosticExtremes health;  // extremes of the per-step diagnostics (speeds, energy, ice mass, ...)
+  std::vector<std::string> warnings;  // scene warnings (step_size_warnings), printed first
   nlohmann::json validation;  // validation block of a validation case, null otherwise
 };
 
