@@ -47,7 +47,7 @@ void check_fracture(const Scene& scene, State& state, double h) {
     const btRigidBody& body_a = *world.floes()[joint.body_a].body;
     const btRigidBody& body_b = *world.floes()[joint.body_b].body;
     // asleep: the feedback is stale (bullet-notes.md) and the filter keeps its last value
-    if (!body_a.isActive() && !body_b.isActive()) continue;
+    if (!body_a.isActive() && !body_b.isActive() && scene.activation.skip_asleep) continue;
 
     JointLoads loads = joint_loads(world, joint);
     if (tau > 0) {

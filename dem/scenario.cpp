@@ -333,6 +333,7 @@ Scene make_scene(const Scenario& sc) {
   s.activation = {get<bool>(sc, "activation.sleeping"),
                   get<std::string>(sc, "activation.islands") == "bullet" ? IslandMode::kBullet
                                                                          : IslandMode::kContact,
+                  get<bool>(sc, "activation.skip_asleep"),
                   real(sc, "activation.linear_threshold"), real(sc, "activation.angular_threshold"),
                   real(sc, "activation.time"),
                   get<bool>(sc, "activation.freeze_outside_region"),

@@ -173,6 +173,10 @@ std::vector<KeySpec> make_keys() {
   k.push_back(choice("activation.islands", "contact", {"contact", "bullet"},
                      "how sleeping islands are built: from touching contacts, or Bullet's "
                      "bounding-box overlap (which makes a 75 % field one island)"));
+  k.push_back(boolean("activation.skip_asleep", true,
+                      "water forces and joint failure checks only on awake bodies (a sleeping body is "
+                      "not integrated and its joint feedback is stale); false computes them for every "
+                      "body, to measure what the skip saves (scripts/ladder)"));
   k.push_back(positive("activation.linear_threshold", "m/s", 0.005, 10.0,
                        "speed below which a body may fall asleep (Bullet default 0.8 is for games)"));
   k.push_back(positive("activation.angular_threshold", "rad/s", 0.02, 100.0,

@@ -108,6 +108,7 @@ enum class IslandMode { kContact, kBullet };
 struct ActivationSettings {
   bool sleeping;             // bodies at rest may sleep
   IslandMode islands;        // how sleeping islands are formed
+  bool skip_asleep;          // water forces and joint checks on awake bodies only
   double linear_threshold;   // m/s
   double angular_threshold;  // rad/s
   double time;               // s below thresholds before sleeping

@@ -35,16 +35,21 @@ void move_structure(const Scene& scene, State& state, double t_next) {
 }  // namespace
 
 // buoyancy, drag and damping on awake floes (sleeping ones are at rest and get
-// neither gravity nor water forces from Bullet's integration)
+// neither gravity nor water forces from Bullet's integration, so forces on them
+// are wasted work; activation.skip_asleep = false does it anyway, to measure that)
 void apply_water_forces(const Scene& scene, State& state) {
   const WaterParams water = water_params(scene.water);
   for (FloeBody& floe : state.world->floes()) {
     btRigidBody& body = *floe.body;
-    if (!body.isActive()) continue;
+    if (!body.isInWorld() || (!body.isActive() && scene.activation.skip_asleep)) continue;
     BodyMotion motion{body_pose(body), to_eigen(body.getLinearVelocity()), to_eigen(body.getAngularVelocity())};
     const Wrench w = water_wrench(floe.shape->prism, motion, *state.flow, water, floe.shape->damping);
     body.applyCentralForce(btVector3(w.force.x(), w.force.y(), w.force.z()));
     body.applyTorque(btVector3(w.torque.x(), w.torque.y(), w.torque.z()));
+    // Bullet adds gravity to awake bodies only, but a sleeping body touching an
+    // awake one enters the contact solve with its applied forces: without its
+    // weight the buoyancy alone would lift it there
+    if (!body.isActive() && body.getInvMass() > 0) body.applyCentralForce(body.getGravity() / body.getInvMass());
   }
 }
 
