@@ -5,6 +5,9 @@
 //                    The message names file, line, key, value and what was expected.
 //   NumericalError : the simulation blew up; exit 3. The message names the step,
 //                    the body and the quantity.
+//   CouplingError  : the OpenFOAM side failed (missing, meshing, solver, exchange
+//                    timeout, a floe outside the mesh); exit 4. The message names
+//                    the step that failed and where its log is.
 // Internal invariants use assert(); they are bugs, not user errors.
 #pragma once
 
@@ -18,6 +21,7 @@ enum ExitCode : int {
   kExitRuntime = 1,     // anything unexpected (I/O failure, bug)
   kExitBadInput = 2,    // InputError
   kExitNumerical = 3,   // NumericalError
+  kExitCoupling = 4,    // CouplingError
   kExitInterrupted = 130,  // Ctrl-C, file kept and marked incomplete
 };
 
@@ -31,6 +35,12 @@ class InputError : public std::runtime_error {
 class NumericalError : public std::runtime_error {
  public:
   explicit NumericalError(const std::string& message) : std::runtime_error(message) {}
+};
+
+/// A failure of the OpenFOAM coupling (coupling/).
+class CouplingError : public std::runtime_error {
+ public:
+  explicit CouplingError(const std::string& message) : std::runtime_error(message) {}
 };
 
 }  // namespace icedem

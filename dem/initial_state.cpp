@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "dem/activation.hpp"
+#include "dem/errors.hpp"
 #include "dem/step.hpp"
 
 namespace icedem {
@@ -64,10 +65,17 @@ std::unique_ptr<FlowField> make_flow(const Scene& scene) {
       for (const ProfileStation& s : scene.structure.profile) stations.emplace_back(s.y, s.radius);
       return std::make_unique<ConePotentialFlow>(stations);
     }
-    case FlowModel::kCoupled: break;
+    case FlowModel::kCoupled:
+      if (coupled_flow_factory()) return coupled_flow_factory()(scene);
+      throw InputError("flow.model = \"coupled\": this program was built without the OpenFOAM coupling "
+                       "(coupling/); the icedem command has it");
   }
-  // make_scene rejects "coupled" until the OpenFOAM coupler exists
-  throw std::logic_error("make_flow: flow model not available in this build");
+  throw std::logic_error("make_flow: unknown flow model");
+}
+
+CoupledFlowFactory& coupled_flow_factory() {
+  static CoupledFlowFactory factory;
+  return factory;
 }
 
 State initial_state(const Scene& scene, const std::vector<Floe>& floes) {

@@ -2,6 +2,7 @@
 // from the Scene.
 #pragma once
 
+#include <functional>
 #include <memory>
 
 #include "dem/floe_layout.hpp"
@@ -19,6 +20,13 @@ Layout scene_layout(const Scene& scene);
 
 /// The water velocity model of flow.model.
 std::unique_ptr<FlowField> make_flow(const Scene& scene);
+
+/// Makes the flow of flow.model = "coupled". The OpenFOAM coupling lives in
+/// coupling/, which depends on dem/ and not the reverse: a program that links it
+/// sets this factory once at start (the icedem command does); unset, a coupled
+/// scene is an InputError.
+using CoupledFlowFactory = std::function<std::unique_ptr<FlowField>(const Scene&)>;
+CoupledFlowFactory& coupled_flow_factory();
 
 /// World, flow and structure at t = 0 with the given floes.
 State initial_state(const Scene& scene, const std::vector<Floe>& floes);

@@ -5,7 +5,10 @@
 //   icedem stl SCENARIO.toml -o hull.stl        the structure's surface
 //   icedem calibrate PLATE.toml [--target-modulus PA] [--write OUT.toml]
 //                                               joint CFM for a target elastic modulus
-// Exit codes: 0 success, 2 bad input, 3 numerical failure, 130 interrupted, 1 other.
+//   icedem foam-case SCENARIO.toml -o DIR       a runnable OpenFOAM case (DIR/Allrun)
+//   icedem foam-solve SCENARIO.toml             solve it into the cache (flow.model = "coupled")
+// Exit codes: 0 success, 2 bad input, 3 numerical failure, 4 OpenFOAM coupling failure,
+// 130 interrupted, 1 other.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -13,6 +16,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "coupling/coupled_flow.hpp"
+#include "coupling/foam_case.hpp"
+#include "coupling/foam_runner.hpp"
 #include "dem/calibration.hpp"
 #include "dem/cone_geometry.hpp"
 #include "dem/errors.hpp"
@@ -70,6 +76,24 @@ int stl_command(const std::string& scenario_path, const std::vector<std::string>
   return kExitOk;
 }
 
+int foam_case_command(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& output) {
+  const Scene scene = load_scene(scenario_path, sets);
+  const FoamCaseSpec spec = foam_case_spec(scene);
+  write_foam_case(spec, foam_template_dir(), output);
+  const GridAxes g = foam_grid_axes(spec);
+  std::cout << fmt::format("{}: OpenFOAM case ({} mesh, hash {}), {} grid points; run {}/Allrun\n", output, spec.mesh,
+                           foam_case_hash(spec), g.count(), output);
+  return kExitOk;
+}
+
+int foam_solve_command(const std::string& scenario_path, const std::vector<std::string>& sets) {
+  const Scene scene = load_scene(scenario_path, sets);
+  const FlowGrid grid = solved_flow_grid(scene, std::cout);
+  std::cout << fmt::format("{}/flow_grid.h5: {} x {} x {} points\n", foam_case_dir(foam_case_spec(scene), scene.coupling.cache_dir),
+                           grid.axes().nx, grid.axes().ny, grid.axes().nz);
+  return kExitOk;
+}
+
 int calibrate_command(const std::string& scenario_path, const std::vector<std::string>& sets, double target,
                       const std::string& write_path) {
   const Scene scene = load_scene(scenario_path, sets);
@@ -102,6 +126,7 @@ int calibrate_command(const std::string& scenario_path, const std::vector<std::s
 }  // namespace
 
 int main(int argc, char** argv) {
+  register_coupled_flow();
   CLI::App app{"icedem: a conical structure towed through managed ice floes (non-smooth DEM on Bullet)"};
   app.require_subcommand(1);
   std::string scenario, output, summary_path;
@@ -126,6 +151,16 @@ int main(int argc, char** argv) {
   stl->add_option("--set", sets, "override a scenario key")->take_all();
   stl->add_option("-o,--output", output, "STL file")->required();
 
+  CLI::App* foam_case = app.add_subcommand("foam-case", "write the OpenFOAM potential-flow case of a scenario");
+  foam_case->add_option("scenario", scenario, "scenario TOML file")->required();
+  foam_case->add_option("--set", sets, "override a scenario key")->take_all();
+  foam_case->add_option("-o,--output", output, "case directory")->required();
+
+  CLI::App* foam_solve = app.add_subcommand(
+      "foam-solve", "mesh and solve the scenario's OpenFOAM case into the cache (coupling.cache_dir)");
+  foam_solve->add_option("scenario", scenario, "scenario TOML file")->required();
+  foam_solve->add_option("--set", sets, "override a scenario key")->take_all();
+
   double target_modulus = 0;
   std::string write_path;
   CLI::App* calibrate = app.add_subcommand(
@@ -147,11 +182,16 @@ int main(int argc, char** argv) {
     if (*check) return check_command(scenario, sets);
     if (*stl) return stl_command(scenario, sets, output);
     if (*calibrate) return calibrate_command(scenario, sets, target_modulus, write_path);
+    if (*foam_case) return foam_case_command(scenario, sets, output);
+    if (*foam_solve) return foam_solve_command(scenario, sets);
     std::cout << keys_markdown();
     return kExitOk;
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const CouplingError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitCoupling;
   } catch (const NumericalError& e) {
     std::cerr << "\nerror: " << e.what() << "\n(the output file keeps every step before the failure, "
               << "marked status = failed)\n";

@@ -1,6 +1,7 @@
 #include "dem/scenario.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -304,9 +305,17 @@ Scene make_scene(const Scenario& sc) {
                                      : FlowModel::kPotential;
   const Vector3Value& u = get<Vector3Value>(sc, "flow.velocity");
   s.flow.velocity = Eigen::Vector3d(u[0], u[1], u[2]);
-  if (s.flow.model == FlowModel::kCoupled)
-    fail(sc, "flow.model",
-         "the OpenFOAM coupling is not part of this build yet; use \"still\", \"uniform\" or \"potential\"");
+  std::string cache = get<std::string>(sc, "coupling.cache_dir");
+  if (cache.empty()) {
+    const char* env = std::getenv("ICEDEM_FOAM_CACHE");
+    const char* home = std::getenv("HOME");
+    cache = env && *env ? env : (fs::path(home && *home ? home : "/tmp") / ".cache" / "icedem" / "foam").string();
+  } else if (fs::path(cache).is_relative()) {
+    cache = (fs::path(sc.base_dir) / cache).string();
+  }
+  s.coupling = {get<std::string>(sc, "coupling.mode") == "probe" ? CouplingMode::kProbe : CouplingMode::kField,
+                get<std::string>(sc, "coupling.mesh"), cache, real(sc, "coupling.domain_length"),
+                real(sc, "coupling.grid_spacing"), real(sc, "coupling.grid_depth")};
 
   // characteristic length l_c = (D / (rho_w g))^(1/4), D = E h^3 / (12 (1 - nu^2))
   // (physics-targets.md 2): "auto" makes only floes at least this large breakable

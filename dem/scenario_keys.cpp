@@ -147,6 +147,26 @@ std::vector<KeySpec> make_keys() {
     k.push_back(v);
   }
 
+  // coupling: the OpenFOAM potential-flow case (flow.model = "coupled")
+  k.push_back(choice("coupling.mode", "field", {"field", "probe"},
+                     "field: the solved velocity sampled once on a grid that the DEM interpolates every "
+                     "step; probe: OpenFOAM samples the flow at the floes at every exchange"));
+  k.push_back(choice("coupling.mesh", "coarse", {"coarse", "medium", "fine"},
+                     "OpenFOAM mesh: background cells 0.2 / 0.1 / 0.1 m, refined at the hull to 0.05 / "
+                     "0.025 / 0.0125 m"));
+  k.push_back(text("coupling.cache_dir", "",
+                   "where solved cases are kept, one directory per hash of the case inputs; empty: "
+                   "$ICEDEM_FOAM_CACHE, else ~/.cache/icedem/foam. Relative paths are relative to the "
+                   "scenario file"));
+  k.push_back(real("coupling.domain_length", "m", 10.0, 2.0, 1000.0,
+                   "length of the OpenFOAM domain along x, centred on the structure axis (the width "
+                   "and depth are the tank's)"));
+  k.push_back(real("coupling.grid_spacing", "m", 0.05, 0.005, 1.0,
+                   "spacing of the grid the velocity is sampled on (field mode)"));
+  k.push_back(real("coupling.grid_depth", "m", 0.6, 0.05, 100.0,
+                   "the sampled grid spans y from -grid_depth to the still-water line; deeper points "
+                   "take the deepest level"));
+
   // fracture
   k.push_back(choice("fracture.mode", "off", {"off", "on", "auto"},
                      "breakable ice elements: off (rigid floes), on, or auto (only floes larger "

@@ -92,6 +92,17 @@ struct FlowSettings {
   Eigen::Vector3d velocity;  // m/s, uniform current
 };
 
+enum class CouplingMode { kField, kProbe };
+/// flow.model = "coupled": the OpenFOAM potential-flow case (coupling/, foam_case/).
+struct CouplingSettings {
+  CouplingMode mode;
+  std::string mesh;       // "coarse" | "medium" | "fine"
+  std::string cache_dir;  // absolute; solved cases by hash of their inputs
+  double domain_length;   // m, along x, centred on the structure axis
+  double grid_spacing;    // m, of the sampled velocity grid
+  double grid_depth;      // m, the grid spans y from -grid_depth to the still-water line
+};
+
 enum class FractureMode { kOff, kOn, kAuto };
 struct FractureSettings {
   FractureMode mode;
@@ -152,6 +163,7 @@ struct Scene {
   FrictionSettings friction;
   WaterSettings water;
   FlowSettings flow;
+  CouplingSettings coupling;
   FractureSettings fracture;
   ActivationSettings activation;
   OutputSettings output;

@@ -13,6 +13,7 @@ ICEDEM_PACKAGES=(
   nlohmann-json3-dev libfmt-dev googletest libgtest-dev libbenchmark-dev
   python3-numpy python3-h5py python3-matplotlib
   python3-scipy parallel slurm-wlm munge
+  openfoam
 )
 
 # install missing packages (as root, or through sudo), once
