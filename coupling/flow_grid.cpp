@@ -26,14 +26,20 @@ Eigen::Vector3d FlowGrid::relative_velocity(const Eigen::Vector3d& p) const {
   const int i = std::min(static_cast<int>(fx), a.nx - 2), j = std::min(static_cast<int>(fy), a.ny - 2),
             k = std::min(static_cast<int>(fz), a.nz - 2);
   const double tx = fx - i, ty = fy - j, tz = fz - k;
+  // trilinear over the cell's water points only, their weights renormalised: beside
+  // the hull the water's own velocity is extended to the wall instead of being
+  // pulled towards the hull's; a cell with no water point moves with the structure
   Eigen::Vector3d u = Eigen::Vector3d::Zero();
+  double weight = 0;
   for (int c = 0; c < 8; ++c) {
     const int di = c & 1, dj = (c >> 1) & 1, dk = (c >> 2) & 1;
     const double w = (di ? tx : 1 - tx) * (dj ? ty : 1 - ty) * (dk ? tz : 1 - tz);
     const int n = a.index(i + di, j + dj, k + dk);
-    if (!solid_[n]) u += w * velocity_[n];  // a solid point moves with the structure: 0
+    if (solid_[n]) continue;
+    u += w * velocity_[n];
+    weight += w;
   }
-  return u;
+  return weight > 1e-12 ? Eigen::Vector3d(u / weight) : Eigen::Vector3d::Zero();
 }
 
 namespace {

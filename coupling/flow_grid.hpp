@@ -42,9 +42,9 @@ class FlowGrid {
   FlowGrid(GridAxes axes, std::vector<Eigen::Vector3d> velocity, std::vector<unsigned char> solid);
 
   /// Relative velocity per unit tow speed at a point of the structure frame:
-  /// trilinear between grid points (a solid point counts as moving with the
-  /// structure, relative velocity 0); beyond the grid in x or z the undisturbed
-  /// (-1, 0, 0); y is clamped to the grid's levels.
+  /// trilinear between the water points of its grid cell (weights renormalised
+  /// over them; 0, moving with the structure, if the cell has none); beyond the
+  /// grid in x or z the undisturbed (-1, 0, 0); y is clamped to the grid's levels.
   Eigen::Vector3d relative_velocity(const Eigen::Vector3d& p) const;
 
   const GridAxes& axes() const { return axes_; }

@@ -31,7 +31,8 @@ FoamCaseSpec foam_case_spec(const Scene& scene) {
 }
 
 std::string foam_case_inputs(const FoamCaseSpec& s) {
-  std::string t = "icedem foam case v1\nprofile";
+  // bump the version when the conversion of the samples (foam_runner.cpp) changes
+  std::string t = "icedem foam case v2\nprofile";
   for (const ProfileStation& p : s.profile) t += fmt::format(" ({:.17g} {:.17g})", p.y, p.radius);
   t += fmt::format("\nsegments {}\nlength {:.17g}\nwidth {:.17g}\ndepth {:.17g}\nmesh {}\ncell {:.17g}\nlevel {}\n"
                    "grid_spacing {:.17g}\ngrid_depth {:.17g}\n",
@@ -106,7 +107,9 @@ std::string probes_dict(const GridAxes& a) {
       "FoamFile { version 2.0; format ascii; class dictionary; object probesDict; }\n"
       "// Written by icedem foam-case: the grid points (coupling/flow_grid.hpp), y slowest, then z, then x.\n"
       "functions\n{\n    grid\n    {\n        type probes;\n        libs (\"libsampling.so\");\n"
-      "        fields (gradPhi);\n        writeControl writeTime;\n        probeLocations\n        (\n";
+      "        fields (gradPhi);\n        writeControl writeTime;\n"
+      // cellPoint: interpolated; the default is the containing cell's value, up to half a cell off
+      "        interpolationScheme cellPoint;\n        probeLocations\n        (\n";
   for (int j = 0; j < a.ny; ++j)
     for (int k = 0; k < a.nz; ++k)
       for (int i = 0; i < a.nx; ++i) {

@@ -8,5 +8,5 @@ start=$(date +%s)
 ensure_packages
 build_project
 cd "$ICEDEM_BUILD"
-ctest -L 'unit|physics|regression' --output-on-failure -j "$(nproc)" "$@"
+ctest -L 'unit|physics|regression|coupling' --output-on-failure -j "$(nproc)" "$@"
 log "tests done ($(( $(date +%s) - start )) s)"
