@@ -3,18 +3,22 @@
 #include <iostream>
 
 #include "coupling/foam_runner.hpp"
+#include "coupling/probe_exchange.hpp"
 #include "dem/errors.hpp"
 #include "dem/initial_state.hpp"
 
 namespace icedem {
 
 std::unique_ptr<FlowField> make_coupled_flow(const Scene& scene) {
-  if (scene.coupling.mode == CouplingMode::kProbe)
-    throw InputError("coupling.mode = \"probe\": the per-exchange OpenFOAM sampling is not available yet; "
-                     "use coupling.mode = \"field\"");
+  // probe mode: the partner's exchanged drag carries the flow (coupling/probe_exchange.hpp);
+  // the DEM's own water stage sees still water for what it still computes (damping)
+  if (scene.coupling.mode == CouplingMode::kProbe) return std::make_unique<StillWater>();
   return std::make_unique<GridFlowField>(solved_flow_grid(scene, std::cerr));
 }
 
-void register_coupled_flow() { coupled_flow_factory() = make_coupled_flow; }
+void register_coupled_flow() {
+  coupled_flow_factory() = make_coupled_flow;
+  drag_exchange_factory() = make_drag_exchange;
+}
 
 }  // namespace icedem

@@ -73,6 +73,11 @@ std::unique_ptr<FlowField> make_flow(const Scene& scene) {
   throw std::logic_error("make_flow: unknown flow model");
 }
 
+DragExchangeFactory& drag_exchange_factory() {
+  static DragExchangeFactory factory;
+  return factory;
+}
+
 CoupledFlowFactory& coupled_flow_factory() {
   static CoupledFlowFactory factory;
   return factory;
@@ -83,6 +88,7 @@ State initial_state(const Scene& scene, const std::vector<Floe>& floes) {
   state.world = build_world(scene, floes);
   install_activation(*state.world);
   state.flow = make_flow(scene);
+  if (drag_exchange_factory()) state.drag_exchange = drag_exchange_factory()(scene);
   state.structure_position = structure_position_at(scene, 0.0);
   state.structure_velocity = Eigen::Vector3d(scene.structure.speed, 0.0, 0.0);
   state.flow->set_structure(state.structure_position, state.structure_velocity);

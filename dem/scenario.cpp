@@ -315,7 +315,13 @@ Scene make_scene(const Scenario& sc) {
   }
   s.coupling = {get<std::string>(sc, "coupling.mode") == "probe" ? CouplingMode::kProbe : CouplingMode::kField,
                 get<std::string>(sc, "coupling.mesh"), cache, real(sc, "coupling.domain_length"),
-                real(sc, "coupling.grid_spacing"), real(sc, "coupling.grid_depth")};
+                real(sc, "coupling.grid_spacing"), real(sc, "coupling.grid_depth"),
+                integer(sc, "coupling.exchange_steps"), real(sc, "coupling.timeout"),
+                get<std::string>(sc, "coupling.exchange_dir"), get<std::string>(sc, "coupling.partner") == "spawn"};
+  if (!s.coupling.exchange_dir.empty() && fs::path(s.coupling.exchange_dir).is_relative())
+    s.coupling.exchange_dir = (fs::path(sc.base_dir) / s.coupling.exchange_dir).string();
+  if (!s.coupling.spawn_partner && s.coupling.exchange_dir.empty() && s.coupling.mode == CouplingMode::kProbe)
+    fail(sc, "coupling.exchange_dir", "a directory shared with the external partner (coupling.partner = \"external\")");
 
   // characteristic length l_c = (D / (rho_w g))^(1/4), D = E h^3 / (12 (1 - nu^2))
   // (physics-targets.md 2): "auto" makes only floes at least this large breakable

@@ -163,6 +163,18 @@ std::vector<KeySpec> make_keys() {
                    "and depth are the tank's)"));
   k.push_back(real("coupling.grid_spacing", "m", 0.05, 0.005, 1.0,
                    "spacing of the grid the velocity is sampled on (field mode)"));
+  k.push_back(integer("coupling.exchange_steps", 50, 1, 1000000,
+                      "probe mode: steps between exchanges with the OpenFOAM partner (the drag is held "
+                      "between them)"));
+  k.push_back(positive("coupling.timeout", "s", 120.0, 1.0e5,
+                       "probe mode: longest wait for the partner's hello or a response before the run "
+                       "stops with an error (the HDF5 file keeps the run so far)"));
+  k.push_back(text("coupling.exchange_dir", "",
+                   "probe mode: the exchange directory (coupling/PROTOCOL.md); empty: a new temporary "
+                   "directory. Relative paths are relative to the scenario file"));
+  k.push_back(choice("coupling.partner", "spawn", {"spawn", "external"},
+                     "probe mode: spawn the OpenFOAM partner (coupling/foam_partner.py) as a child "
+                     "process, or wait for one started separately on coupling.exchange_dir"));
   k.push_back(real("coupling.grid_depth", "m", 0.6, 0.05, 100.0,
                    "the sampled grid spans y from -grid_depth to the still-water line; deeper points "
                    "take the deepest level"));

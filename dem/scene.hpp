@@ -101,6 +101,10 @@ struct CouplingSettings {
   double domain_length;   // m, along x, centred on the structure axis
   double grid_spacing;    // m, of the sampled velocity grid
   double grid_depth;      // m, the grid spans y from -grid_depth to the still-water line
+  int exchange_steps;          // probe mode: steps between exchanges
+  double timeout;              // s, probe mode: longest wait for the partner
+  std::string exchange_dir;    // probe mode: absolute, or "" for a temporary directory
+  bool spawn_partner;          // probe mode: start coupling/foam_partner.py ourselves
 };
 
 enum class FractureMode { kOff, kOn, kAuto };

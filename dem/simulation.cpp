@@ -165,6 +165,13 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   double awake_sum = 0.0, last_flush = 0.0;
   summary.status = "complete";
 
+  // a failure mid-run: the file keeps every step so far, marked failed
+  auto fail = [&](const std::string& message) {
+    if (state.drag_exchange) state.drag_exchange->finish();
+    progress.done();
+    summary.wall_time_s = wall();
+    recorder.finish("failed", message, summary.wall_time_s);
+  };
   try {
     while (state.step < total_steps) {
       if (g_interrupted) {
@@ -198,11 +205,13 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       }
     }
   } catch (const NumericalError& e) {
-    progress.done();
-    summary.wall_time_s = wall();
-    recorder.finish("failed", e.what(), summary.wall_time_s);
+    fail(e.what());
+    throw;
+  } catch (const CouplingError& e) {  // the OpenFOAM partner failed or timed out: keep the run so far
+    fail(e.what());
     throw;
   }
+  if (state.drag_exchange) state.drag_exchange->finish();
   progress.done();
 
   summary.steps = state.step;

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "dem/diagnostics.hpp"
+#include "dem/drag_exchange.hpp"
 #include "dem/flow_field.hpp"
 #include "dem/joint_loads.hpp"
 #include "dem/load_cell.hpp"
@@ -26,11 +27,13 @@ struct StageTimes {
   double activation = 0;  // update_activation
   double health = 0;      // check_health
   double fracture = 0;    // check_fracture
+  double coupling = 0;    // exchange_drag (coupling.mode = "probe")
 };
 
 struct State {
   std::unique_ptr<World> world;     // Bullet bodies; poses and velocities change every step
   std::unique_ptr<FlowField> flow;  // water velocity model; follows the structure
+  std::unique_ptr<DragExchange> drag_exchange;  // exchanged drag (probe mode), else null
 
   double time = 0.0;  // s, simulated; written by step()
   long step = 0;      // completed steps; written by step()

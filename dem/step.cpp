@@ -38,7 +38,9 @@ void move_structure(const Scene& scene, State& state, double t_next) {
 // neither gravity nor water forces from Bullet's integration, so forces on them
 // are wasted work; activation.skip_asleep = false does it anyway, to measure that)
 void apply_water_forces(const Scene& scene, State& state) {
-  const WaterParams water = water_params(scene.water);
+  WaterParams water = water_params(scene.water);
+  // exchanged drag replaces the DEM's own (dem/drag_exchange.hpp)
+  if (state.drag_exchange) water.drag_coefficient = water.skin_friction_coefficient = 0.0;
   for (FloeBody& floe : state.world->floes()) {
     btRigidBody& body = *floe.body;
     if (!body.isInWorld() || (!body.isActive() && scene.activation.skip_asleep)) continue;
@@ -46,6 +48,10 @@ void apply_water_forces(const Scene& scene, State& state) {
     const Wrench w = water_wrench(floe.shape->prism, motion, *state.flow, water, floe.shape->damping);
     body.applyCentralForce(btVector3(w.force.x(), w.force.y(), w.force.z()));
     body.applyTorque(btVector3(w.torque.x(), w.torque.y(), w.torque.z()));
+    if (state.drag_exchange) {
+      const Eigen::Vector3d d = state.drag_exchange->drag(static_cast<int>(&floe - state.world->floes().data()));
+      body.applyCentralForce(btVector3(d.x(), d.y(), d.z()));
+    }
     // Bullet adds gravity to awake bodies only, but a sleeping body touching an
     // awake one enters the contact solve with its applied forces: without its
     // weight the buoyancy alone would lift it there
@@ -85,6 +91,7 @@ void step(const Scene& scene, State& state) {
   StageTimes& times = state.stage_times;
   state.fracture_events.clear();
   { StageTimer t(times.activation); update_lattice_region(scene, state); }
+  if (state.drag_exchange) { StageTimer t(times.coupling); state.drag_exchange->update(scene, state); }
   LoadCell cell;
   for (int k = 1; k <= scene.time.substeps; ++k) {
     const double t_next = t0 + k * h;

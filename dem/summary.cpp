@@ -21,8 +21,9 @@ std::string summary_table(const RunSummary& s) {
                      s.wall_time_s > 0 ? s.steps / s.wall_time_s : 0.0, s.mean_awake);
   const StageTimes& t = s.stage_times;
   out += fmt::format("  wall time by stage: Bullet {:.1f} s, water {:.1f} s, activation {:.1f} s, load cell {:.1f} s, "
-                     "other {:.1f} s\n", t.bullet, t.water, t.activation, t.load_cell,
-                     s.wall_time_s - t.bullet - t.water - t.activation - t.load_cell);
+                     "{}other {:.1f} s\n", t.bullet, t.water, t.activation, t.load_cell,
+                     t.coupling > 0 ? fmt::format("OpenFOAM exchanges {:.1f} s, ", t.coupling) : "",
+                     s.wall_time_s - t.bullet - t.water - t.activation - t.load_cell - t.coupling);
   if (!s.validation.is_null()) {
     const nlohmann::json& v = s.validation;
     out += fmt::format("  validation {}: {} = {:.4f} (reference {:.4f}), error {:+.1f} % (tolerance {:.0f} %): {}\n",
@@ -100,7 +101,7 @@ nlohmann::json summary_json(const RunSummary& s) {
   const StageTimes& t = s.stage_times;
   j["stage_time_s"] = {{"structure", t.structure}, {"water", t.water},         {"bullet", t.bullet},
                        {"load_cell", t.load_cell}, {"activation", t.activation}, {"health", t.health},
-                       {"fracture", t.fracture}};
+                       {"fracture", t.fracture}, {"coupling", t.coupling}};
   return j;
 }
 

@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cmath>
+#include <cstdlib>
 #include <thread>
 
 #include "coupling/exchange_protocol.hpp"
@@ -189,4 +191,52 @@ TEST(ExchangeProtocol, CorruptResponseIsAnError) {
   fs::remove(dir + "/" + response_name(120));  // let the partner thread finish
   p.join();
   EXPECT_NE(msg.find("half-written"), std::string::npos) << msg;
+}
+
+namespace {
+
+// the real partner script, without OpenFOAM (--still-water), as a separate process
+void start_partner(const std::string& dir) {
+  const std::string cmd = "/usr/bin/python3 " + std::string(ICEDEM_SOURCE_DIR) +
+                          "/coupling/foam_partner.py --exchange " + dir +
+                          " --still-water --case-hash hash1 --idle-timeout 20 > " + dir + ".partner.log 2>&1 &";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+}
+
+}  // namespace
+
+TEST(ExchangeProtocol, PartnerProcessAnswersWithTheDragLaw) {
+  const std::string dir = dir_for("exchange_python");
+  ExchangeChannel channel(dir, "hash1", std::chrono::seconds(20));
+  start_partner(dir);
+  channel.wait_for_partner();
+  const ExchangeRequest request = sample_request();
+  const ExchangeResponse r = channel.exchange(request);
+  channel.stop();
+  ASSERT_EQ(r.floes.size(), 2u);
+  // still water: F = -1/2 rho (C_d frontal + C_f bottom) |v_h| v_h
+  const ExchangeFloe& f = request.floes[0];
+  const double k = 0.5 * 1000 * (1.0 * f.frontal_area + 0.0092 * f.bottom_area) * std::hypot(0.01, -0.002);
+  EXPECT_NEAR(r.floes[0].force.x(), -k * 0.01, 1e-15);
+  EXPECT_NEAR(r.floes[0].force.z(), -k * -0.002, 1e-15);
+  EXPECT_EQ(r.floes[0].force.y(), 0.0);
+  EXPECT_EQ(r.floes[1].force, Eigen::Vector3d::Zero());  // at rest: no drag
+}
+
+TEST(ExchangeProtocol, RestartedPartnerAnswersThePendingRequest) {
+  const std::string dir = dir_for("exchange_restart");
+  ExchangeChannel channel(dir, "hash1", std::chrono::seconds(20));
+  // the partner "crashed" before the request: the request waits in the directory
+  // until a new partner starts, picks up the run from dem.hello and answers it
+  write_atomic(dir + "/partner.hello", format_hello({"partner", channel.run(), "hash1"}));
+  channel.wait_for_partner();
+  std::thread later([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    start_partner(dir);
+  });
+  const ExchangeResponse r = channel.exchange(sample_request());
+  later.join();
+  channel.stop();
+  EXPECT_EQ(r.step, 120);
+  EXPECT_EQ(r.floes.size(), 2u);
 }

@@ -12,7 +12,12 @@
 #include <regex>
 #include <sstream>
 
+#include <H5Cpp.h>
+
+#include <thread>
+
 #include "coupling/coupled_flow.hpp"
+#include "coupling/exchange_protocol.hpp"
 #include "coupling/foam_runner.hpp"
 #include "dem/constants.hpp"
 #include "dem/initial_state.hpp"
@@ -149,6 +154,51 @@ TEST(FoamCase, CoupledTowRunsEndToEndOnTheSolvedGrid) {
   ASSERT_TRUE(s.has_statistics) << s.statistics_note;
   EXPECT_TRUE(std::isfinite(s.surge.mean));
   EXPECT_GT(s.surge.max, 0.0);
+}
+
+TEST(FoamCase, ProbeModeTowExchangesWithTheOpenFoamPartner) {
+  // the partner (coupling/foam_partner.py, spawned) samples the solved case with
+  // OpenFOAM's probes at every exchange: every 25 steps over 8 s, 16 exchanges
+  const Scene scene = with_cache({"flow.model=coupled", "coupling.mode=probe", "coupling.exchange_steps=25",
+                                  "channel.start_x=6.0", "channel.length=3.0", "channel.width=3.0",
+                                  "structure.start_x=5.5", "time.duration=8", "stats.window_start_travel=0.1"});
+  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/probe_tow.h5", false, "test"});
+  EXPECT_EQ(s.status, "complete");
+  EXPECT_GT(s.stage_times.coupling, 0.0);  // the exchanges happened (and took OpenFOAM's time)
+  ASSERT_TRUE(s.has_statistics) << s.statistics_note;
+  EXPECT_TRUE(std::isfinite(s.surge.mean));
+}
+
+TEST(FoamCase, ExchangeTimeoutStopsTheRunAndKeepsItsFile) {
+  // an external partner that says hello and then never answers
+  const std::string dir = std::string(ICEDEM_TEST_TMP) + "/exchange_silent";
+  std::filesystem::remove_all(dir);
+  const Scene scene = with_cache({"flow.model=coupled", "coupling.mode=probe", "coupling.partner=external",
+                                  "coupling.exchange_dir=" + dir, "coupling.timeout=2", "time.duration=5"});
+  std::thread silent([&] {
+    const std::filesystem::path hello = std::filesystem::path(dir) / "dem.hello";
+    for (int i = 0; i < 2000 && !std::filesystem::exists(hello); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::ifstream in(hello);
+    const ExchangeHello h = parse_hello(std::string((std::istreambuf_iterator<char>(in)), {}), hello.string());
+    write_atomic(dir + "/partner.hello", format_hello({"partner", h.run, h.case_hash}));
+  });
+  const std::string out = std::string(ICEDEM_TEST_TMP) + "/probe_timeout.h5";
+  std::string msg;
+  try {
+    run_simulation(scene, RunOptions{out, false, "test"});
+  } catch (const CouplingError& e) {
+    msg = e.what();
+  }
+  silent.join();
+  EXPECT_NE(msg.find("exchange timeout at step 0"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(dir), std::string::npos) << msg;
+  // the HDF5 file was written and closed with the failure
+  H5::H5File f(out, H5F_ACC_RDONLY);
+  H5::Attribute status = f.openGroup("/meta").openAttribute("status");
+  std::string text;
+  status.read(status.getStrType(), text);
+  EXPECT_EQ(text, "failed");
 }
 
 int main(int argc, char** argv) {
