@@ -7,6 +7,7 @@
 //                                               joint CFM for a target elastic modulus
 //   icedem foam-case SCENARIO.toml -o DIR       a runnable OpenFOAM case (DIR/Allrun)
 //   icedem foam-solve SCENARIO.toml             solve it into the cache (flow.model = "coupled")
+//   icedem flow SCENARIO.toml -o OUT.csv        the flow model's water velocity at sample points
 // Exit codes: 0 success, 2 bad input, 3 numerical failure, 4 OpenFOAM coupling failure,
 // 130 interrupted, 1 other.
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "coupling/foam_runner.hpp"
 #include "dem/calibration.hpp"
 #include "dem/cone_geometry.hpp"
+#include "dem/constants.hpp"
 #include "dem/errors.hpp"
 #include "dem/initial_state.hpp"
 #include "dem/scenario.hpp"
@@ -94,6 +96,34 @@ int foam_solve_command(const std::string& scenario_path, const std::vector<std::
   return kExitOk;
 }
 
+// The scene's flow model (flow.model) sampled around the structure at its start
+// position, moving at its speed: radial lines at the waterline (1 mm below it)
+// and at half the keel depth, at 0 (bow), 45, 90 (shoulder), 135 and 180 degrees
+// from +x, from 1 cm outside the hull to 3 m; a CSV of (line, angle_deg, r, x, y,
+// z, ux, uy, uz), tank frame, m and m/s.
+int flow_command(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& output) {
+  const Scene scene = load_scene(scenario_path, sets);
+  const std::unique_ptr<FlowField> flow = make_flow(scene);
+  const Eigen::Vector3d axis(scene.structure.start_x, 0.0, scene.structure.start_z);
+  flow->set_structure(axis, Eigen::Vector3d(scene.structure.speed, 0.0, 0.0));
+  std::ofstream out(output);
+  if (!out) throw std::runtime_error(fmt::format("{}: cannot write", output));
+  out << "depth,angle_deg,r,x,y,z,ux,uy,uz\n";
+  const double keel = scene.structure.profile.front().y;
+  for (double y : {-0.001, keel / 2})
+    for (double angle : {0.0, 45.0, 90.0, 135.0, 180.0}) {
+      const double a = angle * kPi / 180, r0 = profile_radius(scene.structure.profile, y) + 0.01;
+      for (double r = r0; r <= 3.0 + 1e-9; r += 0.01) {
+        const Eigen::Vector3d p = axis + Eigen::Vector3d(r * std::cos(a), y, r * std::sin(a));
+        const Eigen::Vector3d u = flow->velocity(p);
+        out << fmt::format("{:.4g},{:.0f},{:.4f},{:.6f},{:.6f},{:.6f},{:.9g},{:.9g},{:.9g}\n", -y, angle, r, p.x(), p.y(),
+                           p.z(), u.x(), u.y(), u.z());
+      }
+    }
+  std::cout << fmt::format("{}: flow.model {} sampled on 10 radial lines\n", output, scene.flow.model == FlowModel::kCoupled ? "coupled" : "analytic");
+  return kExitOk;
+}
+
 int calibrate_command(const std::string& scenario_path, const std::vector<std::string>& sets, double target,
                       const std::string& write_path) {
   const Scene scene = load_scene(scenario_path, sets);
@@ -161,6 +191,11 @@ int main(int argc, char** argv) {
   foam_solve->add_option("scenario", scenario, "scenario TOML file")->required();
   foam_solve->add_option("--set", sets, "override a scenario key")->take_all();
 
+  CLI::App* flow_cmd = app.add_subcommand("flow", "sample the scenario's flow model around the structure (CSV)");
+  flow_cmd->add_option("scenario", scenario, "scenario TOML file")->required();
+  flow_cmd->add_option("--set", sets, "override a scenario key")->take_all();
+  flow_cmd->add_option("-o,--output", output, "CSV file")->required();
+
   double target_modulus = 0;
   std::string write_path;
   CLI::App* calibrate = app.add_subcommand(
@@ -184,6 +219,7 @@ int main(int argc, char** argv) {
     if (*calibrate) return calibrate_command(scenario, sets, target_modulus, write_path);
     if (*foam_case) return foam_case_command(scenario, sets, output);
     if (*foam_solve) return foam_solve_command(scenario, sets);
+    if (*flow_cmd) return flow_command(scenario, sets, output);
     std::cout << keys_markdown();
     return kExitOk;
   } catch (const InputError& e) {
