@@ -7,11 +7,12 @@
 namespace icedem {
 
 /// Advance the state by scene.time.dt: put the lattices of floes near the
-/// structure in place of their stand-ins; per Bullet substep, move the
+/// structure in place of their stand-ins; exchange the drag with the OpenFOAM
+/// partner when one is due (coupling.mode = "probe"); per Bullet substep, move the
 /// structure, apply water forces, let Bullet collide/solve/integrate, read the
 /// load cell and check the joints for fracture; then average the load over the
 /// step, update sleeping/freezing and check for blow-ups.
-/// Throws NumericalError on a blow-up.
+/// Throws NumericalError on a blow-up, CouplingError if the partner fails.
 void step(const Scene& scene, State& state);
 
 /// The water stage: buoyancy, drag and damping on every awake floe (Bullet
