@@ -109,6 +109,9 @@ def write_report(a, results, setup, V):
         lines.append(f"| {name} | {fmt(s['mean_fx_N'])} | {fmt(s['max_fx_N'])} | {fmt(s['std_fx_N'])} | "
                      f"{fmt(s['peak_interval_s'])} | {r['wall']:.1f} | {s['realtime_factor']:.1f} | "
                      f"{100 * dm:+.1f} % | {100 * dx:+.1f} % |")
+    water = {n: 1e6 * r["summary"]["stage_time_s"]["water"] / max(r["summary"]["steps"], 1) for n, r in results.items()}
+    lines += ["", "Water stage (buoyancy, drag, damping with the flow model) per step: "
+              + ", ".join(f"{n} {w:.0f} us" for n, w in water.items()) + "."]
     probe = results.get("OpenFOAM, probe mode")
     if probe:
         st = probe["summary"]["stage_time_s"]
