@@ -32,11 +32,17 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def run(cmd, env=None):
+    """Runs a command; returns its wall time and the CPU time of it and its
+    children (OpenFOAM, the partner), s. Costs are compared by CPU time: the wall
+    time of one run drifts by 2x on a shared machine."""
     t0 = time.monotonic()
+    before = os.times()
     p = subprocess.run(cmd, capture_output=True, text=True, env=env)
+    after = os.times()
     if p.returncode != 0:
         sys.exit(f"compare_flow_models: {' '.join(cmd)} failed ({p.returncode}):\n{p.stderr[-2000:]}")
-    return time.monotonic() - t0
+    cpu = (after.children_user - before.children_user) + (after.children_system - before.children_system)
+    return time.monotonic() - t0, cpu
 
 
 def read_flow(path):
@@ -71,10 +77,10 @@ def main():
         tag = name.split(",")[-1].strip().replace(" ", "_")
         h5, js, fl = (os.path.join(work, f"{tag}.{e}") for e in ("h5", "json", "csv"))
         args = [x for s in common + sets for x in ("--set", s)]
-        wall = run([a.icedem, "run", a.scenario, "-q", "-o", h5, "--summary-json", js] + args, env)
+        wall, cpu = run([a.icedem, "run", a.scenario, "-q", "-o", h5, "--summary-json", js] + args, env)
         run([a.icedem, "flow", a.scenario, "-o", fl] + [x for s in sets for x in ("--set", s)], env)
-        results[name] = {"summary": json.load(open(js)), "h5": h5, "flow": read_flow(fl), "wall": wall}
-        print(f"{name}: {wall:.1f} s", file=sys.stderr)
+        results[name] = {"summary": json.load(open(js)), "h5": h5, "flow": read_flow(fl), "wall": wall, "cpu": cpu}
+        print(f"{name}: {wall:.1f} s wall, {cpu:.1f} s CPU", file=sys.stderr)
 
     with h5py.File(results["analytic potential"]["h5"]) as f:
         V = tomllib.loads(f["meta"].attrs["scenario"])["structure"]["speed"]  # m/s
@@ -98,17 +104,20 @@ def write_report(a, results, setup, V):
              f"{f' --duration {a.duration:g}' if a.duration else ''} --seed {a.seed}` on "
              f"`{os.path.relpath(a.scenario, ROOT)}`. One core per run.", "",
              f"OpenFOAM set-up (coarse mesh: blockMesh, snappyHexMesh, potentialFoam, grad, probes on the grid) "
-             f"from an empty cache: {setup:.1f} s.", "",
-             "| model | mean surge N | max N | std N | peak spacing s | wall s | x real time | mean vs analytic | max vs analytic |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             f"from an empty cache: {setup[0]:.1f} s wall, {setup[1]:.1f} s CPU.", "",
+             "Costs are CPU times (of icedem and, in probe mode, the partner and OpenFOAM); wall times "
+             "drift on a shared machine.", "",
+             "| model | mean surge N | max N | std N | peak spacing s | CPU s | x real time (CPU) | CPU / analytic | mean vs analytic | max vs analytic |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    cpu0 = results["analytic potential"]["cpu"]
     for name, r in results.items():
         s = r["summary"]
         fmt = lambda v: "n/a" if v is None else f"{v:.2f}"
         dm = (s["mean_fx_N"] - pot["mean_fx_N"]) / pot["mean_fx_N"] if s["mean_fx_N"] is not None else float("nan")
         dx = (s["max_fx_N"] - pot["max_fx_N"]) / pot["max_fx_N"] if s["max_fx_N"] is not None else float("nan")
         lines.append(f"| {name} | {fmt(s['mean_fx_N'])} | {fmt(s['max_fx_N'])} | {fmt(s['std_fx_N'])} | "
-                     f"{fmt(s['peak_interval_s'])} | {r['wall']:.1f} | {s['realtime_factor']:.1f} | "
-                     f"{100 * dm:+.1f} % | {100 * dx:+.1f} % |")
+                     f"{fmt(s['peak_interval_s'])} | {r['cpu']:.1f} | {s['sim_time_s'] / r['cpu']:.1f} | "
+                     f"{r['cpu'] / cpu0:.2f} | {100 * dm:+.1f} % | {100 * dx:+.1f} % |")
     water = {n: 1e6 * r["summary"]["stage_time_s"]["water"] / max(r["summary"]["steps"], 1) for n, r in results.items()}
     lines += ["", "Water stage (buoyancy, drag, damping with the flow model) per step: "
               + ", ".join(f"{n} {w:.0f} us" for n, w in water.items()) + "."]
@@ -148,8 +157,9 @@ def plots(a, results, V):
         ax.axhline(1, color="grey", lw=0.5)
         ax.set_xlabel("distance from the axis r (m)")
         ax.set_ylabel("|u - V| / V")
-        ax.set_title(f"relative water speed, {title} (0 deg: bow, 90: shoulder, 180: stern)")
+        ax.set_title(f"relative water speed, {title}", fontsize=9)
         ax.legend(fontsize=6)
+    fig.suptitle("0 deg: bow (ahead), 90: shoulder, 180: stern (the bow and stern lines coincide)", fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(a.out, "flow_velocity.png"), dpi=120)
 
