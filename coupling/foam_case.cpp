@@ -18,6 +18,16 @@ namespace fs = std::filesystem;
 
 namespace icedem {
 
+namespace {
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("{}: cannot read", p.string()));
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
 FoamCaseSpec foam_case_spec(const Scene& scene) {
   const CouplingSettings& c = scene.coupling;
   // background cell and hull refinement per mesh (openfoam-notes.md: coarse ~15k cells,
@@ -43,10 +53,7 @@ std::string foam_case_inputs(const FoamCaseSpec& s) {
   for (const auto& e : fs::recursive_directory_iterator(tpl))
     if (e.is_regular_file()) files.push_back(e.path());
   std::sort(files.begin(), files.end());
-  for (const fs::path& f : files) {
-    std::ifstream in(f, std::ios::binary);
-    t += "file " + fs::relative(f, tpl).string() + "\n" + std::string(std::istreambuf_iterator<char>(in), {});
-  }
+  for (const fs::path& f : files) t += "file " + fs::relative(f, tpl).string() + "\n" + read_file(f);
   return t;
 }
 
@@ -74,12 +81,6 @@ std::string foam_template_dir() {
 }
 
 namespace {
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw std::runtime_error(fmt::format("{}: cannot read", p.string()));
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 void write_file(const fs::path& p, const std::string& text) {
   fs::create_directories(p.parent_path());

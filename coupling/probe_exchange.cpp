@@ -18,6 +18,7 @@
 #include "coupling/foam_runner.hpp"
 #include "dem/constants.hpp"
 #include "dem/errors.hpp"
+#include "dem/polygon.hpp"
 #include "dem/state.hpp"
 
 extern char** environ;
@@ -92,16 +93,11 @@ void ProbeDragExchange::update(const Scene& scene, const State& state) {
     const btRigidBody& b = *floes[i].body;
     if (!b.isInWorld() || !b.isActive()) continue;  // sleeping floes are at rest: no drag
     const Polygon& outline = floes[i].shape->outline;
-    double perimeter = 0, area = 0;
-    for (std::size_t k = 0; k < outline.size(); ++k) {
-      const Eigen::Vector2d& p = outline[k];
-      const Eigen::Vector2d& q = outline[(k + 1) % outline.size()];
-      perimeter += (q - p).norm();
-      area += 0.5 * (p.x() * q.y() - q.x() * p.y());
-    }
+    double perimeter = 0;
+    for (std::size_t k = 0; k < outline.size(); ++k) perimeter += (outline[(k + 1) % outline.size()] - outline[k]).norm();
     // the mean width of a convex outline seen from a random direction is perimeter / pi (Cauchy)
     r.floes.push_back({static_cast<int>(i), to_eigen(b.getCenterOfMassPosition()), to_eigen(b.getLinearVelocity()),
-                       draft * perimeter / kPi, std::abs(area)});
+                       draft * perimeter / kPi, area(outline)});
   }
   const ExchangeResponse response = channel_->exchange(r);
   drag_.assign(floes.size(), Eigen::Vector3d::Zero());
