@@ -6,11 +6,15 @@
                                 f_ii, 95 % confidence bars over seeds (Figs. 8, 12, 16)
   history_<scenario>.png        surge load time histories at f_ii = 0.5 for each f_is,
                                 first seed (Figs. 9, 13, 17)
-  topview_<scenario>.png        floes and cone seen from above at three times, f_ii = 0.5,
+  topview_<scenario>.png        floes and cone seen from above at the start, at the snapshot
+                                nearest the largest load and at the end, f_ii = 0.5,
                                 f_is = 0.2, first seed (Figs. 4, 11, 14, 18)
   frontview_<scenario>.png      front view of floe trajectories: heave against sway relative
                                 to the cone axis, of every body within 1 m ahead or behind
                                 the axis, from the snapshots of the same run (Fig. 10)
+  spectrum_<scenario>.png       ensemble load spectra (Welch, mean over seeds) at f_ii = 0.5
+                                for each f_is, with the floe-passage frequency v/L marked
+                                (the paper's "peaks at about 4 s intervals")
 
     scripts/sweep_figures.py SWEEP.toml [--out DIR] [--figures DIR]
 """
@@ -101,10 +105,15 @@ def yaw_of(q):
     return np.arctan2(2 * (w * y + x * z), 1 - 2 * (y * y + x * x))
 
 
+def scenario_of(h5):
+    """The resolved scenario of a run, from /meta."""
+    import tomllib
+    return tomllib.loads(h5["/meta"].attrs["scenario"])
+
+
 def waterline_radius(h5):
     """The structure's radius at the waterline, from the resolved scenario in /meta."""
-    import tomllib
-    profile = tomllib.loads(h5["/meta"].attrs["scenario"])["structure"]["profile"]
+    profile = scenario_of(h5)["structure"]["profile"]
     ys = [p[0] for p in profile]
     rs = [p[1] for p in profile]
     return float(np.interp(0.0, ys, rs))
@@ -123,7 +132,11 @@ def topview(runs, out, scenario, path):
         t = h["/load/time"][:]
         spos = h["/structure/position"][:]
         radius = waterline_radius(h)
-        picks = [int(round(i)) for i in np.linspace(0, len(st) - 1, 3)]
+        surge = h["/load/surge"][:]
+        # start, the snapshot nearest the largest load (the paper's Fig. 14 shows the pack
+        # when the load peaks), end
+        t_max = t[int(np.argmax(surge))]
+        picks = [0, int(np.argmin(np.abs(st - t_max))), len(st) - 1]
         fig, axes = plt.subplots(3, 1, figsize=(11, 8), sharex=True)
         for ax, k in zip(axes, picks):
             pos = h["/snapshots/position"][k]
@@ -141,7 +154,8 @@ def topview(runs, out, scenario, path):
             ax.add_patch(plt.Circle((spos[i, 0], spos[i, 2]), radius, color="tab:red", alpha=0.6))
             ax.set_aspect("equal")
             ax.set_ylabel("z, m")
-            ax.set_title(f"{scenario}, t = {st[k]:.0f} s", fontsize=9)
+            ax.set_title(f"{scenario}, t = {st[k]:.0f} s, surge load {surge[i]:.0f} N"
+                         + (f" (largest {surge.max():.0f} N at {t_max:.0f} s)" if k == picks[1] else ""), fontsize=9)
             ax.autoscale_view()
         axes[-1].set_xlabel("x, m (towing direction)")
     save(fig, path)
@@ -177,6 +191,43 @@ def front_view(runs, out, scenario, path):
     return True
 
 
+def spectrum(runs, out, rows, scenario, path):
+    """Ensemble spectra of results.h5 at f_ii = 0.5 (or the scenario's), one line per f_is."""
+    from sweeplib import aggregate as agg
+    idx = [i for i, r in enumerate(rows) if r["scenario"] == scenario and float(r.get(FII) or 0.5) == 0.5]
+    ref = reference_run(runs, out, scenario)
+    if not idx or ref is None or not os.path.isfile(os.path.join(out, "results.h5")):
+        return False
+    with h5py.File(os.path.join(out, ref.path, "run.h5"), "r") as h:
+        sc = scenario_of(h)
+    passage_hz = sc["structure"]["speed"] / sc["ice"]["floe_size"]
+    fig, ax = plt.subplots(figsize=(8, 4))
+    drawn = False
+    with h5py.File(os.path.join(out, "results.h5"), "r") as h:
+        for i in idx:
+            if f"spectra/{i}" not in h:
+                continue
+            f, p = h[f"spectra/{i}/frequency"][:], h[f"spectra/{i}/power"][:]
+            k = f > 0
+            ax.semilogy(f[k], p[k], lw=1.0, label=f"f_is = {rows[i].get(FIS) or '-'} ({rows[i]['seeds']} seeds), "
+                        f"peak {float(rows[i]['spectral_peak_period_s']):.2f} s")
+            drawn = True
+    if not drawn:
+        plt.close(fig)
+        return False
+    ax.axvline(passage_hz, color="k", ls="--", lw=0.8, label=f"floe passage v/L = {passage_hz:.3f} Hz "
+               f"({1 / passage_hz:.2f} s)")
+    ax.axvspan(0, agg.MIN_PEAK_HZ, color="0.9", label="pack drift, not searched for the peak")
+    ax.set_xlim(0, 1.0)
+    ax.set_xlabel("frequency, Hz")
+    ax.set_ylabel("surge load power, N$^2$/Hz")
+    ax.set_title(f"{scenario}: ensemble spectra of the surge load, f_ii = 0.5", fontsize=9)
+    ax.legend(fontsize=7)
+    ax.grid(alpha=0.3, which="both")
+    save(fig, path)
+    return True
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("sweep")
@@ -193,7 +244,8 @@ def main():
         for kind, fn in (("loads_vs_fis", lambda p: loads_vs_fis(rows, scenario, p)),
                          ("history", lambda p: history(runs, out, scenario, p)),
                          ("topview", lambda p: topview(runs, out, scenario, p)),
-                         ("frontview", lambda p: front_view(runs, out, scenario, p))):
+                         ("frontview", lambda p: front_view(runs, out, scenario, p)),
+                         ("spectrum", lambda p: spectrum(runs, out, rows, scenario, p))):
             p = os.path.join(figs, f"{kind}_{scenario}.png")
             if fn(p):
                 written.append(p)

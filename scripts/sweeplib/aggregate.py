@@ -4,12 +4,16 @@ grid combination, over its seeds):
 - mean over seeds of the mean surge load and of the max surge load, each with a
   95 % confidence interval (Student's t with n - 1 degrees of freedom; none for
   one seed);
+- a Gumbel (type I) fit of the seed maxima by moments (physics-targets.md 7),
+  for extrapolating the max to longer records;
 - the mean peak interval of the load (icedem's summary), and the spectral peak:
-  the frequency of the largest Welch power of the surge load over the analysis
-  window, averaged over seeds (its period beside it);
+  the frequency of the largest power of the ensemble spectrum (the Welch spectra
+  of the seeds' surge loads over their analysis windows, averaged), searched
+  above MIN_PEAK_HZ (its period beside it);
 - breaks by failure mode, summed over seeds.
 
-Written as one table: CSV and HDF5 (a compound dataset /configurations).
+Written as one table: CSV and HDF5 (a compound dataset /configurations, and the
+ensemble spectra under /spectra/<row index>).
 """
 import csv
 import json
@@ -21,6 +25,13 @@ import numpy as np
 from scipy import signal, stats
 
 MODES = ("compression", "shear", "bending", "tension", "in_plane_bending")
+SEGMENT_S = 60.0
+# The load spectrum of a pack is red: its largest power sits at the lowest bin,
+# the slow build-up and release of the compacted pack over tens of seconds. The
+# floe-passage peak the paper reports (L/v = 4.3 s small, 8.6 s large floes) is
+# searched above 0.05 Hz: periods under 20 s, more than twice the larger floes'.
+MIN_PEAK_HZ = 0.05
+EULER_GAMMA = 0.5772156649
 
 
 def mean_ci(values, level=0.95):
@@ -36,36 +47,77 @@ def mean_ci(values, level=0.95):
     return m, half
 
 
-def spectral_peak(t, x, segment_s=60.0):
-    """Frequency (Hz) of the largest Welch power of x(t) (uniform steps), the mean removed,
-    segments of segment_s (or the whole record if shorter), Hann window, half overlap."""
+def welch_spectrum(t, x, segment_s=SEGMENT_S):
+    """(frequencies Hz, power N^2/Hz) of x(t) (uniform steps): Welch, Hann window, half
+    overlap, segments of segment_s (or the whole record if shorter), each detrended
+    linearly so that a slow drift does not leak into the low bins."""
     t = np.asarray(t, dtype=float)
     x = np.asarray(x, dtype=float)
     if len(x) < 8:
-        return float("nan")
+        return np.array([]), np.array([])
     fs = 1.0 / float(np.median(np.diff(t)))
     nperseg = min(len(x), int(round(segment_s * fs)))
-    f, p = signal.welch(x - np.mean(x), fs=fs, nperseg=nperseg)
-    if len(f) < 2:
+    return signal.welch(x, fs=fs, nperseg=nperseg, detrend="linear")
+
+
+def peak_frequency(f, p, min_hz=MIN_PEAK_HZ):
+    """Frequency of the largest power at or above min_hz (nan if there is none)."""
+    f, p = np.asarray(f), np.asarray(p)
+    band = f >= min_hz
+    if not band.any():
         return float("nan")
-    return float(f[1 + np.argmax(p[1:])])  # skip the zero frequency
+    return float(f[band][np.argmax(p[band])])
+
+
+def spectral_peak(t, x, segment_s=SEGMENT_S, min_hz=MIN_PEAK_HZ):
+    """Frequency (Hz) of the largest Welch power of one record above min_hz."""
+    return peak_frequency(*welch_spectrum(t, x, segment_s), min_hz)
+
+
+def ensemble_spectrum(spectra):
+    """Mean of the seeds' spectra that share the most common frequency grid (records
+    shorter than a segment each get their own grid); (f, p) or two empty arrays."""
+    spectra = [(f, p) for f, p in spectra if len(f)]
+    if not spectra:
+        return np.array([]), np.array([])
+    grids = [(len(f), round(float(f[1] - f[0]), 12)) for f, _ in spectra]
+    common = max(set(grids), key=grids.count)
+    same = [s for s, g in zip(spectra, grids) if g == common]
+    return same[0][0], np.mean([p for _, p in same], axis=0)
+
+
+def gumbel_fit(maxima):
+    """Moment fit of a Gumbel type I distribution to sample maxima (physics-targets.md 7):
+    beta = sqrt(6) s / pi, u = mean - 0.5772 beta. (nan, nan) for fewer than 2."""
+    x = np.asarray(maxima, dtype=float)
+    if len(x) < 2:
+        return float("nan"), float("nan")
+    beta = math.sqrt(6.0) * float(np.std(x, ddof=1)) / math.pi
+    return float(np.mean(x)) - EULER_GAMMA * beta, beta
+
+
+def mode_key(name):
+    """icedem names failure modes like "in-plane bending"; the table's columns use in_plane_bending."""
+    return name.replace("-", "_").replace(" ", "_")
 
 
 def run_record(run_dir):
-    """What aggregation needs from one finished run: its summary and its load spectrum peak."""
+    """What aggregation needs from one finished run: its summary and its load spectrum."""
     with open(os.path.join(run_dir, "summary.json")) as f:
         s = json.load(f)
-    peak_hz = float("nan")
+    spectrum = (np.array([]), np.array([]))
     start, end = s.get("window_start_s"), s.get("window_end_s")
     if start is not None and end is not None:
         with h5py.File(os.path.join(run_dir, "run.h5"), "r") as h:
             t = h["/load/time"][:]
             x = h["/load/surge"][:]
         sel = (t >= start) & (t <= end)
-        peak_hz = spectral_peak(t[sel], x[sel])
+        spectrum = welch_spectrum(t[sel], x[sel])
     return {"mean_fx_N": s.get("mean_fx_N"), "max_fx_N": s.get("max_fx_N"),
-            "peak_interval_s": s.get("peak_interval_s"), "spectral_peak_hz": peak_hz,
-            "breaks_by_mode": s.get("breaks_by_mode", {}), "realtime_factor": s.get("realtime_factor")}
+            "peak_interval_s": s.get("peak_interval_s"), "spectrum": spectrum,
+            "spectral_peak_hz": peak_frequency(*spectrum) if len(spectrum[0]) else float("nan"),
+            "breaks_by_mode": {mode_key(k): v for k, v in s.get("breaks_by_mode", {}).items()},
+            "realtime_factor": s.get("realtime_factor"), "wall_time_s": s.get("wall_time_s")}
 
 
 def _finite(values):
@@ -73,8 +125,9 @@ def _finite(values):
 
 
 def aggregate(groups):
-    """groups: {config: (scenario, grid tuple, [run records])} -> list of row dicts."""
-    rows = []
+    """groups: {config: (scenario, grid tuple, [run records])} -> (list of row dicts, list of
+    ensemble spectra (f, p), one per row)."""
+    rows, spectra = [], []
     for config, (scenario, grid, records) in groups.items():
         row = {"configuration": config, "scenario": scenario}
         for k, v in grid:
@@ -84,17 +137,27 @@ def aggregate(groups):
             m, half = mean_ci(_finite(r[key] for r in records))
             row[key] = m
             row[key + "_ci95"] = half
+        row["max_fx_gumbel_u_N"], row["max_fx_gumbel_beta_N"] = gumbel_fit(_finite(r["max_fx_N"] for r in records))
         pi = _finite(r["peak_interval_s"] for r in records)
         row["peak_interval_s"] = float(np.mean(pi)) if pi else float("nan")
-        sp = _finite(r["spectral_peak_hz"] for r in records)
-        row["spectral_peak_hz"] = float(np.mean(sp)) if sp else float("nan")
-        row["spectral_peak_period_s"] = 1.0 / row["spectral_peak_hz"] if sp and row["spectral_peak_hz"] > 0 else float("nan")
+        # from the ensemble spectrum when the runs carry theirs; else the mean of the seeds' peaks
+        f, p = ensemble_spectrum(r["spectrum"] for r in records if "spectrum" in r)
+        if len(f):
+            row["spectral_peak_hz"] = peak_frequency(f, p)
+        else:
+            sp = _finite(r.get("spectral_peak_hz") for r in records)
+            row["spectral_peak_hz"] = float(np.mean(sp)) if sp else float("nan")
+        hz = row["spectral_peak_hz"]
+        row["spectral_peak_period_s"] = 1.0 / hz if math.isfinite(hz) and hz > 0 else float("nan")
         for mode in MODES:
             row["breaks_" + mode] = int(sum(r["breaks_by_mode"].get(mode, 0) for r in records))
         rtf = _finite(r["realtime_factor"] for r in records)
         row["realtime_factor"] = float(np.mean(rtf)) if rtf else float("nan")
+        wall = _finite(r.get("wall_time_s") for r in records)
+        row["run_wall_time_s"] = float(np.sum(wall)) if wall else float("nan")
         rows.append(row)
-    return rows
+        spectra.append((f, p))
+    return rows, spectra
 
 
 def write_csv(rows, path):
@@ -105,8 +168,9 @@ def write_csv(rows, path):
         w.writerows(rows)
 
 
-def write_hdf5(rows, path):
-    """One compound dataset /configurations; strings as UTF-8, numbers as f8 (grid values too)."""
+def write_hdf5(rows, path, spectra=()):
+    """One compound dataset /configurations; strings as UTF-8, numbers as f8 (grid values too);
+    each row's ensemble spectrum as /spectra/<row index>/{frequency (Hz), power (N^2/Hz)}."""
     keys = list(dict.fromkeys(k for r in rows for k in r))
     text = {k for k in keys if any(isinstance(r.get(k), str) for r in rows)}
     dtype = [(k, h5py.string_dtype()) if k in text else (k, "f8") for k in keys]
@@ -119,4 +183,11 @@ def write_hdf5(rows, path):
         d = h.create_dataset("configurations", data=data)
         d.attrs["description"] = ("per configuration: mean over seeds of the mean and max surge load (N) "
                                   "with 95 % CI half-widths, peak interval (s), spectral peak (Hz, s), "
-                                  "breaks by mode summed over seeds")
+                                  "Gumbel u and beta of the seed maxima (N), breaks by mode summed over seeds, "
+                                  "summed run wall time (s)")
+        for i, (f, p) in enumerate(spectra):
+            if len(f):
+                g = h.create_group(f"spectra/{i}")
+                g.attrs["configuration"] = rows[i]["configuration"]
+                g.create_dataset("frequency", data=f).attrs["units"] = "Hz"
+                g.create_dataset("power", data=p).attrs["units"] = "N^2/Hz"

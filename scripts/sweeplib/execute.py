@@ -69,7 +69,8 @@ def run_parallel(runs, out_dir, icedem, jobs=0):
         jobs_file = os.path.join(out_dir, "jobs.txt")
         write_jobs(todo, out_dir, icedem, jobs_file)
         cmd = ["parallel", "--will-cite", "--jobs", str(jobs) if jobs > 0 else "100%",
-               "--joblog", os.path.join(out_dir, "joblog.txt"), "--arg-file", jobs_file]
+               # "+": append, so the log keeps every session of a resumed sweep
+               "--joblog", "+" + os.path.join(out_dir, "joblog.txt"), "--arg-file", jobs_file]
         # parallel's exit code counts failed jobs; the statuses below report them one by one
         subprocess.run(cmd, check=False)
     return [status(r, out_dir) for r in runs]

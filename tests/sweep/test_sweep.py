@@ -122,12 +122,55 @@ class Aggregation(unittest.TestCase):
         # Welch with 60 s segments resolves 1/60 Hz: the peak within one bin of 0.233 Hz
         self.assertLess(abs(agg.spectral_peak(t, x) - 0.233), 1 / 60)
 
+    def test_spectral_peak_ignores_the_slow_drift_of_a_pack(self):
+        from sweeplib import aggregate as agg
+        import numpy as np
+        rng = np.random.default_rng(2)
+        t = np.arange(0, 216, 0.02)
+        # a 50 s build-up and release three times as strong as the 8.57 s floe passage
+        x = 20 + 6 * np.sin(2 * np.pi * t / 50) + 2 * np.sin(2 * np.pi * t / 8.57) + rng.normal(0, 1, t.size)
+        f, p = agg.welch_spectrum(t, x)
+        self.assertLess(f[np.argmax(p)], agg.MIN_PEAK_HZ)  # the raw maximum is the drift
+        self.assertLess(abs(agg.peak_frequency(f, p) - 1 / 8.57), 1 / 60)
+
+    def test_ensemble_spectrum_finds_a_peak_no_single_seed_shows(self):
+        from sweeplib import aggregate as agg
+        import numpy as np
+        rng = np.random.default_rng(3)
+        t = np.arange(0, 200, 0.02)
+        # weak 0.2 Hz line under strong noise: averaging 20 seeds' spectra cuts the noise
+        # power's scatter by sqrt(20), so the line stands out in the mean
+        seeds = [agg.welch_spectrum(t, 0.5 * np.sin(2 * np.pi * 0.2 * t + k) + rng.normal(0, 3, t.size))
+                 for k in range(20)]
+        f, p = agg.ensemble_spectrum(seeds)
+        self.assertEqual(len(f), len(seeds[0][0]))
+        self.assertLess(abs(agg.peak_frequency(f, p) - 0.2), 1 / 60)
+        self.assertTrue(np.allclose(p, np.mean([q for _, q in seeds], axis=0)))
+
+    def test_gumbel_moment_fit_recovers_its_parameters(self):
+        from sweeplib import aggregate as agg
+        import numpy as np
+        rng = np.random.default_rng(4)
+        x = rng.gumbel(100.0, 15.0, 20000)
+        u, beta = agg.gumbel_fit(x)
+        # standard errors of moment estimates at n = 20000 are about 0.2 (u) and 0.15 (beta)
+        self.assertAlmostEqual(u, 100.0, delta=1.0)
+        self.assertAlmostEqual(beta, 15.0, delta=1.0)
+        # exact for two values: s = |a - b| / sqrt(2)
+        u2, b2 = agg.gumbel_fit([10.0, 20.0])
+        self.assertAlmostEqual(b2, 6 ** 0.5 * (10 / 2 ** 0.5) / np.pi)
+        self.assertAlmostEqual(u2, 15.0 - 0.5772156649 * b2)
+        self.assertTrue(np.isnan(agg.gumbel_fit([5.0])[0]))
+
     def test_rows_average_over_seeds_and_sum_breaks(self):
         from sweeplib import aggregate as agg
         recs = [{"mean_fx_N": m, "max_fx_N": 10 * m, "peak_interval_s": 4.0, "spectral_peak_hz": 0.25,
-                 "breaks_by_mode": {"bending": b}, "realtime_factor": 5.0} for m, b in ((1.0, 2), (3.0, 1))]
-        rows = agg.aggregate({"s/a=1": ("s", (("a", 1),), recs)})
+                 "breaks_by_mode": {"bending": b, agg.mode_key("in-plane bending"): 1}, "realtime_factor": 5.0,
+                 "wall_time_s": 7.0}
+                for m, b in ((1.0, 2), (3.0, 1))]
+        rows, spectra = agg.aggregate({"s/a=1": ("s", (("a", 1),), recs)})
         self.assertEqual(len(rows), 1)
+        self.assertEqual(len(spectra), 1)
         r = rows[0]
         self.assertEqual(r["seeds"], 2)
         self.assertEqual(r["a"], 1)
@@ -135,7 +178,9 @@ class Aggregation(unittest.TestCase):
         self.assertAlmostEqual(r["max_fx_N"], 20.0)
         self.assertAlmostEqual(r["spectral_peak_period_s"], 4.0)
         self.assertEqual(r["breaks_bending"], 3)
+        self.assertEqual(r["breaks_in_plane_bending"], 2)
         self.assertEqual(r["breaks_shear"], 0)
+        self.assertAlmostEqual(r["run_wall_time_s"], 14.0)
 
 
 class XdmfExport(unittest.TestCase):
@@ -255,16 +300,33 @@ class Execution(unittest.TestCase):
             "friction.ice_structure" = [0.1, 0.2]
         """)
         out = tempfile.mkdtemp(dir=WORK)
+        docs = os.path.join(out, "docs")  # report and figures elsewhere, as scripts/reproduce_paper does
         for cmd in (["sweep", "run", path, "--icedem", ICEDEM], ["sweep", "aggregate", path],
-                    ["sweep_figures.py", path], ["report", path]):
+                    ["sweep_figures.py", path, "--figures", os.path.join(docs, "figures")],
+                    ["report", path, "--report", os.path.join(docs, "report.md"),
+                     "--figures", os.path.join(docs, "figures")]):
             p = subprocess.run([os.path.join(ROOT, "scripts", cmd[0])] + cmd[1:] + ["--out", out],
                                capture_output=True, text=True)
             self.assertEqual(p.returncode, 0, cmd[0] + ": " + p.stdout + p.stderr)
-        text = read(os.path.join(out, "report.md"))
-        ratio = [l for l in text.splitlines() if l.startswith("| ratio larger/smaller floes, mean load")][0]
-        self.assertNotIn("n/a |", ratio.split("|")[3])  # a number, not n/a
+        text = read(os.path.join(docs, "report.md"))
+        import csv
+        with open(os.path.join(out, "results.csv")) as f:
+            rows = {(r["scenario"], r["friction.ice_structure"]): r for r in csv.DictReader(f)}
+        # the ratio row is large / small mean at f_is 0.2, to the 2 decimals it prints
+        ratio = [l for l in text.splitlines() if l.startswith("| ratio larger (rigid) / smaller floes, mean load")][0]
+        expected = float(rows[("large_rigid", "0.2")]["mean_fx_N"]) / float(rows[("small_rigid", "0.2")]["mean_fx_N"])
+        self.assertEqual(ratio.split("|")[3].strip(), f"{expected:.2f}")
+        # every row judged "no" is listed again under the disagreements, with its numbers
+        table = [l for l in text.splitlines() if l.startswith("| ") and l.endswith("| **no** |")]
+        section = text.split("## Where icedem disagrees with the paper")[1].split("## Every configuration")[0]
+        # the short tow's larger floes stay far below the paper's 300 N: judged "no" and listed
+        self.assertLess(float(rows[("large_rigid", "0.2")]["max_fx_N"]), 300)
+        self.assertTrue(any(l.startswith("| larger rigid floes: max load") for l in table))
+        for l in table:
+            self.assertIn(f"**{l.split('|')[1].strip()}**", section)
         self.assertIn("![loads_vs_fis_small_rigid.png](figures/loads_vs_fis_small_rigid.png)", text)
         self.assertEqual(text.count("| small_rigid/"), 2)
+        self.assertIn("4 of 4 runs finished", text)
 
     def test_slurm_script_lists_only_unfinished_runs(self):
         path = sweep_file(TINY)
