@@ -23,6 +23,7 @@ import math
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -92,6 +93,10 @@ class OpenFoamSampler:
             shutil.copytree(os.path.join(case, part), os.path.join(self.work, part))
         self.env = dict(os.environ, WM_PROJECT_DIR=os.environ.get("WM_PROJECT_DIR", "/usr/share/openfoam"))
 
+    def close(self):
+        """Removes the private copy of the case (a mesh per run would fill /tmp in a sweep)."""
+        shutil.rmtree(self.work, ignore_errors=True)
+
     def sample(self, points):
         body = "\n".join(f"            ({p[0]:.9g} {min(p[1], -1e-3):.9g} {p[2]:.9g})" for p in points)
         with open(os.path.join(self.work, "system", "exchangeProbes"), "w") as f:
@@ -148,6 +153,17 @@ def main():
         sampler = OpenFoamSampler(a.case)
         m = re.search(r"^length (\S+)$", open(os.path.join(a.case, "case.inputs")).read(), re.M)
         half_length = float(m.group(1)) / 2
+    # icedem stops a partner that does not see `stop` in time with SIGTERM: leave through finally
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
+    try:
+        return serve(a, sampler, case_hash, half_length)
+    finally:
+        if sampler:
+            sampler.close()
+
+
+def serve(a, sampler, case_hash, half_length):
+    """Answers the DEM's requests until `stop` or the idle timeout; the exit code."""
     d = a.exchange
     run, answered, idle_since = None, set(), time.monotonic()
     while True:

@@ -28,6 +28,7 @@ namespace fs = std::filesystem;
 namespace icedem {
 namespace {
 
+// coupling.exchange_dir, or a fresh temporary directory (removed after a run that succeeds)
 std::string exchange_dir(const Scene& scene) {
   if (!scene.coupling.exchange_dir.empty()) return scene.coupling.exchange_dir;
   std::string tmpl = (fs::temp_directory_path() / "icedem-exchange-XXXXXX").string();
@@ -61,6 +62,7 @@ ProbeDragExchange::ProbeDragExchange(const Scene& scene) {
   const FoamCaseSpec spec = foam_case_spec(scene);
   const std::string case_dir = foam_case_dir(spec, scene.coupling.cache_dir);
   const std::string dir = exchange_dir(scene);
+  if (scene.coupling.exchange_dir.empty()) temporary_dir_ = dir;
   channel_ = std::make_unique<ExchangeChannel>(dir, foam_case_hash(spec),
                                                std::chrono::duration<double>(scene.coupling.timeout));
   if (scene.coupling.spawn_partner) partner_ = spawn_partner(dir, case_dir);
@@ -70,12 +72,12 @@ ProbeDragExchange::ProbeDragExchange(const Scene& scene) {
   try {
     channel_->wait_for_partner();
   } catch (...) {
-    finish();
+    finish(false);
     throw;
   }
 }
 
-ProbeDragExchange::~ProbeDragExchange() { finish(); }
+ProbeDragExchange::~ProbeDragExchange() { finish(false); }
 
 void ProbeDragExchange::update(const Scene& scene, const State& state) {
   if (state.step % scene.coupling.exchange_steps != 0) return;
@@ -109,7 +111,7 @@ Eigen::Vector3d ProbeDragExchange::drag(int body) const {
   return body >= 0 && static_cast<std::size_t>(body) < drag_.size() ? drag_[body] : Eigen::Vector3d::Zero();
 }
 
-void ProbeDragExchange::finish() noexcept {
+void ProbeDragExchange::finish(bool succeeded) noexcept {
   if (finished_) return;
   finished_ = true;
   try {
@@ -118,12 +120,21 @@ void ProbeDragExchange::finish() noexcept {
   }
   if (partner_ > 0) {
     // give the partner a second to see `stop`, then make sure it is gone
-    for (int i = 0; i < 100; ++i) {
-      if (::waitpid(partner_, nullptr, WNOHANG) == partner_) return;
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    bool gone = false;
+    for (int i = 0; i < 100 && !gone; ++i) {
+      gone = ::waitpid(partner_, nullptr, WNOHANG) == partner_;
+      if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    ::kill(partner_, SIGTERM);
-    ::waitpid(partner_, nullptr, 0);
+    if (!gone) {
+      ::kill(partner_, SIGTERM);
+      ::waitpid(partner_, nullptr, 0);
+    }
+  }
+  // a temporary directory of a run that succeeded holds nothing worth keeping (a
+  // sweep would fill /tmp); after a failure its partner.log says what happened
+  if (succeeded && !temporary_dir_.empty()) {
+    std::error_code ec;
+    fs::remove_all(temporary_dir_, ec);
   }
 }
 

@@ -23,7 +23,7 @@ class ProbeDragExchange : public DragExchange {
 
   void update(const Scene& scene, const State& state) override;
   Eigen::Vector3d drag(int body) const override;
-  void finish() noexcept override;
+  void finish(bool succeeded) noexcept override;
 
   /// Exchanges so far and their total wall time, s (for the benchmark).
   int exchanges() const { return exchanges_; }
@@ -34,6 +34,7 @@ class ProbeDragExchange : public DragExchange {
   std::vector<Eigen::Vector3d> drag_;  // N, per World::floes() index
   int exchanges_ = 0;
   bool finished_ = false;
+  std::string temporary_dir_;  // the exchange directory when icedem made it (no coupling.exchange_dir)
 };
 
 /// The drag exchange of a scene: a ProbeDragExchange for flow.model = "coupled"

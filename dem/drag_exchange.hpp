@@ -30,8 +30,9 @@ class DragExchange {
   virtual Eigen::Vector3d drag(int body) const = 0;
 
   /// Ends the exchange (tells the partner to stop); called once at the end of
-  /// the run, also after a failure. Never throws.
-  virtual void finish() noexcept = 0;
+  /// the run, also after a failure (succeeded false: files kept for the
+  /// post-mortem). Never throws.
+  virtual void finish(bool succeeded) noexcept = 0;
 };
 
 /// Makes the exchange of a scene, or nullptr if the scene has none. The coupling

@@ -167,7 +167,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
 
   // a failure mid-run: the file keeps every step so far, marked failed
   auto fail = [&](const std::string& message) {
-    if (state.drag_exchange) state.drag_exchange->finish();
+    if (state.drag_exchange) state.drag_exchange->finish(false);
     progress.done();
     summary.wall_time_s = wall();
     recorder.finish("failed", message, summary.wall_time_s);
@@ -211,7 +211,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
     fail(e.what());
     throw;
   }
-  if (state.drag_exchange) state.drag_exchange->finish();
+  if (state.drag_exchange) state.drag_exchange->finish(summary.status == "complete");
   progress.done();
 
   summary.steps = state.step;

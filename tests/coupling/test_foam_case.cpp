@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <complex>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -162,8 +163,16 @@ TEST(FoamCase, ProbeModeTowExchangesWithTheOpenFoamPartner) {
   const Scene scene = with_cache({"flow.model=coupled", "coupling.mode=probe", "coupling.exchange_steps=25",
                                   "channel.start_x=6.0", "channel.length=3.0", "channel.width=3.0",
                                   "structure.start_x=5.5", "time.duration=8", "stats.window_start_travel=0.1"});
+  // icedem's temporary exchange directory and the partner's copy of the case go to TMPDIR
+  const std::string tmp = std::string(ICEDEM_TEST_TMP) + "/probe_tmpdir";
+  std::filesystem::remove_all(tmp);
+  std::filesystem::create_directories(tmp);
+  ::setenv("TMPDIR", tmp.c_str(), 1);
   const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/probe_tow.h5", false, "test"});
+  ::unsetenv("TMPDIR");
   EXPECT_EQ(s.status, "complete");
+  // a run that succeeded leaves nothing there (a sweep of probe runs would fill /tmp)
+  EXPECT_TRUE(std::filesystem::is_empty(tmp)) << std::filesystem::directory_iterator(tmp)->path();
   EXPECT_GT(s.stage_times.coupling, 0.0);  // the exchanges happened (and took OpenFOAM's time)
   ASSERT_TRUE(s.has_statistics) << s.statistics_note;
   EXPECT_TRUE(std::isfinite(s.surge.mean));
