@@ -16,6 +16,9 @@
                                 for each f_is, with the floe-passage frequency v/L marked
                                 (the paper's "peaks at about 4 s intervals")
 
+and, beside the run the top view shows, run.xdmf and run_views.h5: its snapshots
+for ParaView (scripts/xdmf_snapshots.py).
+
     scripts/sweep_figures.py SWEEP.toml [--out DIR] [--figures DIR]
 """
 import argparse
@@ -154,7 +157,7 @@ def topview(runs, out, scenario, path):
             ax.add_patch(plt.Circle((spos[i, 0], spos[i, 2]), radius, color="tab:red", alpha=0.6))
             ax.set_aspect("equal")
             ax.set_ylabel("z, m")
-            ax.set_title(f"{scenario}, t = {st[k]:.0f} s, surge load {surge[i]:.0f} N"
+            ax.set_title(f"{scenario}, t = {st[k]:.0f} s, surge load {int(round(surge[i]))} N"
                          + (f" (largest {surge.max():.0f} N at {t_max:.0f} s)" if k == picks[1] else ""), fontsize=9)
             ax.autoscale_view()
         axes[-1].set_xlabel("x, m (towing direction)")
@@ -249,6 +252,14 @@ def main():
             p = os.path.join(figs, f"{kind}_{scenario}.png")
             if fn(p):
                 written.append(p)
+        ref = reference_run(runs, out, scenario)
+        if ref is not None:
+            run_h5 = os.path.join(out, ref.path, "run.h5")
+            with h5py.File(run_h5, "r") as h:
+                has_snapshots = "/snapshots/time" in h and len(h["/snapshots/time"]) > 0
+            if has_snapshots:
+                import xdmf_snapshots
+                xdmf_snapshots.main(run_h5)
     for p in written:
         print("wrote", p)
     return 0 if written else 1
