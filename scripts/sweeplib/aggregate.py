@@ -5,7 +5,7 @@ grid combination, over its seeds):
   95 % confidence interval (Student's t with n - 1 degrees of freedom; none for
   one seed);
 - a Gumbel (type I) fit of the seed maxima by moments (physics-targets.md 7),
-  for extrapolating the max to longer records;
+  for extrapolating the max to longer records, and their coefficient of variation;
 - the mean peak interval of the load (icedem's summary), and the spectral peak:
   the frequency of the largest power of the ensemble spectrum (the Welch spectra
   of the seeds' surge loads over their analysis windows, averaged), searched
@@ -137,7 +137,12 @@ def aggregate(groups):
             m, half = mean_ci(_finite(r[key] for r in records))
             row[key] = m
             row[key + "_ci95"] = half
-        row["max_fx_gumbel_u_N"], row["max_fx_gumbel_beta_N"] = gumbel_fit(_finite(r["max_fx_N"] for r in records))
+        maxima = _finite(r["max_fx_N"] for r in records)
+        row["max_fx_gumbel_u_N"], row["max_fx_gumbel_beta_N"] = gumbel_fit(maxima)
+        # coefficient of variation of the seed maxima: seeds for a +-eps mean of maxima at 95 %
+        # are (1.96 CoV / eps)^2 (physics-targets.md 7)
+        row["max_fx_cov"] = (float(np.std(maxima, ddof=1) / np.mean(maxima))
+                             if len(maxima) >= 2 and np.mean(maxima) > 0 else float("nan"))
         pi = _finite(r["peak_interval_s"] for r in records)
         row["peak_interval_s"] = float(np.mean(pi)) if pi else float("nan")
         # from the ensemble spectrum when the runs carry theirs; else the mean of the seeds' peaks

@@ -176,6 +176,7 @@ class Aggregation(unittest.TestCase):
         self.assertEqual(r["a"], 1)
         self.assertAlmostEqual(r["mean_fx_N"], 2.0)
         self.assertAlmostEqual(r["max_fx_N"], 20.0)
+        self.assertAlmostEqual(r["max_fx_cov"], (200 ** 0.5) / 20)  # maxima 10 and 30: s = sqrt(200)
         self.assertAlmostEqual(r["spectral_peak_period_s"], 4.0)
         self.assertEqual(r["breaks_bending"], 3)
         self.assertEqual(r["breaks_in_plane_bending"], 2)
