@@ -5,7 +5,7 @@
   loads_vs_fis_<scenario>.png   average and max surge load against f_is, one line per
                                 f_ii, 95 % confidence bars over seeds (Figs. 8, 12, 16)
   history_<scenario>.png        surge load time histories at f_ii = 0.5 for each f_is,
-                                first seed (Figs. 9, 13, 17)
+                                first seed, from the first ice contact (Figs. 9, 13, 17)
   topview_<scenario>.png        floes and cone seen from above at the start, at the snapshot
                                 nearest the largest load and at the end, f_ii = 0.5,
                                 f_is = 0.2, first seed (Figs. 4, 11, 14, 18)
@@ -23,6 +23,7 @@ for ParaView (scripts/xdmf_snapshots.py).
 """
 import argparse
 import csv
+import json
 import os
 import sys
 
@@ -86,18 +87,28 @@ def loads_vs_fis(rows, scenario, path):
 
 
 def history(runs, out, scenario, path):
+    """Surge load against the time since the first ice contact, as the paper shifts its Figs. 9,
+    13 and 17, with the analysis window shaded."""
     sel = [r for r in runs if r.scenario == scenario and dict(r.grid).get(FII, 0.5) == 0.5
            and r.seed == min(x.seed for x in runs) and execute.status(r, out).state == "done"]
     if not sel:
         return False
     fig, axes = plt.subplots(len(sel), 1, figsize=(10, 2.2 * len(sel)), sharex=True, squeeze=False)
     for ax, r in zip(axes[:, 0], sorted(sel, key=lambda r: dict(r.grid).get(FIS, 0))):
+        with open(os.path.join(out, r.path, "summary.json")) as f:
+            summary = json.load(f)
+        t0 = summary.get("first_contact_s") or 0.0
+        t0 = t0 if t0 > 0 else 0.0  # -1: no contact
         with h5py.File(os.path.join(out, r.path, "run.h5"), "r") as h:
-            ax.plot(h["/load/time"][:], h["/load/surge"][:], lw=0.6)
+            ax.plot(h["/load/time"][:] - t0, h["/load/surge"][:], lw=0.6)
+        if summary.get("window_start_s") is not None:
+            ax.axvspan(summary["window_start_s"] - t0, summary["window_end_s"] - t0, color="0.93", zorder=0)
         ax.set_ylabel("surge N")
-        ax.set_title(f"{scenario}, f_ii = 0.5, f_is = {dict(r.grid).get(FIS)}", fontsize=9)
+        ax.set_title(f"{scenario}, f_ii = 0.5, f_is = {dict(r.grid).get(FIS)}, seed {r.seed} "
+                     f"(shaded: the analysis window)", fontsize=9)
         ax.grid(alpha=0.3)
-    axes[-1, 0].set_xlabel("time, s")
+    axes[-1, 0].set_xlabel("time since the first ice contact, s")
+    axes[-1, 0].set_xlim(left=-5.0)  # the open-water approach before the contact carries no load
     save(fig, path)
     return True
 
