@@ -328,6 +328,17 @@ class Execution(unittest.TestCase):
         self.assertIn("![loads_vs_fis_small_rigid.png](figures/loads_vs_fis_small_rigid.png)", text)
         self.assertEqual(text.count("| small_rigid/"), 2)
         self.assertIn("4 of 4 runs finished", text)
+        # a failed run is listed with its error, not silently dropped
+        _, runs = spec.load(path)
+        d = os.path.join(out, runs[0].path)
+        write(os.path.join(d, "exit_code"), "3\n")
+        write(os.path.join(d, "log.txt"), "error: numerical blow-up at step 7\n")
+        p = subprocess.run([os.path.join(ROOT, "scripts", "report"), path, "--out", out, "--report",
+                            os.path.join(out, "failed.md")], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        text = read(os.path.join(out, "failed.md"))
+        self.assertIn("3 of 4 runs finished", text)
+        self.assertIn(f"- `{runs[0].path}`: exit code 3: error: numerical blow-up at step 7", text)
 
     def test_slurm_script_lists_only_unfinished_runs(self):
         path = sweep_file(TINY)
