@@ -6,9 +6,13 @@
 // whole field is one island and one moving floe keeps all ~1000 awake
 // (bullet-notes.md: 936 of 960 awake). Here two bodies share an island only if
 // their contact manifold holds at least one contact point, i.e. they touch or
-// are about to. Every manifold the solver uses has points, so every solved
-// contact still joins its bodies; floes that merely sit near each other sleep
-// independently, and a sleeping floe is woken when an awake one touches it.
+// are about to. Floes that merely sit near each other sleep independently, and
+// a sleeping floe is woken when an awake one touches it. Every solved contact
+// still joins its bodies, provided the solver never sees a manifold without
+// points: Bullet would give its bodies solver bodies in the solve of body 0's
+// island, and a body solved in two islands gets its applied forces twice. The
+// world therefore sets m_deterministicOverlappingPairs, which drops empty
+// manifolds from the islands (dem/world.cpp).
 #pragma once
 
 #include <functional>

@@ -118,6 +118,15 @@ World::World(const Scene& scene) : scene_(scene) {
     island_manager_ = std::make_unique<ContactIslandManager>();
     dynamics_->replace_island_manager(island_manager_.get());
   }
+  // Bullet hands every manifold of an awake body to the solver, empty ones too, and
+  // the solver gives both bodies of a manifold a solver body. A body whose empty
+  // manifold lands in another island's solve is then solved twice, and each solve
+  // adds its applied forces again: a floe near (not touching) floes of other islands
+  // got its water forces and weight several times per step, and one went unstable
+  // in the paper grid (README, "Numerical health"). With this flag Bullet skips
+  // manifolds without contact points when it builds islands (and sorts pairs so
+  // that the order is reproducible, which it already was here).
+  dynamics_->getDispatchInfo().m_deterministicOverlappingPairs = true;
 
   btContactSolverInfo& info = dynamics_->getSolverInfo();
   info.m_numIterations = scene.solver.iterations;
