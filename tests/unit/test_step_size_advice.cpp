@@ -14,7 +14,7 @@ TEST(StepSizeAdvice, PaperSettingsNeedNoWarning) {
   EXPECT_TRUE(step_size_warnings(scene_from("")).empty());
 }
 
-TEST(StepSizeAdvice, LargeStepWarnsOfFloatingInstabilityAndNamesTheSubsteps) {
+TEST(StepSizeAdvice, LargeStepWarnsThatFloatingFloesLoseAccuracyAndNamesTheSubsteps) {
   const auto w = step_size_warnings(scene_from("", {"time.dt=0.05"}));  // omega h = 0.89
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("time.substeps >= 2"), std::string::npos) << w[0];
