@@ -328,6 +328,17 @@ class Execution(unittest.TestCase):
         self.assertIn("![loads_vs_fis_small_rigid.png](figures/loads_vs_fis_small_rigid.png)", text)
         self.assertEqual(text.count("| small_rigid/"), 2)
         self.assertIn("4 of 4 runs finished", text)
+        # against an earlier build: the sweep against itself changes by a ratio of 1, within scatter
+        p = subprocess.run([os.path.join(ROOT, "scripts", "report"), path, "--out", out, "--report",
+                            os.path.join(out, "before.md"), "--before", out, "--before-note", "itself"],
+                           capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        section = read(os.path.join(out, "before.md")).split("## Against an earlier build")[1].split("## Every")[0]
+        rows_before = [l for l in section.splitlines() if l.startswith("| small_rigid/") or l.startswith("| large_rigid/")]
+        self.assertEqual(len(rows_before), 4)
+        for l in rows_before:
+            cells = [c.strip() for c in l.split("|")]
+            self.assertEqual((cells[4], cells[5], cells[7], cells[8]), ("1.00", "yes", "1.00", "yes"), l)
         # a failed run is listed with its error, not silently dropped
         _, runs = spec.load(path)
         d = os.path.join(out, runs[0].path)
