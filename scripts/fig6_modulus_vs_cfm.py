@@ -46,7 +46,7 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "validation"))
     ap.add_argument("--iterations", type=int, default=50)
     ap.add_argument("--joint-iterations", type=int, default=0)
-    ap.add_argument("--erp", type=float, default=0.8, help="fracture.erp (the scenarios use 0.2)")
+    ap.add_argument("--erp", type=float, default=0.8, help="fracture.erp (the scenarios use 0.8)")
     ap.add_argument("--replot", action="store_true")
     ap.add_argument("--plate", type=float, default=2.7, help="nominal plate side, m (rounded to whole elements)")
     args = ap.parse_args()
