@@ -90,7 +90,6 @@ TEST(Sleeping, FloesThatDoNotTouchHeaveAsIfAlone) {
   State alone = initial_state(scene, {square_floe(1.5, 0.0)});
   ASSERT_GT(field.world->floes().size(), 50u);
   const auto lift = [](State& state, double dy) {
-    state.world->dynamics().getSolverInfo().m_minimumSolverBatchSize = 1;
     for (FloeBody& f : state.world->floes()) {
       btTransform pose = f.body->getCenterOfMassTransform();
       pose.getOrigin() += btVector3(0, dy, 0);
@@ -98,6 +97,8 @@ TEST(Sleeping, FloesThatDoNotTouchHeaveAsIfAlone) {
       f.body->getMotionState()->setWorldTransform(pose);
     }
   };
+  field.world->dynamics().getSolverInfo().m_minimumSolverBatchSize = 1;  // one island per solve
+  alone.world->dynamics().getSolverInfo().m_minimumSolverBatchSize = 1;
   lift(field, 0.005);
   lift(alone, 0.005);
   std::vector<double> y0;
