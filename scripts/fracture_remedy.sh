@@ -37,10 +37,10 @@ variants=(
   "joints 100 it, ERP 0.8, CFM 0.0059|solver.iterations=10 fracture.joint_iterations=100 fracture.erp=0.8 fracture.cfm=0.0059 $common"
   "joints 100 it, ERP 0.8, CFM 0.0059, filter 0.1 s|solver.iterations=10 fracture.joint_iterations=100 fracture.erp=0.8 fracture.cfm=0.0059 fracture.lattice_radius=0 fracture.load_filter_time=0.1"
   "contacts 30 it, joints 100 it, ERP 0.8, CFM 0.0059|solver.iterations=30 fracture.joint_iterations=100 fracture.erp=0.8 fracture.cfm=0.0059 $common"
-  "joints 200 it, ERP 0.8, CFM 0.0074|solver.iterations=10 fracture.joint_iterations=200 fracture.erp=0.8 fracture.cfm=0.0074 $common"
+  "joints 200 it, ERP 0.8, CFM 0.00743 (chosen)|solver.iterations=10 fracture.joint_iterations=200 fracture.erp=0.8 fracture.cfm=0.00743 $common"
   "joints 100 it, ERP 0.5, CFM 0.0022|solver.iterations=10 fracture.joint_iterations=100 fracture.erp=0.5 fracture.cfm=0.0022 $common"
-  "joints 200 it, ERP 0.2, CFM 0.00107 (chosen)|solver.iterations=10 fracture.joint_iterations=200 fracture.erp=0.2 fracture.cfm=0.00107 $common"
-  "chosen, lattice radius 1.5 m (the scenario)|solver.iterations=10 fracture.joint_iterations=200 fracture.erp=0.2 fracture.cfm=0.00107 fracture.lattice_radius=1.5 fracture.load_filter_time=0"
+  "joints 200 it, ERP 0.2, CFM 0.00107 (chosen before the island fix)|solver.iterations=10 fracture.joint_iterations=200 fracture.erp=0.2 fracture.cfm=0.00107 $common"
+  "chosen, lattice radius 1.5 m (the scenario)|solver.iterations=10 fracture.joint_iterations=200 fracture.erp=0.8 fracture.cfm=0.00743 fracture.lattice_radius=1.5 fracture.load_filter_time=0"
 )
 if [ -n "${ICEDEM_VARIANTS:-}" ]; then  # e.g. ICEDEM_VARIANTS="8 9": run only those (1-based)
   picked=()
