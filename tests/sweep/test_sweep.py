@@ -183,6 +183,23 @@ class Aggregation(unittest.TestCase):
         self.assertEqual(r["breaks_shear"], 0)
         self.assertAlmostEqual(r["run_wall_time_s"], 14.0)
 
+    def test_a_cause_cites_its_supplements_ratios(self):
+        # scripts/report has no .py suffix: load it as a module
+        import importlib.machinery
+        import importlib.util
+        loader = importlib.machinery.SourceFileLoader("report", os.path.join(ROOT, "scripts", "report"))
+        report = importlib.util.module_from_spec(importlib.util.spec_from_loader("report", loader))
+        loader.exec_module(report)
+        rows = [{"configuration": "a/base", "mean_fx_N": "10", "max_fx_N": "40"},
+                {"configuration": "b/base", "mean_fx_N": "12", "max_fx_N": "60"},
+                {"configuration": "c/base", "mean_fx_N": "5", "max_fx_N": "nan"}]
+        self.assertEqual(report.supplement_ratios(rows),
+                         " (mean / max against `a`: `b` 1.20 / 1.50, `c` 0.50 / n/a)")
+        # without supplements every placeholder is left empty, none printed raw
+        causes = report.filled_causes([])
+        self.assertEqual(set(causes), set(report.CAUSES))
+        self.assertFalse(any("{" in c or "}" in c for c in causes.values()))
+
 
 class XdmfExport(unittest.TestCase):
     def test_every_data_item_exists_with_its_dimensions_and_cells_are_consistent(self):
