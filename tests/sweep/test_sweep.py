@@ -195,6 +195,10 @@ class Aggregation(unittest.TestCase):
                 {"configuration": "c/base", "mean_fx_N": "5", "max_fx_N": "nan"}]
         self.assertEqual(report.supplement_ratios(rows),
                          " (mean / max against `a`: `b` 1.20 / 1.50, `c` 0.50 / n/a)")
+        # a configuration without runs is left out; without the first one there is nothing to cite
+        empty = {"configuration": "d/base", "mean_fx_N": "", "max_fx_N": ""}
+        self.assertEqual(report.supplement_ratios(rows + [empty]), report.supplement_ratios(rows))
+        self.assertEqual(report.supplement_ratios([empty] + rows), "")
         # without supplements every placeholder is left empty, none printed raw
         causes = report.filled_causes([])
         self.assertEqual(set(causes), set(report.CAUSES))
