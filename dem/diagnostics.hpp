@@ -18,6 +18,9 @@ struct StepDiagnostics {
   double ice_mass = 0;              // kg, ice in the Bullet world with its centre inside the tank
   double max_joint_gap = 0;         // m, widest separation of an intact joint's two anchors
   double max_cone_penetration = 0;  // m, deepest ice vertex inside the structure hull (radial)
+  double solver_iterations = 0;     // most contact sweeps an island used (dem/contact_solver.hpp)
+  double solver_residual = 0;       // largest residual an island ended its sweeps with
+  double solver_capped = 0;         // 1 if an island reached solver.iterations above solver.tolerance
 };
 
 /// One diagnostic: its dataset name under /diagnostics, unit and meaning.
@@ -40,6 +43,14 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      &StepDiagnostics::max_joint_gap},
     {"max_cone_penetration", "m", "deepest ice vertex inside the structure hull, radially (tunnelling shows here)",
      &StepDiagnostics::max_cone_penetration},
+    {"solver_iterations", "1", "most PGS sweeps over the contacts any island used in the step (the cap is solver.iterations)",
+     &StepDiagnostics::solver_iterations},
+    {"solver_residual", "1",
+     "largest residual an island ended the step's sweeps with: the relative change of its contact impulses and of "
+     "its load on the structure in the last sweep (dem/contact_solver.hpp)",
+     &StepDiagnostics::solver_residual},
+    {"solver_capped", "1", "1 if an island reached solver.iterations with its residual above solver.tolerance",
+     &StepDiagnostics::solver_capped},
 };
 inline constexpr std::size_t kDiagnosticCount = std::size(kDiagnosticColumns);
 

@@ -12,6 +12,7 @@
 
 #include "dem/constants.hpp"
 #include "dem/errors.hpp"
+#include "dem/solver_profile.hpp"
 
 namespace icedem {
 namespace {
@@ -219,6 +220,7 @@ Scenario parse_scenario(const std::string& toml_text, const std::string& display
   }
   walk(sc, table, "", display_name);
   for (const std::string& o : overrides) apply_override(sc, o);
+  apply_solver_profile(sc);
   return sc;
 }
 
@@ -240,10 +242,15 @@ Scene make_scene(const Scenario& sc) {
   s.time = {real(sc, "time.dt"), real(sc, "time.duration"), integer(sc, "time.substeps")};
   if (s.time.duration < s.time.dt) fail(sc, "time.duration", "must be at least one time step (time.dt)");
 
-  s.solver = {integer(sc, "solver.iterations"), real(sc, "solver.residual_threshold"),
-              get<std::string>(sc, "solver.broadphase") == "sap" ? Broadphase::kSweepAndPrune : Broadphase::kDbvt,
-              get<bool>(sc, "solver.split_impulse"),
-              real(sc, "solver.contact_erp")};
+  s.solver.iterations = integer(sc, "solver.iterations");
+  s.solver.tolerance = real(sc, "solver.tolerance");
+  s.solver.warm_start = real(sc, "solver.warm_start");
+  s.solver.friction_warm_start = get<bool>(sc, "solver.friction_warm_start");
+  s.solver.order_from_structure = get<std::string>(sc, "solver.order") == "structure";
+  s.solver.sor = real(sc, "solver.sor");
+  s.solver.broadphase = get<std::string>(sc, "solver.broadphase") == "sap" ? Broadphase::kSweepAndPrune : Broadphase::kDbvt;
+  s.solver.split_impulse = get<bool>(sc, "solver.split_impulse");
+  s.solver.contact_erp = real(sc, "solver.contact_erp");
 
   // structure profile: y strictly increasing, radii >= 0, some radius > 0
   s.structure.speed = real(sc, "structure.speed");

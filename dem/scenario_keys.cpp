@@ -48,11 +48,27 @@ std::vector<KeySpec> make_keys() {
                       "Bullet steps per time step (dt/substeps each); outputs stay at dt"));
 
   // solver
+  // Every key below marked "(profile)" takes its default from solver.profile when the
+  // scenario does not set it (dem/solver_profile.cpp); the default shown is "paper"'s.
+  k.push_back(choice("solver.profile", "paper", {"paper"},
+                     "solver settings as a set (dem/solver_profile.cpp): \"paper\" = the seed paper's "
+                     "numerics, 10 PGS sweeps a step on Bullet's solver as it comes"));
   k.push_back(integer("solver.iterations", 10, 1, 100000,
-                      "projected Gauss-Seidel iterations per step (Bullet default 10)"));
-  k.push_back(real("solver.residual_threshold", "N^2 s^2", 0.0, 0.0, 1.0,
-                   "stop the PGS iterations of a step early once the largest squared impulse "
-                   "change of an iteration is below this; 0: always solver.iterations"));
+                      "(profile) cap of projected Gauss-Seidel sweeps over the contacts per island and "
+                      "Bullet step"));
+  k.push_back(real("solver.tolerance", "-", 0.0, 0.0, 1.0,
+                   "(profile) an island stops sweeping once the relative change of its contact impulses "
+                   "and of its load on the structure in a sweep is below this (dem/contact_solver.hpp); "
+                   "0: always solver.iterations"));
+  k.push_back(real("solver.warm_start", "-", 0.85, 0.0, 1.0,
+                   "(profile) fraction of the last step's contact impulses a step starts from (Bullet: 0.85)"));
+  k.push_back(boolean("solver.friction_warm_start", false,
+                      "(profile) warm-start friction impulses too (Bullet starts them from zero)"));
+  k.push_back(choice("solver.order", "bullet", {"bullet", "structure"},
+                     "(profile) order of the contact rows in a sweep: Bullet's, or by distance from the "
+                     "structure, outward and inward in turn"));
+  k.push_back(real("solver.sor", "-", 1.0, 0.1, 1.9,
+                   "(profile) successive over-relaxation factor of the contact rows (1: plain Gauss-Seidel)"));
   k.push_back(choice("solver.broadphase", "dbvt", {"dbvt", "sap"},
                      "Bullet broadphase: dynamic AABB tree, or 3-axis sweep and prune over the tank"));
   k.push_back(boolean("solver.split_impulse", true,

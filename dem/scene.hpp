@@ -28,11 +28,15 @@ struct TimeSettings {
 
 enum class Broadphase { kDbvt, kSweepAndPrune };
 struct SolverSettings {
-  int iterations;       // PGS iterations per Bullet step
-  double residual_threshold;  // (N s)^2, early stop of the iterations; 0 = never
+  int iterations;             // cap of PGS sweeps over the contacts per island and Bullet step
+  double tolerance;           // -, residual that ends an island's sweeps early; 0 = never
+  double warm_start;          // -, fraction of the last step's impulses a step starts from
+  bool friction_warm_start;   // friction impulses warm-started too
+  bool order_from_structure;  // contact rows by distance from the structure, out and in by turns
+  double sor;                 // -, over-relaxation of the contact rows
   Broadphase broadphase;
-  bool split_impulse;   // position correction kept out of the contact impulses
-  double contact_erp;   // -, fraction of penetration corrected per step
+  bool split_impulse;         // position correction kept out of the contact impulses
+  double contact_erp;         // -, fraction of penetration corrected per step
 };
 
 struct StructureSettings {

@@ -1,5 +1,6 @@
 #include "dem/simulation.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -74,7 +75,30 @@ std::vector<BodyPose> body_poses(const World& world) {
 // Load time series kept in memory for the statistics at the end.
 struct LoadHistory {
   std::vector<double> time, surge, heave, sway;
+  std::vector<StepDiagnostics> solver;  // the solver fields of each step's diagnostics
 };
+
+// sweeps and residuals over the run; capped steps also as a fraction of the analysis
+// window, where the statistics come from
+SolverSummary solver_summary(const Scene& scene, const LoadHistory& h, const RunSummary& s) {
+  SolverSummary v;
+  v.cap = scene.solver.iterations;
+  v.tolerance = scene.solver.tolerance;
+  long window_steps = 0, window_capped = 0;
+  for (std::size_t i = 0; i < h.solver.size(); ++i) {
+    const StepDiagnostics& d = h.solver[i];
+    v.iterations_mean += d.solver_iterations;
+    v.iterations_max = std::max(v.iterations_max, static_cast<int>(d.solver_iterations));
+    v.residual_max = std::max(v.residual_max, d.solver_residual);
+    v.capped_steps += d.solver_capped > 0;
+    const bool in_window = !s.has_statistics || (h.time[i] >= s.surge.window_start && h.time[i] <= s.surge.window_end);
+    window_steps += in_window;
+    window_capped += in_window && d.solver_capped > 0;
+  }
+  if (!h.solver.empty()) v.iterations_mean /= static_cast<double>(h.solver.size());
+  v.capped_window_fraction = window_steps ? double(window_capped) / double(window_steps) : 0.0;
+  return v;
+}
 
 // The analysis window starts a stated travel distance after the first ice
 // contact (stats.window_start_travel; default 2 waterline breadths, cf. the
@@ -191,6 +215,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       history.surge.push_back(-load.force.x());  // resisting towing, positive
       history.heave.push_back(load.force.y());
       history.sway.push_back(load.force.z());
+      history.solver.push_back(state.diagnostics);
       awake_sum += state.awake_floes;
       summary.health.add(state.time, state.diagnostics);
       for (const FractureEvent& e : state.fracture_events) recorder.append_fracture(e);
@@ -222,6 +247,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.breaks_by_mode = state.breaks_by_mode;
   for (int n : state.breaks_by_mode) summary.breaks += n;
   compute_statistics(scene, history, summary);
+  summary.solver = solver_summary(scene, history, summary);
   summary.validation = validation.result(scene);
   summary.wall_time_s = wall();
   write_statistics(recorder, summary);

@@ -79,6 +79,13 @@ void read_load_cell(State& state, LoadCell& cell) {
                   state.structure_position);
 }
 
+// what the contact solver did this step, for /diagnostics and the summary
+void record_solver_report(const SolverReport& report, StepDiagnostics& d) {
+  d.solver_iterations = report.iterations;
+  d.solver_residual = report.residual;
+  d.solver_capped = report.capped ? 1.0 : 0.0;
+}
+
 }  // namespace
 
 Eigen::Vector3d structure_position_at(const Scene& scene, double t) {
@@ -93,6 +100,7 @@ void step(const Scene& scene, State& state) {
   { StageTimer t(times.activation); update_lattice_region(scene, state); }
   if (state.drag_exchange) { StageTimer t(times.coupling); state.drag_exchange->update(scene, state); }
   LoadCell cell;
+  state.world->solver_report().clear();
   for (int k = 1; k <= scene.time.substeps; ++k) {
     const double t_next = t0 + k * h;
     { StageTimer t(times.structure); move_structure(scene, state, t_next); }
@@ -110,6 +118,7 @@ void step(const Scene& scene, State& state) {
   if (!state.first_contact_time && state.load.contacts > 0) state.first_contact_time = state.time;
   ++state.step;
   { StageTimer t(times.health); state.diagnostics = check_health(scene, state); }
+  record_solver_report(state.world->solver_report(), state.diagnostics);
 }
 
 }  // namespace icedem

@@ -9,6 +9,27 @@
 
 namespace icedem {
 
+namespace {
+
+// sweeps per step, and a warning when the cap, not the tolerance, ended the sweeps
+// of many steps: the loads of those steps are not converged (README, "Convergence")
+std::string solver_line(const SolverSummary& v) {
+  std::string out = fmt::format("  contact solver: {:.1f} sweeps per step on average, at most {:d} (cap {:d}), "
+                                "tolerance {:g}, largest residual {:.2g}\n",
+                                v.iterations_mean, v.iterations_max, v.cap, v.tolerance, v.residual_max);
+  if (v.tolerance > 0 && v.capped_window_fraction > SolverSummary::kCappedWarning)
+    out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached solver.iterations = {:d} before "
+                       "solver.tolerance = {:g}: their loads are not converged; raise the cap "
+                       "(/diagnostics/solver_capped has the steps)\n",
+                       100 * v.capped_window_fraction, v.cap, v.tolerance);
+  if (v.tolerance == 0)
+    out += "  note: solver.tolerance = 0 runs every island to the cap and nothing checks that the loads "
+           "converged (README, \"Convergence\")\n";
+  return out;
+}
+
+}  // namespace
+
 std::string summary_table(const RunSummary& s) {
   const double rtf = s.wall_time_s > 0 ? s.sim_time_s / s.wall_time_s : 0.0;
   std::string out;
@@ -40,6 +61,7 @@ std::string summary_table(const RunSummary& s) {
     out += fmt::format("  warning: a floe or element turned at {:.1f} rad/s (t = {:.2f} s): unstable joints? "
                        "/diagnostics/max_angular_speed has the history; README, \"Breakable ice\"\n",
                        s.health.max.max_angular_speed, s.health.max_time[0]);
+  out += solver_line(s.solver);
   if (!s.has_statistics) {
     out += fmt::format("  no load statistics: {}\n", s.statistics_note);
     return out;
@@ -98,6 +120,13 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["health"]["ice_mass_initial_kg"] = num(s.health.initial_ice_mass);
   j["health"]["ice_mass_max_relative_change"] = num(s.health.max_ice_mass_change);
   if (!s.validation.is_null()) j["validation"] = s.validation;
+  j["solver"] = {{"cap", s.solver.cap},
+                 {"tolerance", s.solver.tolerance},
+                 {"iterations_mean", s.solver.iterations_mean},
+                 {"iterations_max", s.solver.iterations_max},
+                 {"capped_steps", s.solver.capped_steps},
+                 {"capped_window_fraction", s.solver.capped_window_fraction},
+                 {"residual_max", num(s.solver.residual_max)}};
   const StageTimes& t = s.stage_times;
   j["stage_time_s"] = {{"structure", t.structure}, {"water", t.water},         {"bullet", t.bullet},
                        {"load_cell", t.load_cell}, {"activation", t.activation}, {"health", t.health},

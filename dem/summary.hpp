@@ -15,6 +15,19 @@
 
 namespace icedem {
 
+/// What the contact solver did over a run (from the per-step solver diagnostics).
+struct SolverSummary {
+  int cap = 0;                    // solver.iterations
+  double tolerance = 0;           // solver.tolerance
+  double iterations_mean = 0;     // per step, the most sweeps an island used, averaged over the run
+  int iterations_max = 0;
+  long capped_steps = 0;          // steps in which an island reached the cap unconverged
+  double capped_window_fraction = 0;  // of the analysis window's steps (the whole run without one)
+  double residual_max = 0;
+  /// More than this fraction of capped steps in the window: the summary warns.
+  static constexpr double kCappedWarning = 0.01;
+};
+
 struct RunSummary {
   std::string scenario;  // scenario path
   std::string output;    // HDF5 path
@@ -37,6 +50,7 @@ struct RunSummary {
   int breaks = 0;           // joint failures (0 with rigid floes)
   std::array<int, 5> breaks_by_mode{};  // by FailureMode: compression, shear, bending, tension, in-plane bending
   StageTimes stage_times;   // s of wall time per stage of step()
+  SolverSummary solver;     // sweeps, residuals and capped steps of the contact solver
   DiagnosticExtremes health;  // extremes of the per-step diagnostics (speeds, energy, ice mass, ...)
   std::vector<std::string> warnings;  // scene warnings (step_size_warnings), printed first
   nlohmann::json validation;  // validation block of a validation case, null otherwise

@@ -10,6 +10,8 @@
 //  - collision margins of a millimetre (Bullet's 0.04 m exceeds the ice thickness);
 //  - sleeping thresholds for a 0.07 m/s tow, and islands built from touching
 //    contacts rather than bounding-box overlap (dem/contact_islands.hpp);
+//  - Bullet's PGS solver with its sweep loop replaced (dem/contact_solver.hpp):
+//    convergence measured per island, an early stop, friction warm starting;
 //  - split-impulse penetration recovery, so contact impulses measured by the
 //    load cell hold no position-correction push (solver.split_impulse).
 #pragma once
@@ -24,6 +26,7 @@
 
 #include "dem/bullet_eigen.hpp"
 #include "dem/contact_islands.hpp"
+#include "dem/contact_solver.hpp"
 #include "dem/floe_layout.hpp"
 #include "dem/hydrostatics.hpp"
 #include "dem/scene.hpp"
@@ -121,6 +124,9 @@ class World {
   /// the next Bullet step; Bullet derives its velocity from the motion.
   void set_structure_target(const Eigen::Vector3d& position);
 
+  /// What the contact solver did since the report was last cleared.
+  SolverReport& solver_report() { return solver_->report(); }
+
   DynamicsWorld& dynamics() { return *dynamics_; }
   const DynamicsWorld& dynamics() const { return *dynamics_; }
   btRigidBody* structure() const { return structure_; }
@@ -193,7 +199,7 @@ class World {
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
   std::unique_ptr<btBroadphaseInterface> broadphase_;
-  std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
+  std::unique_ptr<ContactSolver> solver_;
   std::unique_ptr<btSimulationIslandManager> island_manager_;  // must outlive dynamics_
   std::unique_ptr<DynamicsWorld> dynamics_;
 

@@ -1,0 +1,134 @@
+// The contact solver: Bullet's projected Gauss-Seidel (sequential impulse)
+// solver, with the sweep loop rewritten for a jammed ice pack.
+//
+// Why: in a pack pressed against the structure the load at the structure is
+// carried by long chains of floes. Projected Gauss-Seidel moves an impulse
+// about one contact along such a chain per sweep, so at a fixed small number
+// of sweeps the chain is not solved, the penetration it should have resisted
+// is removed by the split impulse instead, and the peak load at the structure
+// is a property of the sweep count (README, "Convergence"). This solver:
+//  - measures every island's convergence after each sweep and stops the sweeps
+//    of that island once the residual is below solver.tolerance (quiet islands
+//    stop after a sweep or two, the jammed one runs up to the cap);
+//  - warm-starts friction as well as normal impulses (Bullet 3.24 starts
+//    friction from zero each step, and recomputes its directions): the
+//    friction impulse of the previous step, a vector in the tangent plane, is
+//    projected onto the new friction directions;
+//  - optionally orders the contact rows by distance from the structure,
+//    alternating outward and inward sweeps (symmetric Gauss-Seidel along the
+//    load path);
+//  - reports per step the sweeps used, the final residual and whether the cap
+//    stopped an island before it converged.
+// With warm_start 0.85 (Bullet's), no friction warm start, Bullet's row order
+// and tolerance 0 it computes exactly what btSequentialImpulseConstraintSolver
+// computes (tests/physics/test_contact_solver.cpp checks it bit for bit).
+//
+// Residual after sweep k (dimensionless), per solve group (island): the relative
+// change of the sweep,
+//   c_k = max( |P_k - P_{k-1}| / max(|P_k|, p0),  max_i |dl_i| / max(max_j ln_j, p0) ),
+// divided by 1 - rho with rho = c_k / c_{k-1} (at most 0.99): an estimate of the
+// relative error still left, since Gauss-Seidel converges linearly. P is the
+// impulse vector of the island's contacts on the structure over the step (normal
+// and friction), dl_i the change of contact row i's impulse (normal or friction)
+// in the sweep, ln_j the normal impulses and p0 = 1e-6 N s (below it an impulse
+// is noise: a 0.3 m floe's weight over a step is 0.5 N s). Joints are
+// swept their own count (fracture.joint_iterations), as in Bullet; the residual
+// covers the contacts.
+#pragma once
+
+#include <unordered_map>
+#include <vector>
+
+#include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
+
+namespace icedem {
+
+/// Order of the contact rows within a sweep.
+enum class SweepOrder {
+  kBullet,         // the order Bullet builds them (manifold by manifold)
+  kFromStructure,  // by distance from the structure axis, outward on even sweeps, inward on odd
+};
+
+struct ContactSolverSettings {
+  int iterations = 10;             // cap of contact sweeps per island and Bullet step
+  double tolerance = 0.0;          // residual that ends an island's sweeps; 0: always the cap
+  bool friction_warm_start = false;  // carry friction impulses over from the previous step
+  SweepOrder order = SweepOrder::kBullet;
+};
+
+/// What the solver did during one time step (all islands, all substeps).
+struct SolverReport {
+  int iterations = 0;    // most contact sweeps any island used
+  double residual = 0;   // largest residual an island ended with (dimensionless, see above)
+  bool capped = false;   // an island reached the cap with its residual above the tolerance
+  int islands = 0;       // solve groups with contacts
+
+  void clear() { *this = SolverReport{}; }
+};
+
+class ContactSolver : public btSequentialImpulseConstraintSolver {
+ public:
+  /// Impulse below which an impulse counts as zero in the residual, N s.
+  static constexpr double kImpulseFloor = 1e-6;
+  /// Largest convergence rate per sweep the residual assumes (contact_solver.cpp).
+  static constexpr double kMaxRate = 0.99;
+
+  /// The error left after a sweep that changed the impulses by `change` (relative)
+  /// following one that changed them by `previous_change`: change / (1 - rate).
+  static double remaining_error(double change, double previous_change, int sweeps);
+
+  explicit ContactSolver(const ContactSolverSettings& settings) : settings_(settings) {}
+
+  /// The structure whose load the residual follows (null: none).
+  void set_structure(const btCollisionObject* structure) { structure_ = structure; }
+
+  /// Accumulated over the solves since the last clear (the owner clears it every step).
+  SolverReport& report() { return report_; }
+  const SolverReport& report() const { return report_; }
+
+  // Bullet's per-step hook: the friction impulses of the last step become the
+  // ones to warm-start from
+  void prepareSolve(int numBodies, int numManifolds) override;
+
+ protected:
+  void convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info) override;
+  void solveGroupCacheFriendlySplitImpulseIterations(btCollisionObject** bodies, int numBodies,
+                                                     btPersistentManifold** manifolds, int numManifolds,
+                                                     btTypedConstraint** constraints, int numConstraints,
+                                                     const btContactSolverInfo& info, btIDebugDraw* debug) override;
+  btScalar solveGroupCacheFriendlyIterations(btCollisionObject** bodies, int numBodies,
+                                             btPersistentManifold** manifolds, int numManifolds,
+                                             btTypedConstraint** constraints, int numConstraints,
+                                             const btContactSolverInfo& info, btIDebugDraw* debug) override;
+  btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies,
+                                         const btContactSolverInfo& info) override;
+
+ private:
+  // a contact row on the structure: its index and which side the structure is on
+  struct StructureRow {
+    int row;
+    double sign;  // +1: the structure is body A of the row, -1: body B
+  };
+  // the friction impulse a contact point ended a step with
+  struct FrictionMemory {
+    btScalar normal_impulse;  // identifies the point: Bullet keeps it when it refreshes the point
+    btVector3 tangent;        // friction impulse on body A, world frame, N s
+  };
+
+  void warm_start_friction(btPersistentManifold& manifold, int first_row, const btContactSolverInfo& info);
+  void build_order(bool from_structure);
+  // one sweep over the joint rows (those with sweeps left) and, if `contacts`, the contact rows
+  // in the given direction of the order; returns the largest change of a contact impulse, N s
+  double sweep(int iteration, bool contacts, bool reverse, const btContactSolverInfo& info);
+  btVector3 structure_impulse() const;
+
+  ContactSolverSettings settings_;
+  const btCollisionObject* structure_ = nullptr;
+  SolverReport report_;
+  std::vector<StructureRow> structure_rows_;  // of the current group
+  bool two_directions_ = false;               // two friction rows per contact (else one)
+  std::vector<int> order_;                    // contact rows of the current group, sweep order
+  std::unordered_map<const btManifoldPoint*, FrictionMemory> friction_previous_, friction_current_;
+};
+
+}  // namespace icedem

@@ -1,0 +1,40 @@
+#include "dem/solver_profile.hpp"
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace icedem {
+namespace {
+
+using Settings = std::vector<std::pair<std::string, KeyValue>>;
+
+// Each profile lists every key it sets. "paper": the seed paper's numerics, 10 PGS
+// sweeps a step (its Table 3), on Bullet 3.24's solver as it comes (warm start 0.85,
+// friction from zero, its row order), with no early stop: results of this profile
+// are those of icedem before the convergence work, bit for bit.
+const std::map<std::string, Settings>& profiles() {
+  static const std::map<std::string, Settings> table{
+      {"paper",
+       {{"solver.iterations", KeyValue{std::int64_t{10}}},
+        {"solver.tolerance", KeyValue{0.0}},
+        {"solver.warm_start", KeyValue{0.85}},
+        {"solver.friction_warm_start", KeyValue{false}},
+        {"solver.order", KeyValue{std::string("bullet")}},
+        {"solver.sor", KeyValue{1.0}}}},
+  };
+  return table;
+}
+
+}  // namespace
+
+void apply_solver_profile(Scenario& sc) {
+  const std::string& name = std::get<std::string>(sc.keys.at("solver.profile").value);
+  for (const auto& [path, value] : profiles().at(name)) {
+    ResolvedKey& key = sc.keys.at(path);
+    if (key.origin == "default") key = ResolvedKey{value, "solver.profile = \"" + name + "\""};
+  }
+}
+
+}  // namespace icedem
