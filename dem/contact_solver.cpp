@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+#include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
 namespace icedem {
@@ -114,6 +115,46 @@ btVector3 ContactSolver::structure_impulse() const {
   return p;
 }
 
+void ContactSolver::measure_bodies() {
+  const int n = m_tmpSolverBodyPool.size();
+  bodies_.resize(n);
+  for (int b = 0; b < n; ++b) {
+    const btRigidBody* rb = m_tmpSolverBodyPool[b].m_originalBody;
+    BodyScale& s = bodies_[b];
+    s.mass = rb && rb->getInvMass() > 0 ? 1.0 / rb->getInvMass() : 0.0;  // 0: fixed or kinematic
+    s.radius = 0.0;
+    if (s.mass > 0) {
+      btVector3 centre;
+      btScalar radius;
+      rb->getCollisionShape()->getBoundingSphere(centre, radius);
+      s.radius = radius;
+    }
+  }
+}
+
+void ContactSolver::remember_velocities() {
+  for (int b = 0; b < m_tmpSolverBodyPool.size(); ++b) {
+    bodies_[b].linear = m_tmpSolverBodyPool[b].internalGetDeltaLinearVelocity();
+    bodies_[b].angular = m_tmpSolverBodyPool[b].internalGetDeltaAngularVelocity();
+  }
+}
+
+// the net impulse a sweep added to a body, as m (|dv| + r |dw|): its velocity change at
+// its rim times its mass. Unlike single contact impulses, which drift between the
+// redundant points of a face without changing anything, it is unique at convergence
+double ContactSolver::largest_body_impulse_change() const {
+  double largest = 0.0;
+  for (int b = 0; b < m_tmpSolverBodyPool.size(); ++b) {
+    const BodyScale& s = bodies_[b];
+    if (s.mass == 0) continue;
+    const btSolverBody& body = m_tmpSolverBodyPool[b];
+    const double dv = (body.m_deltaLinearVelocity - s.linear).length();
+    const double dw = (body.m_deltaAngularVelocity - s.angular).length();
+    largest = std::max(largest, s.mass * (dv + s.radius * dw));
+  }
+  return largest;
+}
+
 double ContactSolver::sweep(int iteration, bool contacts, bool reverse, const btContactSolverInfo& info) {
   // joints, as Bullet sweeps them: each row its own count (m_overrideNumSolverIterations)
   for (int j = 0; j < m_tmpSolverNonContactConstraintPool.size(); ++j) {
@@ -125,7 +166,7 @@ double ContactSolver::sweep(int iteration, bool contacts, bool reverse, const bt
   // (Bullet also calls btTypedConstraint::solveConstraintObsolete here, a no-op for every
   // constraint icedem uses)
   const int n = static_cast<int>(order_.size());
-  double change = 0.0;
+  double change = 0.0;  // largest change of a row's impulse: zero only if nothing moved
   // normal rows first, then friction rows, as Bullet does without SOLVER_INTERLEAVE_...
   for (int k = 0; k < n; ++k) {
     btSolverConstraint& c = m_tmpSolverContactConstraintPool[order_[reverse ? n - 1 - k : k]];
@@ -182,6 +223,7 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
                                                           const btContactSolverInfo& info, btIDebugDraw* debug) {
   const bool from_structure = settings_.order == SweepOrder::kFromStructure;
   build_order(from_structure);
+  measure_bodies();
   solveGroupCacheFriendlySplitImpulseIterations(bodies, numBodies, manifolds, numManifolds, constraints,
                                                 numConstraints, info, debug);
 
@@ -197,6 +239,7 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
   btVector3 load = structure_impulse();
   for (int iteration = 0; !contacts_done || iteration < joint_sweeps; ++iteration) {
     const bool contacts = !contacts_done;
+    if (contacts) remember_velocities();
     const double impulse_change = sweep(iteration, contacts, from_structure && iteration % 2 == 1, info);
     if (!contacts) continue;
     ++contact_sweeps;
@@ -205,7 +248,7 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
     for (int r : order_) largest_normal = std::max(largest_normal, double(m_tmpSolverContactConstraintPool[r].m_appliedImpulse));
     const btVector3 now = structure_impulse();
     const double change = std::max((now - load).length() / std::max(double(now.length()), kImpulseFloor),
-                                   impulse_change / std::max(largest_normal, kImpulseFloor));
+                                   largest_body_impulse_change() / std::max(largest_normal, kImpulseFloor));
     load = now;
     residual = remaining_error(change, previous_change, contact_sweeps);
     previous_change = change;

@@ -25,13 +25,16 @@
 //
 // Residual after sweep k (dimensionless), per solve group (island): the relative
 // change of the sweep,
-//   c_k = max( |P_k - P_{k-1}| / max(|P_k|, p0),  max_i |dl_i| / max(max_j ln_j, p0) ),
+//   c_k = max( |P_k - P_{k-1}| / max(|P_k|, p0),  max_b |dJ_b| / max(max_j ln_j, p0) ),
 // divided by 1 - rho with rho = c_k / c_{k-1} (at most 0.99): an estimate of the
 // relative error still left, since Gauss-Seidel converges linearly. P is the
 // impulse vector of the island's contacts on the structure over the step (normal
-// and friction), dl_i the change of contact row i's impulse (normal or friction)
-// in the sweep, ln_j the normal impulses and p0 = 1e-6 N s (below it an impulse
-// is noise: a 0.3 m floe's weight over a step is 0.5 N s). Joints are
+// and friction), dJ_b the net impulse the sweep added to body b, measured as
+// m_b (|dv_b| + r_b |dw_b|) (velocity change at its bounding radius r_b; single
+// contact impulses are not used: on a face with several contact points they
+// shift between the points without changing anything), ln_j the normal impulses
+// and p0 = 1e-6 N s (below it an impulse is noise: a 0.3 m floe's weight over a
+// step is 0.5 N s). Joints are
 // swept their own count (fracture.joint_iterations), as in Bullet; the residual
 // covers the contacts.
 #pragma once
@@ -115,6 +118,15 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
     btVector3 tangent;        // friction impulse on body A, world frame, N s
   };
 
+  // per solver body of the group: its mass and radius, and its velocity change so far
+  struct BodyScale {
+    double mass = 0;    // kg; 0 for fixed and kinematic bodies
+    double radius = 0;  // m, bounding sphere
+    btVector3 linear, angular;
+  };
+  void measure_bodies();
+  void remember_velocities();
+  double largest_body_impulse_change() const;
   void warm_start_friction(btPersistentManifold& manifold, int first_row, const btContactSolverInfo& info);
   void build_order(bool from_structure);
   // one sweep over the joint rows (those with sweeps left) and, if `contacts`, the contact rows
@@ -128,6 +140,7 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   std::vector<StructureRow> structure_rows_;  // of the current group
   bool two_directions_ = false;               // two friction rows per contact (else one)
   std::vector<int> order_;                    // contact rows of the current group, sweep order
+  std::vector<BodyScale> bodies_;             // solver bodies of the current group
   std::unordered_map<const btManifoldPoint*, FrictionMemory> friction_previous_, friction_current_;
 };
 

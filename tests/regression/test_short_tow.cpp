@@ -65,6 +65,29 @@ TEST(ShortTow, LoadIsFiniteNonZeroAndPlausible) {
   EXPECT_EQ(string_attribute(f, "/meta", "status"), "complete");
   EXPECT_NE(string_attribute(f, "/meta", "scenario").find("[channel]"), std::string::npos);
   EXPECT_TRUE(f.openGroup("/stats").attrExists("mean_fx_N"));
+  EXPECT_EQ(shape_of(f, "/diagnostics/solver_iterations"), (std::vector<hsize_t>{n}));
+  EXPECT_EQ(shape_of(f, "/diagnostics/solver_residual"), (std::vector<hsize_t>{n}));
+}
+
+TEST(ShortTow, SolverReportsItsSweepsAndStopsEarlyWithATolerance) {
+  Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml",
+                           {"solver.tolerance=0.01", "solver.iterations=60", "solver.warm_start=1",
+                            "solver.friction_warm_start=true"});
+  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/tolerance.h5", false, ""});
+  ASSERT_EQ(s.status, "complete");
+  // islands stop when converged: the mean sweep count is well below the cap, and some
+  // step (the pack against the cone) needs more than the paper's 10
+  EXPECT_LT(s.solver.iterations_mean, 0.8 * 60);
+  EXPECT_GT(s.solver.iterations_max, 10);
+  EXPECT_LE(s.solver.iterations_max, 60);
+  EXPECT_EQ(s.solver.cap, 60);
+  // at the cap an island is reported capped only if its residual is above the tolerance
+  if (s.solver.capped_steps == 0) EXPECT_LE(s.solver.residual_max, 0.01);
+  // the paper profile runs the cap (10) wherever there are contacts
+  const Scene paper = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml");
+  const RunSummary p = run_simulation(paper, RunOptions{std::string(ICEDEM_TEST_TMP) + "/paper.h5", false, ""});
+  EXPECT_EQ(p.solver.iterations_max, 10);
+  EXPECT_GT(p.solver.capped_steps, 0);
 }
 
 TEST(ShortTow, SameSeedSameLoads) {

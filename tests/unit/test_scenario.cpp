@@ -50,6 +50,20 @@ TEST(Scenario, EveryStableKeyOfTheDesignExists) {
     EXPECT_NE(find_key(key), nullptr) << key;
 }
 
+TEST(Scenario, SolverProfileFillsOnlyTheKeysTheScenarioLeavesUnset) {
+  // "paper": 10 sweeps, no tolerance, Bullet's warm start 0.85 (dem/solver_profile.cpp)
+  const Scene paper = scene_from("[solver]\nprofile = \"paper\"\n");
+  EXPECT_EQ(paper.solver.iterations, 10);
+  EXPECT_DOUBLE_EQ(paper.solver.tolerance, 0.0);
+  EXPECT_DOUBLE_EQ(paper.solver.warm_start, 0.85);
+  EXPECT_FALSE(paper.solver.friction_warm_start);
+  // a key the file or --set gives wins over the profile
+  const Scene mixed = scene_from("[solver]\nprofile = \"paper\"\niterations = 25\n", {"solver.tolerance=0.01"});
+  EXPECT_EQ(mixed.solver.iterations, 25);
+  EXPECT_DOUBLE_EQ(mixed.solver.tolerance, 0.01);
+  EXPECT_DOUBLE_EQ(mixed.solver.warm_start, 0.85);
+}
+
 TEST(Scenario, FileValuesAndIntegersForRealsAreAccepted) {
   const Scene s = scene_from("seed = 7\n[time]\ndt = 0.01\nduration = 10\n[ice]\nfloe_size = 0.6\n");
   EXPECT_EQ(s.seed, 7u);
