@@ -40,6 +40,10 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
     convertContact(&manifold, info);  // Bullet's own set-up of the rows, normal impulses warm-started
     const int end = m_tmpSolverContactConstraintPool.size();
     if (settings_.friction_warm_start) warm_start_friction(manifold, first, info);
+    // crushing: the pair's normal force is at most crushing_force, shared by its points
+    if (settings_.crushing_force > 0 && end > first)
+      for (int r = first; r < end; ++r)
+        m_tmpSolverContactConstraintPool[r].m_upperLimit = settings_.crushing_force * info.m_timeStep / (end - first);
     if (structure_ && (manifold.getBody0() == structure_ || manifold.getBody1() == structure_)) {
       const double sign = manifold.getBody0() == structure_ ? 1.0 : -1.0;
       for (int r = first; r < end; ++r) structure_rows_.push_back({r, sign});
@@ -171,7 +175,10 @@ double ContactSolver::sweep(int iteration, bool contacts, bool reverse, const bt
   for (int k = 0; k < n; ++k) {
     btSolverConstraint& c = m_tmpSolverContactConstraintPool[order_[reverse ? n - 1 - k : k]];
     const btScalar before = c.m_appliedImpulse;
-    resolveSingleConstraintRowLowerLimit(m_tmpSolverBodyPool[c.m_solverBodyIdA], m_tmpSolverBodyPool[c.m_solverBodyIdB], c);
+    if (settings_.crushing_force > 0)  // Bullet's contact row clamps only below
+      resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[c.m_solverBodyIdA], m_tmpSolverBodyPool[c.m_solverBodyIdB], c);
+    else
+      resolveSingleConstraintRowLowerLimit(m_tmpSolverBodyPool[c.m_solverBodyIdA], m_tmpSolverBodyPool[c.m_solverBodyIdB], c);
     change = std::max(change, double(std::abs(c.m_appliedImpulse - before)));
   }
   const int per_contact = (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) ? 2 : 1;

@@ -17,6 +17,9 @@
 //  - optionally orders the contact rows by distance from the structure,
 //    alternating outward and inward sweeps (symmetric Gauss-Seidel along the
 //    load path);
+//  - optionally limits the normal force of each contact to the ice's crushing
+//    force (ice.contact_crushing): a pair of floes, or a floe and the structure,
+//    cannot press on each other harder than the ice can bear;
 //  - reports per step the sweeps used, the final residual and whether the cap
 //    stopped an island before it converged.
 // With warm_start 0.85 (Bullet's), no friction warm start, Bullet's row order
@@ -57,6 +60,7 @@ struct ContactSolverSettings {
   double tolerance = 0.0;          // residual that ends an island's sweeps; 0: always the cap
   bool friction_warm_start = false;  // carry friction impulses over from the previous step
   SweepOrder order = SweepOrder::kBullet;
+  double crushing_force = 0.0;     // N, largest normal force of one contact (pair); 0: none
 };
 
 /// What the solver did during one time step (all islands, all substeps).

@@ -279,7 +279,7 @@ Scene make_scene(const Scenario& sc) {
            real(sc, "ice.concentration"),    real(sc, "ice.density"),
            real(sc, "ice.elastic_modulus"),  real(sc, "ice.bending_strength"),
            real(sc, "ice.compressive_strength"), real(sc, "ice.shear_strength"),
-           real(sc, "ice.poisson_ratio")};
+           real(sc, "ice.poisson_ratio"),    get<bool>(sc, "ice.contact_crushing")};
   s.water = {real(sc, "water.density"),          real(sc, "water.gravity"),
              real(sc, "water.drag_coefficient"), real(sc, "water.skin_friction_coefficient"),
              real(sc, "water.heave_damping_ratio"), real(sc, "water.roll_pitch_damping_ratio")};

@@ -118,6 +118,10 @@ std::vector<KeySpec> make_keys() {
                        "compressive strength (Table 3: 4 x bending)"));
   k.push_back(positive("ice.shear_strength", "Pa", 72.8e3, 1.0e9, "shear strength (Table 3: 2 x bending)"));
   k.push_back(real("ice.poisson_ratio", "-", 0.33, 0.0, 0.5, "Poisson ratio (characteristic length)"));
+  k.push_back(boolean("ice.contact_crushing", false,
+                      "limit the normal force of each contact (a floe pair, or a floe and the structure or "
+                      "the mother ice) to the crushing force ice.compressive_strength x ice.thickness^2: "
+                      "ice crushing over a patch as wide as the ice is thick. Off in the paper"));
 
   // layout
   k.push_back(text("layout.file", "",

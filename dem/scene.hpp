@@ -66,7 +66,14 @@ struct IceSettings {
   double compressive_strength;  // Pa
   double shear_strength;        // Pa
   double poisson_ratio;         // -
+  bool contact_crushing;        // a contact's normal force limited to the crushing force
 };
+
+/// Largest normal force of one contact with crushing on: the compressive strength
+/// over a patch as wide as the ice is thick (ice.contact_crushing), N.
+inline double crushing_force(const IceSettings& ice) {
+  return ice.compressive_strength * ice.thickness * ice.thickness;
+}
 
 struct LayoutSettings {
   std::string file;  // absolute path of a floe file, or "" to generate

@@ -108,6 +108,7 @@ World::World(const Scene& scene) : scene_(scene) {
   contact.tolerance = scene.solver.tolerance;
   contact.friction_warm_start = scene.solver.friction_warm_start;
   contact.order = scene.solver.order_from_structure ? SweepOrder::kFromStructure : SweepOrder::kBullet;
+  contact.crushing_force = scene.ice.contact_crushing ? crushing_force(scene.ice) : 0.0;
   solver_ = std::make_unique<ContactSolver>(contact);
   dynamics_ = std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                               collision_config_.get());
