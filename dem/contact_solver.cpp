@@ -39,7 +39,7 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
     const int first = m_tmpSolverContactConstraintPool.size();
     convertContact(&manifold, info);  // Bullet's own set-up of the rows, normal impulses warm-started
     const int end = m_tmpSolverContactConstraintPool.size();
-    if (settings_.friction_warm_start) warm_start_friction(manifold, first, info);
+    if (settings_.friction_warm_start) warm_start_friction(first, info);
     // crushing: the pair's normal force is at most crushing_force, shared by its points
     if (settings_.crushing_force > 0 && end > first)
       for (int r = first; r < end; ++r)
@@ -57,8 +57,7 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
 // of every step must first rebuild it. Here the friction impulse vector the point
 // ended the last step with is projected onto the new directions, scaled like the
 // normal impulse (warm-starting factor) and kept inside the friction cone.
-void ContactSolver::warm_start_friction(btPersistentManifold& manifold, int first_row,
-                                        const btContactSolverInfo& info) {
+void ContactSolver::warm_start_friction(int first_row, const btContactSolverInfo& info) {
   const bool two = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
   for (int r = first_row; r < m_tmpSolverContactConstraintPool.size(); ++r) {
     const btSolverConstraint& contact = m_tmpSolverContactConstraintPool[r];
@@ -246,20 +245,26 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
   btVector3 load = structure_impulse();
   for (int iteration = 0; !contacts_done || iteration < joint_sweeps; ++iteration) {
     const bool contacts = !contacts_done;
-    if (contacts) remember_velocities();
+    // without a tolerance only the last two sweeps are measured: the residual reported
+    // is the last one's (and its rate needs the one before)
+    const bool measure = contacts && (settings_.tolerance > 0 || contact_sweeps + 2 >= cap);
+    if (measure) remember_velocities();
     const double impulse_change = sweep(iteration, contacts, from_structure && iteration % 2 == 1, info);
     if (!contacts) continue;
     ++contact_sweeps;
-    // the relative change of this sweep, and from it and the last one the error left
-    double largest_normal = 0.0;
-    for (int r : order_) largest_normal = std::max(largest_normal, double(m_tmpSolverContactConstraintPool[r].m_appliedImpulse));
     const btVector3 now = structure_impulse();
-    const double change = std::max((now - load).length() / std::max(double(now.length()), kImpulseFloor),
-                                   largest_body_impulse_change() / std::max(largest_normal, kImpulseFloor));
+    if (measure) {
+      // the relative change of this sweep, and from it and the last one the error left
+      double largest_normal = 0.0;
+      for (int r : order_) largest_normal = std::max(largest_normal, double(m_tmpSolverContactConstraintPool[r].m_appliedImpulse));
+      const double change = std::max((now - load).length() / std::max(double(now.length()), kImpulseFloor),
+                                     largest_body_impulse_change() / std::max(largest_normal, kImpulseFloor));
+      residual = remaining_error(change, previous_change, contact_sweeps);
+      previous_change = change;
+    }
     load = now;
-    residual = remaining_error(change, previous_change, contact_sweeps);
-    previous_change = change;
-    if (impulse_change == 0.0 || residual <= settings_.tolerance || contact_sweeps >= cap) contacts_done = true;
+    if (impulse_change == 0.0 || (measure && residual <= settings_.tolerance) || contact_sweeps >= cap)
+      contacts_done = true;
   }
   if (has_contacts) {
     report_.iterations = std::max(report_.iterations, contact_sweeps);

@@ -131,7 +131,7 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   void measure_bodies();
   void remember_velocities();
   double largest_body_impulse_change() const;
-  void warm_start_friction(btPersistentManifold& manifold, int first_row, const btContactSolverInfo& info);
+  void warm_start_friction(int first_row, const btContactSolverInfo& info);
   void build_order(bool from_structure);
   // one sweep over the joint rows (those with sweeps left) and, if `contacts`, the contact rows
   // in the given direction of the order; returns the largest change of a contact impulse, N s
