@@ -49,20 +49,23 @@ std::vector<KeySpec> make_keys() {
 
   // solver
   // Every key below marked "(profile)" takes its default from solver.profile when the
-  // scenario does not set it (dem/solver_profile.cpp); the default shown is "paper"'s.
-  k.push_back(choice("solver.profile", "paper", {"paper"},
-                     "solver settings as a set (dem/solver_profile.cpp): \"paper\" = the seed paper's "
+  // scenario does not set it (dem/solver_profile.cpp); the default shown is that of the
+  // default profile, "converged".
+  k.push_back(choice("solver.profile", "converged", {"converged", "paper"},
+                     "solver settings as a set (dem/solver_profile.cpp): \"converged\" = warm-started "
+                     "normal and friction impulses, sweeps until the residual is below 0.01 or 160 sweeps "
+                     "(the convergence study's choice, docs/convergence.md); \"paper\" = the seed paper's "
                      "numerics, 10 PGS sweeps a step on Bullet's solver as it comes"));
-  k.push_back(integer("solver.iterations", 10, 1, 100000,
+  k.push_back(integer("solver.iterations", 160, 1, 100000,
                       "(profile) cap of projected Gauss-Seidel sweeps over the contacts per island and "
                       "Bullet step"));
-  k.push_back(real("solver.tolerance", "-", 0.0, 0.0, 1.0,
+  k.push_back(real("solver.tolerance", "-", 0.01, 0.0, 1.0,
                    "(profile) an island stops sweeping once the relative change of its contact impulses "
                    "and of its load on the structure in a sweep is below this (dem/contact_solver.hpp); "
                    "0: always solver.iterations"));
-  k.push_back(real("solver.warm_start", "-", 0.85, 0.0, 1.0,
+  k.push_back(real("solver.warm_start", "-", 1.0, 0.0, 1.0,
                    "(profile) fraction of the last step's contact impulses a step starts from (Bullet: 0.85)"));
-  k.push_back(boolean("solver.friction_warm_start", false,
+  k.push_back(boolean("solver.friction_warm_start", true,
                       "(profile) warm-start friction impulses too (Bullet starts them from zero)"));
   k.push_back(choice("solver.order", "bullet", {"bullet", "structure"},
                      "(profile) order of the contact rows in a sweep: Bullet's, or by distance from the "

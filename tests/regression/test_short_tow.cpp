@@ -84,7 +84,8 @@ TEST(ShortTow, SolverReportsItsSweepsAndStopsEarlyWithATolerance) {
   // at the cap an island is reported capped only if its residual is above the tolerance
   if (s.solver.capped_steps == 0) EXPECT_LE(s.solver.residual_max, 0.01);
   // the paper profile runs the cap (10) wherever there are contacts
-  const Scene paper = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml");
+  const Scene paper =
+      load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml", {"solver.profile=paper"});
   const RunSummary p = run_simulation(paper, RunOptions{std::string(ICEDEM_TEST_TMP) + "/paper.h5", false, ""});
   EXPECT_EQ(p.solver.iterations_max, 10);
   EXPECT_GT(p.solver.capped_steps, 0);

@@ -51,6 +51,12 @@ TEST(Scenario, EveryStableKeyOfTheDesignExists) {
 }
 
 TEST(Scenario, SolverProfileFillsOnlyTheKeysTheScenarioLeavesUnset) {
+  // the default, "converged": warm-started normal and friction impulses, tolerance 0.01, cap 160
+  const Scene converged = scene_from("");
+  EXPECT_EQ(converged.solver.iterations, 160);
+  EXPECT_DOUBLE_EQ(converged.solver.tolerance, 0.01);
+  EXPECT_DOUBLE_EQ(converged.solver.warm_start, 1.0);
+  EXPECT_TRUE(converged.solver.friction_warm_start);
   // "paper": 10 sweeps, no tolerance, Bullet's warm start 0.85 (dem/solver_profile.cpp)
   const Scene paper = scene_from("[solver]\nprofile = \"paper\"\n");
   EXPECT_EQ(paper.solver.iterations, 10);
