@@ -58,7 +58,7 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
 // ended the last step with is projected onto the new directions, scaled like the
 // normal impulse (warm-starting factor) and kept inside the friction cone.
 void ContactSolver::warm_start_friction(int first_row, const btContactSolverInfo& info) {
-  const bool two = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
+  const bool two = two_directions_;
   for (int r = first_row; r < m_tmpSolverContactConstraintPool.size(); ++r) {
     const btSolverConstraint& contact = m_tmpSolverContactConstraintPool[r];
     const auto* point = static_cast<const btManifoldPoint*>(contact.m_originalContactPoint);
@@ -158,7 +158,7 @@ double ContactSolver::largest_body_impulse_change() const {
   return largest;
 }
 
-double ContactSolver::sweep(int iteration, bool contacts, bool reverse, const btContactSolverInfo& info) {
+double ContactSolver::sweep(int iteration, bool contacts, bool reverse) {
   // joints, as Bullet sweeps them: each row its own count (m_overrideNumSolverIterations)
   for (int j = 0; j < m_tmpSolverNonContactConstraintPool.size(); ++j) {
     btSolverConstraint& c = m_tmpSolverNonContactConstraintPool[m_orderNonContactConstraintPool[j]];
@@ -180,7 +180,7 @@ double ContactSolver::sweep(int iteration, bool contacts, bool reverse, const bt
       resolveSingleConstraintRowLowerLimit(m_tmpSolverBodyPool[c.m_solverBodyIdA], m_tmpSolverBodyPool[c.m_solverBodyIdB], c);
     change = std::max(change, double(std::abs(c.m_appliedImpulse - before)));
   }
-  const int per_contact = (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) ? 2 : 1;
+  const int per_contact = two_directions_ ? 2 : 1;
   for (int k = 0; k < n; ++k) {
     const btSolverConstraint& contact = m_tmpSolverContactConstraintPool[order_[reverse ? n - 1 - k : k]];
     const btScalar normal = contact.m_appliedImpulse;
@@ -249,7 +249,7 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
     // is the last one's (and its rate needs the one before)
     const bool measure = contacts && (settings_.tolerance > 0 || contact_sweeps + 2 >= cap);
     if (measure) remember_velocities();
-    const double impulse_change = sweep(iteration, contacts, from_structure && iteration % 2 == 1, info);
+    const double impulse_change = sweep(iteration, contacts, from_structure && iteration % 2 == 1);
     if (!contacts) continue;
     ++contact_sweeps;
     const btVector3 now = structure_impulse();
@@ -279,12 +279,11 @@ btScalar ContactSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies
                                                       const btContactSolverInfo& info) {
   // remember each point's friction impulse as a world vector for the next step
   if (settings_.friction_warm_start) {
-    const bool two = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
     for (int r = 0; r < m_tmpSolverContactConstraintPool.size(); ++r) {
       const btSolverConstraint& c = m_tmpSolverContactConstraintPool[r];
       const auto* point = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
       btVector3 t = point->m_lateralFrictionDir1 * m_tmpSolverContactFrictionConstraintPool[c.m_frictionIndex].m_appliedImpulse;
-      if (two) t += point->m_lateralFrictionDir2 * m_tmpSolverContactFrictionConstraintPool[c.m_frictionIndex + 1].m_appliedImpulse;
+      if (two_directions_) t += point->m_lateralFrictionDir2 * m_tmpSolverContactFrictionConstraintPool[c.m_frictionIndex + 1].m_appliedImpulse;
       friction_current_[point] = FrictionMemory{c.m_appliedImpulse, t};
     }
   }

@@ -135,14 +135,14 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   void build_order(bool from_structure);
   // one sweep over the joint rows (those with sweeps left) and, if `contacts`, the contact rows
   // in the given direction of the order; returns the largest change of a contact impulse, N s
-  double sweep(int iteration, bool contacts, bool reverse, const btContactSolverInfo& info);
+  double sweep(int iteration, bool contacts, bool reverse);
   btVector3 structure_impulse() const;
 
   ContactSolverSettings settings_;
   const btCollisionObject* structure_ = nullptr;
   SolverReport report_;
   std::vector<StructureRow> structure_rows_;  // of the current group
-  bool two_directions_ = false;               // two friction rows per contact (else one)
+  bool two_directions_ = false;               // two friction rows per contact (else one), set per group
   std::vector<int> order_;                    // contact rows of the current group, sweep order
   std::vector<BodyScale> bodies_;             // solver bodies of the current group
   std::unordered_map<const btManifoldPoint*, FrictionMemory> friction_previous_, friction_current_;

@@ -46,8 +46,9 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
     {"solver_iterations", "1", "most PGS sweeps over the contacts any island used in the step (the cap is solver.iterations)",
      &StepDiagnostics::solver_iterations},
     {"solver_residual", "1",
-     "largest residual an island ended the step's sweeps with: the relative change of its contact impulses and of "
-     "its load on the structure in the last sweep (dem/contact_solver.hpp)",
+     "largest residual an island ended the step's sweeps with: the relative change of its bodies' net impulses and "
+     "of its load on the structure in the last sweep over 1 - rate, an estimate of the error left "
+     "(dem/contact_solver.hpp)",
      &StepDiagnostics::solver_residual},
     {"solver_capped", "1", "1 if an island reached solver.iterations with its residual above solver.tolerance",
      &StepDiagnostics::solver_capped},

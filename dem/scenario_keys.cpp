@@ -60,9 +60,9 @@ std::vector<KeySpec> make_keys() {
                       "(profile) cap of projected Gauss-Seidel sweeps over the contacts per island and "
                       "Bullet step"));
   k.push_back(real("solver.tolerance", "-", 0.01, 0.0, 1.0,
-                   "(profile) an island stops sweeping once the relative change of its contact impulses "
-                   "and of its load on the structure in a sweep is below this (dem/contact_solver.hpp); "
-                   "0: always solver.iterations"));
+                   "(profile) an island stops sweeping once its residual, the relative error of its "
+                   "bodies' net impulses and of its load on the structure estimated from the last two "
+                   "sweeps, is below this (dem/contact_solver.hpp); 0: always solver.iterations"));
   k.push_back(real("solver.warm_start", "-", 1.0, 0.0, 1.0,
                    "(profile) fraction of the last step's contact impulses a step starts from (Bullet: 0.85)"));
   k.push_back(boolean("solver.friction_warm_start", true,

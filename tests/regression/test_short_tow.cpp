@@ -82,7 +82,9 @@ TEST(ShortTow, SolverReportsItsSweepsAndStopsEarlyWithATolerance) {
   EXPECT_LE(s.solver.iterations_max, 60);
   EXPECT_EQ(s.solver.cap, 60);
   // at the cap an island is reported capped only if its residual is above the tolerance
-  if (s.solver.capped_steps == 0) EXPECT_LE(s.solver.residual_max, 0.01);
+  if (s.solver.capped_steps == 0) {
+    EXPECT_LE(s.solver.residual_max, 0.01);
+  }
   // the paper profile runs the cap (10) wherever there are contacts
   const Scene paper =
       load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml", {"solver.profile=paper"});
