@@ -1,5 +1,8 @@
 #include "dem/fracture.hpp"
 
+#include <algorithm>
+
+#include "dem/break_context.hpp"
 #include "dem/bullet_eigen.hpp"
 
 namespace icedem {
@@ -56,12 +59,25 @@ void check_fracture(const Scene& scene, State& state, double h) {
     }
     double ratio = 0;
     const FailureMode mode = failure_mode(loads, capacity, ratio);
+    const Eigen::Vector3d at = body_pose(body_a) * joint.midpoint_a;
+    if (state.floe_margins.size() <= static_cast<std::size_t>(joint.floe))
+      state.floe_margins.resize(joint.floe + 1);
+    FloeFailureMargin& margin = state.floe_margins[joint.floe];
+    margin.max_ratio = std::max(margin.max_ratio, ratio);
+    margin.min_distance =
+        std::min(margin.min_distance, distance_from_structure(scene, state.structure_position, at));
     if (mode == FailureMode::kNone) continue;
 
-    const Eigen::Vector3d at = body_pose(body_a) * joint.midpoint_a;
-    state.fracture_events.push_back(
-        FractureEvent{state.time, joint.floe, joint.index, static_cast<int>(mode), ratio, at.x(), at.z()});
+    BreakContext context = break_context(world, joint.floe, at, state.structure_position, h);
+    context.ratios = criterion_ratios(loads, capacity);
+    const BreakMechanism mechanism = classify_break(context, scene.ice.thickness);
+    const std::array<double, kFailureModes>& r = context.ratios;  // FailureMode order
+    state.fracture_events.push_back(FractureEvent{
+        state.time, joint.floe, joint.index, static_cast<int>(mode), ratio, at.x(), at.z(),
+        static_cast<int>(mechanism), context.touching_structure ? 1 : 0, context.depth, context.distance,
+        context.structure_force, context.press_down, context.press_toward, r[0], r[1], r[2], r[3], r[4]});
     ++state.breaks_by_mode[static_cast<int>(mode)];
+    ++state.breaks_by_mechanism[static_cast<int>(mechanism)];
     world.break_joint(joint);
   }
 }

@@ -1,5 +1,6 @@
 #include "dem/joint_loads.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -37,24 +38,23 @@ JointCapacity paper_joint_capacity(double element_size, double thickness, double
                        element_size * thickness * thickness * bending_strength / 6.0, 0.0, 0.0};
 }
 
+std::array<double, kFailureModes> criterion_ratios(const JointLoads& l, const JointCapacity& c) {
+  auto r = [](double load, double capacity) { return capacity > 0 ? std::max(load, 0.0) / capacity : 0.0; };
+  std::array<double, kFailureModes> ratios{};
+  ratios[static_cast<int>(FailureMode::kCompression)] = r(-l.axial, c.compression);                           // eq. 1
+  ratios[static_cast<int>(FailureMode::kShear)] = r(std::hypot(l.shear_in_plane, l.shear_vertical), c.shear);  // eq. 2
+  ratios[static_cast<int>(FailureMode::kBending)] = r(std::abs(l.bending_out_of_plane), c.bending);            // eq. 3
+  ratios[static_cast<int>(FailureMode::kTension)] = r(l.axial, c.tension);
+  ratios[static_cast<int>(FailureMode::kInPlaneBending)] = r(std::abs(l.bending_in_plane), c.in_plane_bending);
+  return ratios;
+}
+
 FailureMode failure_mode(const JointLoads& l, const JointCapacity& c, double& ratio) {
-  FailureMode worst = FailureMode::kNone;
-  ratio = 0.0;
-  auto consider = [&](double load, double capacity, FailureMode mode) {
-    if (capacity <= 0) return;  // criterion off
-    const double r = load / capacity;
-    if (r > ratio) {
-      ratio = r;
-      if (r > 1.0) worst = mode;
-    }
-  };
-  consider(-l.axial, c.compression, FailureMode::kCompression);                                   // eq. 1
-  consider(std::hypot(l.shear_in_plane, l.shear_vertical), c.shear, FailureMode::kShear);          // eq. 2
-  consider(std::abs(l.bending_out_of_plane), c.bending, FailureMode::kBending);                    // eq. 3
-  consider(l.axial, c.tension, FailureMode::kTension);
-  consider(std::abs(l.bending_in_plane), c.in_plane_bending, FailureMode::kInPlaneBending);
-  if (ratio <= 1.0) worst = FailureMode::kNone;
-  return worst;
+  const std::array<double, kFailureModes> ratios = criterion_ratios(l, c);
+  // the first criterion with the largest ratio, in FailureMode order
+  const int worst = static_cast<int>(std::max_element(ratios.begin(), ratios.end()) - ratios.begin());
+  ratio = ratios[worst];
+  return ratio > 1.0 ? static_cast<FailureMode>(worst) : FailureMode::kNone;
 }
 
 }  // namespace icedem

@@ -8,6 +8,8 @@
 // the joint line.
 #pragma once
 
+#include <array>
+
 #include <Eigen/Core>
 
 namespace icedem {
@@ -45,6 +47,13 @@ struct JointCapacity {
 
 JointCapacity paper_joint_capacity(double element_size, double thickness, double compressive_strength,
                                    double shear_strength, double bending_strength);
+
+/// Number of failure criteria (FailureMode values 0 .. kFailureModes - 1).
+constexpr int kFailureModes = 5;
+
+/// Load / capacity of every criterion, indexed by FailureMode value; 0 for a
+/// criterion that is off (capacity <= 0) or loaded the other way.
+std::array<double, kFailureModes> criterion_ratios(const JointLoads& loads, const JointCapacity& capacity);
 
 /// The criterion that fails with the largest load/capacity ratio (> 1), or
 /// kNone. `ratio` receives that ratio (or the largest ratio below 1).

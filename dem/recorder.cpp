@@ -174,28 +174,54 @@ void write_fixed(const H5::Group& group, const std::string& name, const H5::Data
   write_attr(dataset, "description", description);
 }
 
-// fracture events: the in-memory layout is FractureEvent itself, the file layout is packed
+// fracture events: the in-memory layout is FractureEvent itself, the file layout is packed;
+// both are built from this one list of members
+struct EventMember {
+  const char* name;
+  std::size_t offset;
+  bool integer;  // i4, else f8
+};
+const std::vector<EventMember>& event_members() {
+  static const std::vector<EventMember> members{
+      {"time", offsetof(FractureEvent, time), false},
+      {"floe", offsetof(FractureEvent, floe), true},
+      {"joint", offsetof(FractureEvent, joint), true},
+      {"mode", offsetof(FractureEvent, mode), true},
+      {"ratio", offsetof(FractureEvent, ratio), false},
+      {"x", offsetof(FractureEvent, x), false},
+      {"z", offsetof(FractureEvent, z), false},
+      {"mechanism", offsetof(FractureEvent, mechanism), true},
+      {"touching_structure", offsetof(FractureEvent, touching_structure), true},
+      {"depth", offsetof(FractureEvent, depth), false},
+      {"distance", offsetof(FractureEvent, distance), false},
+      {"structure_force", offsetof(FractureEvent, structure_force), false},
+      {"press_down", offsetof(FractureEvent, press_down), false},
+      {"press_toward", offsetof(FractureEvent, press_toward), false},
+      {"ratio_compression", offsetof(FractureEvent, ratio_compression), false},
+      {"ratio_shear", offsetof(FractureEvent, ratio_shear), false},
+      {"ratio_bending", offsetof(FractureEvent, ratio_bending), false},
+      {"ratio_tension", offsetof(FractureEvent, ratio_tension), false},
+      {"ratio_in_plane_bending", offsetof(FractureEvent, ratio_in_plane_bending), false},
+  };
+  return members;
+}
+
 H5::CompType fracture_mem_type() {
   H5::CompType type(sizeof(FractureEvent));
-  type.insertMember("time", offsetof(FractureEvent, time), H5::PredType::NATIVE_DOUBLE);
-  type.insertMember("floe", offsetof(FractureEvent, floe), H5::PredType::NATIVE_INT);
-  type.insertMember("joint", offsetof(FractureEvent, joint), H5::PredType::NATIVE_INT);
-  type.insertMember("mode", offsetof(FractureEvent, mode), H5::PredType::NATIVE_INT);
-  type.insertMember("ratio", offsetof(FractureEvent, ratio), H5::PredType::NATIVE_DOUBLE);
-  type.insertMember("x", offsetof(FractureEvent, x), H5::PredType::NATIVE_DOUBLE);
-  type.insertMember("z", offsetof(FractureEvent, z), H5::PredType::NATIVE_DOUBLE);
+  for (const EventMember& m : event_members())
+    type.insertMember(m.name, m.offset, m.integer ? H5::PredType::NATIVE_INT : H5::PredType::NATIVE_DOUBLE);
   return type;
 }
 
 H5::CompType fracture_file_type() {
-  H5::CompType type(std::size_t(44));
-  type.insertMember("time", 0, H5::PredType::IEEE_F64LE);
-  type.insertMember("floe", 8, H5::PredType::STD_I32LE);
-  type.insertMember("joint", 12, H5::PredType::STD_I32LE);
-  type.insertMember("mode", 16, H5::PredType::STD_I32LE);
-  type.insertMember("ratio", 20, H5::PredType::IEEE_F64LE);
-  type.insertMember("x", 28, H5::PredType::IEEE_F64LE);
-  type.insertMember("z", 36, H5::PredType::IEEE_F64LE);
+  std::size_t size = 0;
+  for (const EventMember& m : event_members()) size += m.integer ? 4 : 8;
+  H5::CompType type(size);
+  std::size_t offset = 0;
+  for (const EventMember& m : event_members()) {
+    type.insertMember(m.name, offset, m.integer ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE);
+    offset += m.integer ? 4 : 8;
+  }
   return type;
 }
 
@@ -423,9 +449,15 @@ struct Recorder::Impl {
     // fracture events
     H5::Group fracture = file->createGroup("/fracture");
     events = create_series(fracture, "events", fracture_file_type(), {}, 256,
-                           "time: s, floe: 1, joint: 1, mode: 1, ratio: 1",
-                           "joint breaks: time, floe id, joint index, failure mode code, "
-                           "load/threshold ratio of the criterion that fired");
+                           "time: s, floe: 1, joint: 1, mode: 1, ratio: 1, x: m, z: m, mechanism: 1, "
+                           "touching_structure: 1, depth: m, distance: m, structure_force: N, "
+                           "press_down: N, press_toward: N, ratio_*: 1",
+                           "joint breaks: time, floe id, joint index, failure mode code, load/threshold "
+                           "ratio of the criterion that fired, joint midpoint, and the floe's state at "
+                           "the break: mechanism code, contact with the structure, depth below the "
+                           "waterline, distance from the structure's waterline section, contact forces "
+                           "of the structure and of other floes (down, towards the axis), load ratio "
+                           "of every criterion");
     flush_file();
   }
 
@@ -538,6 +570,29 @@ void Recorder::append_fracture(const FractureEvent& event) {
       throw std::runtime_error("cannot write fracture events to '" + impl_->path +
                                "': " + hdf5_reason(e));
     }
+  }
+}
+
+void Recorder::write_floe_margins(const std::vector<double>& max_ratio,
+                                  const std::vector<double>& min_distance) {
+  impl_->require_open("write_floe_margins");
+  if (max_ratio.size() != min_distance.size())
+    throw std::invalid_argument("Recorder::write_floe_margins: one ratio and one distance per floe");
+  QuietHdf5 quiet;
+  try {
+    const H5::Group fracture = impl_->file->openGroup("/fracture");
+    const hsize_t n = max_ratio.size();
+    write_fixed(fracture, "floe_max_ratio", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
+                max_ratio.data(), "1",
+                "per layout floe: the largest load / capacity ratio of any of its joints under any "
+                "criterion over the run (0 for rigid floes and lattices never awake)");
+    write_fixed(fracture, "floe_min_distance", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
+                min_distance.data(), "m",
+                "per layout floe: the closest a joint midpoint came to the structure's waterline "
+                "section, horizontally (inf if never checked)");
+    impl_->flush_file();
+  } catch (const H5::Exception& e) {
+    throw std::runtime_error("cannot write floe margins to '" + impl_->path + "': " + hdf5_reason(e));
   }
 }
 

@@ -28,9 +28,19 @@
 //   /snapshots/position        [k x nb x 3] f8  m     body origin, tank frame
 //   /snapshots/orientation     [k x nb x 4] f8  1     body-to-tank rotation, quaternion w,x,y,z
 //   /snapshots/awake           [k x nb]     u1  1     1 if the body was awake
-//   /fracture/events           [e]          compound (time f8 s, floe i4, joint i4, mode i4,
-//                                                     ratio f8 = load / threshold, x f8 m, z f8 m:
-//                                                     joint midpoint, tank frame); may be empty
+//   /fracture/events           [e]          compound, one row per joint break (may be empty):
+//                                                     time f8 s, floe i4, joint i4, mode i4,
+//                                                     ratio f8 = load / threshold, x f8 m, z f8 m
+//                                                     (joint midpoint, tank frame), mechanism i4,
+//                                                     touching_structure i4, depth f8 m,
+//                                                     distance f8 m, structure_force f8 N,
+//                                                     press_down f8 N, press_toward f8 N,
+//                                                     ratio_<criterion> f8 (the FractureEvent
+//                                                     fields); attributes mode_names and
+//                                                     mechanism_names (code -> name)
+//   /fracture/floe_max_ratio   [f]          f8  1     per layout floe: largest joint load ratio
+//   /fracture/floe_min_distance [f]         f8  m     per layout floe: closest approach of its
+//                                                     joints to the structure (horizontal) (inf: never awake)
 //   /meta   attributes: scenario (resolved TOML text), scenario_path, command_line, version,
 //           bullet_version, precision, seed (u8), format_version (i4), started_utc (ISO 8601),
 //           status, message, wall_time_s, finished_utc (after finish()).
@@ -104,15 +114,27 @@ struct LoadSample {
   StepDiagnostics diagnostics;         // speeds, energy, ice mass, joint gap, cone penetration
 };
 
-/// One joint break.
+/// One joint break, with what its floe was doing (dem/break_context.hpp).
 struct FractureEvent {
   double time;   // s
   int floe;      // floe id
   int joint;     // joint index within the floe
-  int mode;      // failure mode code (defined by the fracture module)
+  int mode;      // failure mode code (FailureMode, dem/joint_loads.hpp)
   double ratio;  // 1, load / threshold of the criterion that fired (>= 1)
   double x = 0;  // m, joint midpoint at the break, tank frame
   double z = 0;  // m
+  int mechanism = 0;             // BreakMechanism code
+  int touching_structure = 0;    // 1 if an element of the floe touched the structure
+  double depth = 0;              // m, joint midpoint below the waterline (+ down)
+  double distance = 0;           // m, horizontally from the structure's section at its height
+  double structure_force = 0;    // N, the structure's contact force on the floe
+  double press_down = 0;         // N, other floes' contact force on it, downward
+  double press_toward = 0;       // N, the same, towards the structure axis
+  double ratio_compression = 0;  // 1, load / capacity of each criterion (eq. 1-3)
+  double ratio_shear = 0;
+  double ratio_bending = 0;
+  double ratio_tension = 0;
+  double ratio_in_plane_bending = 0;
 };
 
 /// Writes one run's HDF5 output file; see the layout at the top of this header.
@@ -141,6 +163,10 @@ class Recorder {
 
   /// Buffers one fracture event.
   void append_fracture(const FractureEvent& event);
+
+  /// Writes /fracture/floe_max_ratio and /fracture/floe_min_distance (one value per layout
+  /// floe; call once, at the end of a run with breakable floes).
+  void write_floe_margins(const std::vector<double>& max_ratio, const std::vector<double>& min_distance);
 
   /// Writes numeric attributes (f8) on `group` (e.g. "/stats", "/layout"), creating the group
   /// if needed and replacing attributes of the same name. `group` may also name a dataset.

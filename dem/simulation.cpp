@@ -148,6 +148,36 @@ void write_statistics(Recorder& rec, const RunSummary& s) {
   if (!s.has_statistics) rec.set_attribute("/stats", "note", s.statistics_note);
 }
 
+// "0 compression, 1 shear, ...": the code -> name attributes of /fracture/events
+std::string mode_names() {
+  std::string out;
+  for (int m = 0; m < kFailureModes; ++m)
+    out += fmt::format("{}{} {}", m ? ", " : "", m, failure_mode_name(static_cast<FailureMode>(m)));
+  return out;
+}
+
+std::string mechanism_names() {
+  std::string out;
+  for (int m = 0; m < kBreakMechanisms; ++m)
+    out += fmt::format("{}{} {}", m ? ", " : "", m, break_mechanism_name(static_cast<BreakMechanism>(m)));
+  return out;
+}
+
+// how close every floe's joints came to failing: all floes in the file, the ones that came
+// near the structure in the summary (runs with breakable floes only)
+void record_floe_margins(const State& state, Recorder& recorder, RunSummary& summary) {
+  if (state.floe_margins.empty()) return;
+  std::vector<FloeFailureMargin> margins = state.floe_margins;  // floes without joints (yet) at the end
+  margins.resize(std::max<std::size_t>(margins.size(), summary.floes));
+  std::vector<double> ratio, distance;
+  for (const FloeFailureMargin& m : margins) {
+    ratio.push_back(m.max_ratio);
+    distance.push_back(m.min_distance);
+    if (m.min_distance <= kNearStructureDistance) summary.near_structure_max_ratio.push_back(m.max_ratio);
+  }
+  recorder.write_floe_margins(ratio, distance);
+}
+
 }  // namespace
 
 RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
@@ -171,8 +201,8 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
                                       {"achieved_concentration", layout.achieved_concentration},
                                       {"target_concentration", scene.ice.concentration},
                                       {"channel_area_m2", layout.channel_area}});
-  recorder.set_attribute("/fracture/events", "mode_names",
-                         "0 compression, 1 shear, 2 bending, 3 tension, 4 in-plane bending");
+  recorder.set_attribute("/fracture/events", "mode_names", mode_names());
+  recorder.set_attribute("/fracture/events", "mechanism_names", mechanism_names());
   recorder.set_attribute("/layout", "source", scene.layout.file.empty() ? "generated" : scene.layout.file);
 
   const long total_steps = std::lround(scene.time.duration / scene.time.dt);
@@ -245,6 +275,8 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.first_contact_s = state.first_contact_time ? *state.first_contact_time : -1.0;
   summary.stage_times = state.stage_times;
   summary.breaks_by_mode = state.breaks_by_mode;
+  summary.breaks_by_mechanism = state.breaks_by_mechanism;
+  record_floe_margins(state, recorder, summary);
   for (int n : state.breaks_by_mode) summary.breaks += n;
   compute_statistics(scene, history, summary);
   summary.solver = solver_summary(scene, history, summary);

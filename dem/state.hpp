@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "dem/break_context.hpp"
 #include "dem/diagnostics.hpp"
 #include "dem/drag_exchange.hpp"
 #include "dem/flow_field.hpp"
@@ -53,7 +54,9 @@ struct State {
   std::optional<double> first_contact_time;  // s, first step with ice on the structure
 
   std::vector<FractureEvent> fracture_events;  // breaks of the last step; written by check_fracture
-  std::array<int, 5> breaks_by_mode{};         // all breaks so far, by FailureMode value
+  std::array<int, kFailureModes> breaks_by_mode{};           // all breaks so far, by FailureMode value
+  std::array<int, kBreakMechanisms> breaks_by_mechanism{};   // all breaks so far, by BreakMechanism value
+  std::vector<FloeFailureMargin> floe_margins;  // per layout floe with joints: how close they came to failing
   std::vector<JointLoads> filtered_joint_loads;  // low-passed loads per World::joints() entry
                                                  // (fracture.load_filter_time > 0)
 

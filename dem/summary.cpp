@@ -1,6 +1,8 @@
 #include "dem/summary.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -10,6 +12,12 @@
 namespace icedem {
 
 namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
 
 // sweeps per step, and a warning when the cap, not the tolerance, ended the sweeps
 // of many steps: the loads of those steps are not converged (README, "Convergence")
@@ -75,6 +83,18 @@ std::string summary_table(const RunSummary& s) {
   out += fmt::format("  load peaks {:d}, mean spacing {} s; breaks {:d} (compression {}, shear {}, bending {})\n",
                      st.peaks, std::isfinite(st.peak_interval_s) ? fmt::format("{:.2f}", st.peak_interval_s) : "n/a",
                      s.breaks, s.breaks_by_mode[0], s.breaks_by_mode[1], s.breaks_by_mode[2]);
+  if (s.breaks > 0)
+    for (int m = 0; m < kBreakMechanisms; ++m)
+      out += fmt::format("{}{} {}{}", m ? ", " : "  breaks by mechanism: ",
+                         break_mechanism_name(static_cast<BreakMechanism>(m)), s.breaks_by_mechanism[m],
+                         m + 1 == kBreakMechanisms ? "\n" : "");
+  if (!s.near_structure_max_ratio.empty()) {
+    const auto& r = s.near_structure_max_ratio;
+    const long over_half = std::count_if(r.begin(), r.end(), [](double x) { return x >= 0.5; });
+    out += fmt::format("  floes near the structure: {:d}; their largest joint load ratio: median {:.2f}, "
+                       "max {:.2f}; {:d} reached half their capacity\n",
+                       r.size(), median(r), *std::max_element(r.begin(), r.end()), over_half);
+  }
   return out;
 }
 
@@ -100,8 +120,11 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["peak_interval_s"] = ok ? num(s.surge.peak_interval_s) : nullptr;
   j["first_contact_s"] = s.first_contact_s >= 0 ? num(s.first_contact_s) : nullptr;
   j["breaks"] = s.breaks;
-  for (int m = 0; m < 5; ++m)
+  for (int m = 0; m < kFailureModes; ++m)
     j["breaks_by_mode"][failure_mode_name(static_cast<FailureMode>(m))] = s.breaks_by_mode[m];
+  for (int m = 0; m < kBreakMechanisms; ++m)
+    j["breaks_by_mechanism"][break_mechanism_name(static_cast<BreakMechanism>(m))] = s.breaks_by_mechanism[m];
+  j["near_structure_max_ratio"] = s.near_structure_max_ratio;
   j["steps"] = s.steps;
   j["sim_time_s"] = s.sim_time_s;
   j["wall_time_s"] = s.wall_time_s;

@@ -48,7 +48,12 @@ struct RunSummary {
   double achieved_concentration = 0.0;
   double mean_awake = 0.0;  // floes simulated per step, averaged over the run
   int breaks = 0;           // joint failures (0 with rigid floes)
-  std::array<int, 5> breaks_by_mode{};  // by FailureMode: compression, shear, bending, tension, in-plane bending
+  std::array<int, kFailureModes> breaks_by_mode{};  // by FailureMode: compression, shear, bending, tension,
+                                                   // in-plane bending
+  std::array<int, kBreakMechanisms> breaks_by_mechanism{};  // by BreakMechanism
+  // per floe with joints that came within kNearStructureDistance of the structure: the largest
+  // load / capacity ratio of its joints over the run (dem/break_context.hpp)
+  std::vector<double> near_structure_max_ratio;
   StageTimes stage_times;   // s of wall time per stage of step()
   SolverSummary solver;     // sweeps, residuals and capped steps of the contact solver
   DiagnosticExtremes health;  // extremes of the per-step diagnostics (speeds, energy, ice mass, ...)

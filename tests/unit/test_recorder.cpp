@@ -10,9 +10,11 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <tuple>
 #include <vector>
 
 namespace icedem {
@@ -160,7 +162,9 @@ TEST(Recorder, RoundTripKeepsEveryValueAndShape) {
   const int n = 1234;  // two full 500-row blocks and a partial one
   const int k = 7;
   const std::vector<FractureEvent> events{
-      {1.5, 2, 17, 1, 1.02, 3.25, -0.5}, {1.5, 2, 18, 3, 1.5, 3.5, 0.125}, {9.25, 5, 0, 2, 3.75, 7.0, 1.0}};
+      {1.5, 2, 17, 1, 1.02, 3.25, -0.5, 1, 1, 0.05, 0.0, 12.5, 3.0, 4.0, 0.1, 1.02, 0.3, 0.0, 0.0},
+      {1.5, 2, 18, 3, 1.5, 3.5, 0.125, 3, 0, 0.01, 0.75, 0.0, 0.0, 0.5, 0.2, 0.1, 0.4, 1.5, 0.0},
+      {9.25, 5, 0, 2, 3.75, 7.0, 1.0, 2, 0, 0.2, 0.125, 0.0, 25.0, 2.0, 0.0, 0.0, 3.75, 0.0, 0.25}};
   {
     Recorder rec(path, test_meta(), bodies);
     for (int i = 0; i < n; ++i) {
@@ -221,32 +225,54 @@ TEST(Recorder, RoundTripKeepsEveryValueAndShape) {
     }
   }
 
-  // fracture events: compound (time, floe, joint, mode, ratio, x, z)
+  // fracture events: a compound of every FractureEvent field, in declaration order; read back
+  // by name into the in-memory struct, every field must survive exactly
   EXPECT_EQ(shape(file, "/fracture/events"), (std::vector<hsize_t>{3}));
   H5::DataSet event_set = file.openDataSet("/fracture/events");
   H5::CompType event_type = event_set.getCompType();
-  ASSERT_EQ(event_type.getNmembers(), 7);
+  ASSERT_EQ(event_type.getNmembers(), 19);
   EXPECT_EQ(event_type.getMemberName(0), "time");
   EXPECT_EQ(event_type.getMemberName(4), "ratio");
   EXPECT_EQ(event_type.getMemberName(6), "z");
+  EXPECT_EQ(event_type.getMemberName(7), "mechanism");
+  EXPECT_EQ(event_type.getMemberName(18), "ratio_in_plane_bending");
   H5::CompType mem(sizeof(FractureEvent));
-  mem.insertMember("time", offsetof(FractureEvent, time), H5::PredType::NATIVE_DOUBLE);
-  mem.insertMember("floe", offsetof(FractureEvent, floe), H5::PredType::NATIVE_INT);
-  mem.insertMember("joint", offsetof(FractureEvent, joint), H5::PredType::NATIVE_INT);
-  mem.insertMember("mode", offsetof(FractureEvent, mode), H5::PredType::NATIVE_INT);
-  mem.insertMember("ratio", offsetof(FractureEvent, ratio), H5::PredType::NATIVE_DOUBLE);
-  mem.insertMember("x", offsetof(FractureEvent, x), H5::PredType::NATIVE_DOUBLE);
-  mem.insertMember("z", offsetof(FractureEvent, z), H5::PredType::NATIVE_DOUBLE);
+  auto f8 = [&](const char* name, std::size_t offset) { mem.insertMember(name, offset, H5::PredType::NATIVE_DOUBLE); };
+  auto i4 = [&](const char* name, std::size_t offset) { mem.insertMember(name, offset, H5::PredType::NATIVE_INT); };
+  f8("time", offsetof(FractureEvent, time));
+  i4("floe", offsetof(FractureEvent, floe));
+  i4("joint", offsetof(FractureEvent, joint));
+  i4("mode", offsetof(FractureEvent, mode));
+  f8("ratio", offsetof(FractureEvent, ratio));
+  f8("x", offsetof(FractureEvent, x));
+  f8("z", offsetof(FractureEvent, z));
+  i4("mechanism", offsetof(FractureEvent, mechanism));
+  i4("touching_structure", offsetof(FractureEvent, touching_structure));
+  f8("depth", offsetof(FractureEvent, depth));
+  f8("distance", offsetof(FractureEvent, distance));
+  f8("structure_force", offsetof(FractureEvent, structure_force));
+  f8("press_down", offsetof(FractureEvent, press_down));
+  f8("press_toward", offsetof(FractureEvent, press_toward));
+  f8("ratio_compression", offsetof(FractureEvent, ratio_compression));
+  f8("ratio_shear", offsetof(FractureEvent, ratio_shear));
+  f8("ratio_bending", offsetof(FractureEvent, ratio_bending));
+  f8("ratio_tension", offsetof(FractureEvent, ratio_tension));
+  f8("ratio_in_plane_bending", offsetof(FractureEvent, ratio_in_plane_bending));
   std::vector<FractureEvent> back(3);
   event_set.read(back.data(), mem);
   for (std::size_t i = 0; i < events.size(); ++i) {
-    EXPECT_EQ(back[i].time, events[i].time);
-    EXPECT_EQ(back[i].floe, events[i].floe);
-    EXPECT_EQ(back[i].joint, events[i].joint);
-    EXPECT_EQ(back[i].mode, events[i].mode);
-    EXPECT_EQ(back[i].ratio, events[i].ratio);
-    EXPECT_EQ(back[i].x, events[i].x);
-    EXPECT_EQ(back[i].z, events[i].z);
+    const FractureEvent& a = back[i];
+    const FractureEvent& b = events[i];
+    EXPECT_EQ(std::make_tuple(a.time, a.floe, a.joint, a.mode, a.ratio, a.x, a.z),
+              std::make_tuple(b.time, b.floe, b.joint, b.mode, b.ratio, b.x, b.z));
+    EXPECT_EQ(std::make_tuple(a.mechanism, a.touching_structure, a.depth, a.distance, a.structure_force,
+                              a.press_down, a.press_toward),
+              std::make_tuple(b.mechanism, b.touching_structure, b.depth, b.distance, b.structure_force,
+                              b.press_down, b.press_toward));
+    EXPECT_EQ(std::make_tuple(a.ratio_compression, a.ratio_shear, a.ratio_bending, a.ratio_tension,
+                              a.ratio_in_plane_bending),
+              std::make_tuple(b.ratio_compression, b.ratio_shear, b.ratio_bending, b.ratio_tension,
+                              b.ratio_in_plane_bending));
   }
   EXPECT_EQ(string_attr(event_set, "mode_names"), "1 compression, 2 shear, 3 bending");
 
