@@ -6,6 +6,8 @@
 #include <cmath>
 #include <csignal>
 
+#include <sys/resource.h>
+
 #include <LinearMath/btScalar.h>
 #include <fmt/format.h>
 
@@ -134,6 +136,7 @@ void write_statistics(Recorder& rec, const RunSummary& s) {
   std::map<std::string, double> a{{"steps", double(s.steps)},
                                   {"sim_time_s", s.sim_time_s},
                                   {"wall_time_s", s.wall_time_s},
+                                  {"cpu_time_s", s.cpu_time_s},
                                   {"mean_awake", s.mean_awake},
                                   {"breaks", double(s.breaks)},
                                   {"first_contact_s", s.first_contact_s}};
@@ -146,6 +149,14 @@ void write_statistics(Recorder& rec, const RunSummary& s) {
   }
   rec.set_attributes("/stats", a);
   if (!s.has_statistics) rec.set_attribute("/stats", "note", s.statistics_note);
+}
+
+// user + system CPU seconds of this process so far
+double process_cpu_time() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  auto seconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
 // "0 compression, 1 shear, ...": the code -> name attributes of /fracture/events
@@ -282,6 +293,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.solver = solver_summary(scene, history, summary);
   summary.validation = validation.result(scene);
   summary.wall_time_s = wall();
+  summary.cpu_time_s = process_cpu_time();
   write_statistics(recorder, summary);
   recorder.finish(summary.status, summary.message, summary.wall_time_s);
   return summary;

@@ -128,6 +128,7 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["steps"] = s.steps;
   j["sim_time_s"] = s.sim_time_s;
   j["wall_time_s"] = s.wall_time_s;
+  j["cpu_time_s"] = s.cpu_time_s;
   j["realtime_factor"] = s.wall_time_s > 0 ? num(s.sim_time_s / s.wall_time_s) : nullptr;
   j["steps_per_second"] = s.wall_time_s > 0 ? num(s.steps / s.wall_time_s) : nullptr;
   j["floes"] = s.floes;

@@ -44,6 +44,7 @@ struct RunSummary {
   long steps = 0;
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;
+  double cpu_time_s = 0.0;   // user + system CPU time of the process (a shared machine's fair cost)
   int floes = 0;
   double achieved_concentration = 0.0;
   double mean_awake = 0.0;  // floes simulated per step, averaged over the run
