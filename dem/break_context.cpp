@@ -12,7 +12,7 @@ const char* break_mechanism_name(BreakMechanism mechanism) {
   switch (mechanism) {
     case BreakMechanism::kOnSlope: return "on the slope";
     case BreakMechanism::kPressedUnder: return "pressed under";
-    case BreakMechanism::kUnderPack: return "under the pack";
+    case BreakMechanism::kInRubble: return "in the rubble";
     case BreakMechanism::kInPack: return "in the pack";
   }
   return "unknown";
@@ -80,7 +80,7 @@ BreakContext break_context(const World& world, int floe_id, const Eigen::Vector3
 
 BreakMechanism classify_break(const BreakContext& c, double thickness) {
   const bool submerged = c.depth >= thickness;
-  if (!c.touching_structure) return submerged ? BreakMechanism::kUnderPack : BreakMechanism::kInPack;
+  if (!c.touching_structure) return submerged ? BreakMechanism::kInRubble : BreakMechanism::kInPack;
   const bool pressed = c.press_down + c.press_toward > kPressingForce;
   return submerged && pressed ? BreakMechanism::kPressedUnder : BreakMechanism::kOnSlope;
 }

@@ -29,7 +29,8 @@ class World;
 enum class BreakMechanism : int {
   kOnSlope = 0,       // the floe touches the structure and is not pressed under by another floe
   kPressedUnder = 1,  // the floe touches the structure, is submerged and another floe presses it
-  kUnderPack = 2,     // the floe does not touch the structure and is submerged (under other ice)
+  kInRubble = 2,      // the floe does not touch the structure but is submerged: on or under the ice
+                      // riding down the slope between it and the structure
   kInPack = 3,        // the floe does not touch the structure and is afloat
 };
 constexpr int kBreakMechanisms = 4;
@@ -75,7 +76,7 @@ double distance_from_structure(const Scene& scene, const Eigen::Vector3d& struct
 /// thickness deep (the floe's top half a thickness under water; afloat the
 /// midpoint is 0.4 h deep). Touching the structure: pressed under if submerged
 /// and another floe presses it by more than kPressingForce, else on the slope.
-/// Not touching: under the pack if submerged, else in the pack.
+/// Not touching: in the rubble if submerged, else in the pack.
 BreakMechanism classify_break(const BreakContext& context, double thickness);
 
 /// How close a floe's joints came to failing: the largest load ratio under any

@@ -15,11 +15,14 @@
   spectrum_<scenario>.png       ensemble load spectra (Welch, mean over seeds) at f_ii = 0.5
                                 for each f_is, with the floe-passage frequency v/L marked
                                 (the paper's "peaks at about 4 s intervals")
+  ratios_<scenario>.png         breakable floes: histogram of the largest joint load ratio of
+                                every floe that came within 1 m of the structure, per f_ii
 
-and, beside the run the top view shows, run.xdmf and run_views.h5: its snapshots
+The drawn runs' HDF5 files are needed; a run known only by its kept record
+(sweeplib/spec.py) is run again for them. And, beside the run the top view shows, run.xdmf and run_views.h5: its snapshots
 for ParaView (scripts/xdmf_snapshots.py).
 
-    scripts/sweep_figures.py SWEEP.toml [--out DIR] [--figures DIR]
+    scripts/sweep_figures.py SWEEP.toml [--out DIR] [--figures DIR] [--icedem PATH]
 """
 import argparse
 import csv
@@ -36,7 +39,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweeplib import execute, spec  # noqa: E402
+from sweeplib import aggregate as agg, execute, spec  # noqa: E402
 
 FII, FIS = "friction.ice_ice", "friction.ice_structure"
 
@@ -242,24 +245,61 @@ def spectrum(runs, out, rows, scenario, path):
     return True
 
 
+def ratios(records, scenario, path):
+    """Histogram of the largest joint load ratio of every floe that came near the structure
+    (summary near_structure_max_ratio), one line per f_ii; False without breakable floes."""
+    by_fii = {}
+    for r, rec in records.items():
+        if r.scenario == scenario:
+            by_fii.setdefault(dict(r.grid).get(FII), []).extend(rec["summary"].get("near_structure_max_ratio", []))
+    if not any(by_fii.values()):
+        return False
+    fig, ax = plt.subplots(figsize=(7, 3.6))
+    top = max(1.3, max(max(v) for v in by_fii.values() if v))
+    bins = np.linspace(0, top, 40)
+    for fii in sorted(by_fii, key=lambda v: (v is None, v)):
+        v = by_fii[fii]
+        if v:
+            ax.hist(v, bins=bins, histtype="step", density=True, lw=1.3,
+                    label=f"f_ii = {fii} ({len(v)} floes)" if fii is not None else f"{len(v)} floes")
+    ax.axvline(1.0, color="k", ls="--", lw=0.8, label="capacity (eq. 1-3): breaks")
+    ax.set_xlabel("largest joint load / capacity of a floe near the structure")
+    ax.set_ylabel("probability density")
+    ax.set_title(f"{scenario}: how close the floes within 1 m of the structure came to breaking", fontsize=9)
+    ax.legend(fontsize=7)
+    ax.grid(alpha=0.3)
+    save(fig, path)
+    return True
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("sweep")
     ap.add_argument("--out", help="the sweep's output directory (default sweeps/<name>)")
     ap.add_argument("--figures", help="where the PNGs go (default OUT/figures)")
+    ap.add_argument("--icedem", default=execute.DEFAULT_ICEDEM,
+                    help="to run again the drawn runs known only by their kept records")
     args = ap.parse_args()
     name, runs = spec.load(args.sweep)
     out = os.path.abspath(args.out or os.path.join(spec.ROOT, "sweeps", name))
     figs = args.figures or os.path.join(out, "figures")
     os.makedirs(figs, exist_ok=True)
     rows = load_rows(out)
+    # the runs drawn from their HDF5 files (a kept record holds no time series): run again
+    # those finished on another machine
+    lowest = min(r.seed for r in runs)
+    drawn = [r for r in runs if dict(r.grid).get(FII, 0.5) == 0.5 and r.seed == lowest
+             and execute.status(r, out).state == "done"]
+    execute.run_here(drawn, out, os.path.abspath(args.icedem))
+    records = {r: agg.load_record(r, out) for r in runs if execute.status(r, out).state == "done"}
     written = []
     for scenario in dict.fromkeys(r.scenario for r in runs):
         for kind, fn in (("loads_vs_fis", lambda p: loads_vs_fis(rows, scenario, p)),
                          ("history", lambda p: history(runs, out, scenario, p)),
                          ("topview", lambda p: topview(runs, out, scenario, p)),
                          ("frontview", lambda p: front_view(runs, out, scenario, p)),
-                         ("spectrum", lambda p: spectrum(runs, out, rows, scenario, p))):
+                         ("spectrum", lambda p: spectrum(runs, out, rows, scenario, p)),
+                         ("ratios", lambda p: ratios(records, scenario, p))):
             p = os.path.join(figs, f"{kind}_{scenario}.png")
             if fn(p):
                 written.append(p)

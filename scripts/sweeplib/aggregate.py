@@ -10,7 +10,8 @@ grid combination, over its seeds):
   the frequency of the largest power of the ensemble spectrum (the Welch spectra
   of the seeds' surge loads over their analysis windows, averaged), searched
   above MIN_PEAK_HZ (its period beside it);
-- breaks by failure mode, summed over seeds.
+- breaks by failure mode and by mechanism (dem/break_context.hpp), summed over seeds;
+- the summed run time, wall and CPU.
 
 Written as one table: CSV and HDF5 (a compound dataset /configurations, and the
 ensemble spectra under /spectra/<row index>).
@@ -25,6 +26,7 @@ import numpy as np
 from scipy import signal, stats
 
 MODES = ("compression", "shear", "bending", "tension", "in_plane_bending")
+MECHANISMS = ("on_the_slope", "pressed_under", "in_the_rubble", "in_the_pack")
 SEGMENT_S = 60.0
 # The load spectrum of a pack is red: its largest power sits at the lowest bin,
 # the slow build-up and release of the compacted pack over tens of seconds. The
@@ -101,23 +103,83 @@ def mode_key(name):
     return name.replace("-", "_").replace(" ", "_")
 
 
-def run_record(run_dir):
-    """What aggregation needs from one finished run: its summary and its load spectrum."""
+# A record keeps the spectrum up to this frequency: the peaks of interest (floe
+# passages at 0.1-0.3 Hz) lie far below it, and the record stays a few kB.
+RECORD_MAX_HZ = 2.0
+
+
+def _names(attribute):
+    """{code: name} from an attribute like "0 compression, 1 shear"."""
+    out = {}
+    for part in (attribute or "").split(","):
+        code, _, name = part.strip().partition(" ")
+        if code.lstrip("-").isdigit():
+            out[int(code)] = name
+    return out
+
+
+def make_record(run_dir):
+    """The record of a finished run, from its directory: its summary, the Welch spectrum of its
+    surge load over the analysis window (up to RECORD_MAX_HZ) and its breaks (every field of
+    /fracture/events, mode and mechanism also by name)."""
     with open(os.path.join(run_dir, "summary.json")) as f:
-        s = json.load(f)
-    spectrum = (np.array([]), np.array([]))
-    start, end = s.get("window_start_s"), s.get("window_end_s")
-    if start is not None and end is not None:
-        with h5py.File(os.path.join(run_dir, "run.h5"), "r") as h:
+        summary = json.load(f)
+    freq, power, events = [], [], []
+    with h5py.File(os.path.join(run_dir, "run.h5"), "r") as h:
+        start, end = summary.get("window_start_s"), summary.get("window_end_s")
+        if start is not None and end is not None:
             t = h["/load/time"][:]
             x = h["/load/surge"][:]
-        sel = (t >= start) & (t <= end)
-        spectrum = welch_spectrum(t[sel], x[sel])
+            sel = (t >= start) & (t <= end)
+            f, p = welch_spectrum(t[sel], x[sel])
+            keep = f <= RECORD_MAX_HZ
+            freq, power = f[keep].tolist(), [float(f"{v:.6g}") for v in p[keep]]
+        if "/fracture/events" in h:
+            ev = h["/fracture/events"]
+            modes = _names(ev.attrs.get("mode_names"))
+            mechanisms = _names(ev.attrs.get("mechanism_names"))
+            for row in ev[:]:
+                e = {k: (int(row[k]) if np.issubdtype(row.dtype[k], np.integer) else float(f"{row[k]:.9g}"))
+                     for k in row.dtype.names}
+                e["mode_name"] = modes.get(e["mode"], "")
+                if "mechanism" in e:
+                    e["mechanism_name"] = mechanisms.get(e["mechanism"], "")
+                events.append(e)
+    return {"summary": summary, "spectrum": {"frequency_hz": freq, "power_N2_per_hz": power},
+            "fracture_events": events}
+
+
+def load_record(run, out):
+    """The record of a finished run: from its directory (kept as run.record_file too, when the
+    sweep keeps records and it is not there yet), else from the kept file alone."""
+    from . import execute
+    run_dir = os.path.join(out, run.path)
+    if execute.finished_here(run, out):
+        record = make_record(run_dir)
+        if run.record_file:
+            os.makedirs(os.path.dirname(run.record_file), exist_ok=True)
+            tmp = run.record_file + ".tmp"
+            with open(tmp, "w") as f:
+                json.dump(record, f, separators=(",", ":"))
+            os.replace(tmp, run.record_file)  # never a half-written record
+        return record
+    with open(run.record_file) as f:
+        return json.load(f)
+
+
+def run_record(run, out):
+    """What aggregation needs from one finished run (from its record)."""
+    record = load_record(run, out)
+    s = record["summary"]
+    spectrum = (np.asarray(record["spectrum"]["frequency_hz"], dtype=float),
+                np.asarray(record["spectrum"]["power_N2_per_hz"], dtype=float))
     return {"mean_fx_N": s.get("mean_fx_N"), "max_fx_N": s.get("max_fx_N"),
             "peak_interval_s": s.get("peak_interval_s"), "spectrum": spectrum,
             "spectral_peak_hz": peak_frequency(*spectrum) if len(spectrum[0]) else float("nan"),
             "breaks_by_mode": {mode_key(k): v for k, v in s.get("breaks_by_mode", {}).items()},
-            "realtime_factor": s.get("realtime_factor"), "wall_time_s": s.get("wall_time_s")}
+            "breaks_by_mechanism": {mode_key(k): v for k, v in s.get("breaks_by_mechanism", {}).items()},
+            "realtime_factor": s.get("realtime_factor"), "wall_time_s": s.get("wall_time_s"),
+            "cpu_time_s": s.get("cpu_time_s")}
 
 
 def _finite(values):
@@ -156,10 +218,14 @@ def aggregate(groups):
         row["spectral_peak_period_s"] = 1.0 / hz if math.isfinite(hz) and hz > 0 else float("nan")
         for mode in MODES:
             row["breaks_" + mode] = int(sum(r["breaks_by_mode"].get(mode, 0) for r in records))
+        for mechanism in MECHANISMS:
+            row["breaks_" + mechanism] = int(sum(r.get("breaks_by_mechanism", {}).get(mechanism, 0) for r in records))
         rtf = _finite(r["realtime_factor"] for r in records)
         row["realtime_factor"] = float(np.mean(rtf)) if rtf else float("nan")
         wall = _finite(r.get("wall_time_s") for r in records)
         row["run_wall_time_s"] = float(np.sum(wall)) if wall else float("nan")
+        cpu = _finite(r.get("cpu_time_s") for r in records)
+        row["run_cpu_time_s"] = float(np.sum(cpu)) if cpu else float("nan")
         rows.append(row)
         spectra.append((f, p))
     return rows, spectra

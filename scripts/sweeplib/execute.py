@@ -4,8 +4,10 @@ from its directory (so a rerun skips what is finished, in any order).
 
 A run's directory holds run.h5, summary.json, log.txt (stdout and stderr) and
 exit_code, written last. A run is finished when exit_code is 0 and
-summary.json exists; failed when exit_code is not 0 (its error is the last
-"error" line of log.txt); pending otherwise (never started, or killed).
+summary.json exists, or when the sweep keeps records and its record exists
+(spec.py: it was finished, perhaps on another machine); failed when exit_code
+is not 0 (its error is the last "error" line of log.txt); pending otherwise
+(never started, or killed).
 """
 import os
 import shlex
@@ -34,15 +36,25 @@ def command(run, out_dir, icedem):
             f"{shlex.join(args)} > log.txt 2>&1; code=$?; echo $code > exit_code; exit $code")
 
 
+def finished_here(run, out_dir):
+    """True if the run's own directory holds a finished run (not only a kept record)."""
+    d = os.path.join(out_dir, run.path)
+    try:
+        with open(os.path.join(d, "exit_code")) as f:
+            return f.read().strip() == "0" and os.path.isfile(os.path.join(d, "summary.json"))
+    except FileNotFoundError:
+        return False
+
+
 def status(run, out_dir):
+    if finished_here(run, out_dir) or (run.record_file and os.path.isfile(run.record_file)):
+        return Status(run, "done")
     d = os.path.join(out_dir, run.path)
     try:
         with open(os.path.join(d, "exit_code")) as f:
             code = f.read().strip()
     except FileNotFoundError:
         return Status(run, "pending")
-    if code == "0" and os.path.isfile(os.path.join(d, "summary.json")):
-        return Status(run, "done")
     error = f"exit code {code}"
     try:
         with open(os.path.join(d, "log.txt"), errors="replace") as f:
@@ -55,6 +67,16 @@ def status(run, out_dir):
     return Status(run, "failed", error)
 
 
+def run_here(runs, out_dir, icedem, jobs=0):
+    """Make sure the runs' own directories hold them (their HDF5 files, for figures), running
+    again with GNU parallel those known only by a kept record: runs are deterministic, so the
+    rerun writes the same results."""
+    missing = [r for r in runs if not finished_here(r, out_dir)]
+    if missing:
+        run_parallel_all(missing, out_dir, icedem, jobs)
+    return [r for r in runs if finished_here(r, out_dir)]
+
+
 def write_jobs(runs, out_dir, icedem, path):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as f:
@@ -64,16 +86,22 @@ def write_jobs(runs, out_dir, icedem, path):
 
 def run_parallel(runs, out_dir, icedem, jobs=0):
     """Run every unfinished run with GNU parallel (jobs 0: one per core). Returns the statuses."""
-    todo = [r for r in runs if status(r, out_dir).state != "done"]
+    run_parallel_all([r for r in runs if status(r, out_dir).state != "done"], out_dir, icedem, jobs)
+    return [status(r, out_dir) for r in runs]
+
+
+def run_parallel_all(todo, out_dir, icedem, jobs=0):
+    """Run the given runs with GNU parallel, finished or not."""
     if todo:
-        jobs_file = os.path.join(out_dir, "jobs.txt")
+        # one list per invocation: a second one (figures rerunning a run) must not rewrite
+        # the list a running sweep's GNU parallel is still reading
+        jobs_file = os.path.join(out_dir, f"jobs-{os.getpid()}.txt")
         write_jobs(todo, out_dir, icedem, jobs_file)
         cmd = ["parallel", "--will-cite", "--jobs", str(jobs) if jobs > 0 else "100%",
                # "+": append, so the log keeps every session of a resumed sweep
                "--joblog", "+" + os.path.join(out_dir, "joblog.txt"), "--arg-file", jobs_file]
         # parallel's exit code counts failed jobs; the statuses below report them one by one
         subprocess.run(cmd, check=False)
-    return [status(r, out_dir) for r in runs]
 
 
 def slurm_script(runs, out_dir, icedem, name):

@@ -3,6 +3,7 @@
     name = "friction"
     seeds = [1, 2, 3]              # or a count: seeds = 10 means 1..10
     set = ["time.duration=100"]    # overrides for every run (optional)
+    records = "docs/study/records"  # keep every finished run's record here (optional)
 
     [[scenario]]
     name = "small_rigid"
@@ -18,6 +19,12 @@ with one grid combination; its seeds are its runs. Each run has a stable,
 readable directory: <scenario>/<key=value,...>/seed<N>, so a rerun finds
 what an earlier one finished whatever the order of the list. The list is
 seed-major (all configurations for the first seed, then the second, ...).
+
+A run's record (sweeplib/aggregate.py) is what the aggregation and the report
+read: its summary, its load spectrum and its breaks. With `records` set, each
+record is also kept as <records>/<run directory>.json, small enough to commit:
+a sweep resumed on another machine counts those runs as finished, so a grid
+of many CPU hours can be run in parts and its report rebuilt from the records.
 """
 import itertools
 import os
@@ -38,6 +45,7 @@ class Run:
     grid: tuple                # ((key, value), ...) of this configuration, in the sweep's key order
     seed: int
     sets: tuple = field(default=())  # every --set, grid and seed included, in order
+    records: str = ""          # absolute directory of the sweep's kept records, "" if none
 
     @property
     def config(self):
@@ -49,6 +57,11 @@ class Run:
     def path(self):
         """Directory of this run, relative to the sweep's output directory."""
         return os.path.join(self.config, f"seed{self.seed}")
+
+    @property
+    def record_file(self):
+        """The kept record of this run ("" when the sweep keeps none)."""
+        return os.path.join(self.records, self.path + ".json") if self.records else ""
 
 
 def fmt(value):
@@ -82,7 +95,7 @@ def load(path):
         raise SweepError(f"{path}: no such sweep file")
     except tomllib.TOMLDecodeError as e:
         raise SweepError(f"{path}: {e}")
-    known = {"name", "seeds", "set", "scenario", "grid"}
+    known = {"name", "seeds", "set", "scenario", "grid", "records"}
     for key in doc:
         if key not in known:
             _fail(path, key, "one of " + ", ".join(sorted(known)) + " (unknown key)")
@@ -101,6 +114,11 @@ def load(path):
     if len(set(seeds)) != len(seeds):
         _fail(path, "seeds", "distinct seeds", seeds)
     common = _string_list(path, "set", doc.get("set", []))
+    records = doc.get("records", "")
+    if not isinstance(records, str):
+        _fail(path, "records", "a directory path relative to the repository", records)
+    if records and not os.path.isabs(records):
+        records = os.path.join(ROOT, records)
 
     scenarios = doc.get("scenario")
     if not isinstance(scenarios, list) or not scenarios:
@@ -147,5 +165,5 @@ def load(path):
         for sc_name, full, sc_sets in parsed:
             for g in combos:
                 sets = tuple(common + sc_sets + [f"{k}={fmt(v)}" for k, v in g] + [f"seed={seed}"])
-                runs.append(Run(sc_name, full, g, seed, sets))
+                runs.append(Run(sc_name, full, g, seed, sets, records))
     return name, runs

@@ -247,6 +247,35 @@ class XdmfExport(unittest.TestCase):
 
 
 class Execution(unittest.TestCase):
+    def test_kept_records_finish_a_sweep_on_a_machine_without_its_runs(self):
+        # a sweep that keeps records: after aggregation every run has one; with the run
+        # directories gone (another machine), the runs still count as finished and the
+        # aggregation from the records alone gives the same table
+        records = tempfile.mkdtemp(dir=WORK)
+        path = sweep_file(TINY.replace('seeds = [1, 2]', f'seeds = [1, 2]\n    records = "{records}"'))
+        out = tempfile.mkdtemp(dir=WORK)
+        _, runs = spec.load(path)
+        execute.run_parallel(runs, out, ICEDEM)
+
+        def aggregate(o):
+            p = subprocess.run([os.path.join(ROOT, "scripts", "sweep"), "aggregate", path, "--out", o],
+                               capture_output=True, text=True)
+            self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+            return read(os.path.join(o, "results.csv"))
+        first = aggregate(out)
+        for r in runs:
+            self.assertTrue(os.path.isfile(r.record_file), r.record_file)
+        import json
+        rec = json.loads(read(runs[0].record_file))
+        self.assertEqual(set(rec), {"summary", "spectrum", "fracture_events"})
+        self.assertGreater(len(rec["spectrum"]["frequency_hz"]), 10)
+        self.assertLessEqual(max(rec["spectrum"]["frequency_hz"]), 2.0)
+        elsewhere = tempfile.mkdtemp(dir=WORK)  # the same sweep, none of its run directories
+        self.assertEqual([execute.status(r, elsewhere).state for r in runs], ["done"] * 4)
+        self.assertEqual(execute.run_parallel(runs, elsewhere, ICEDEM)[0].state, "done")
+        self.assertFalse(os.path.exists(os.path.join(elsewhere, runs[0].path)))  # nothing was rerun
+        self.assertEqual(aggregate(elsewhere), first)
+
     def test_tiny_sweep_end_to_end_resume_and_failures(self):
         path = sweep_file(TINY)
         out = tempfile.mkdtemp(dir=WORK)

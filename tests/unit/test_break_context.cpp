@@ -38,7 +38,7 @@ TEST(BreakMechanism, TouchingTheStructureIsOnTheSlopeUnlessSubmergedAndPressed) 
 
 TEST(BreakMechanism, AwayFromTheStructureIsInOrUnderThePack) {
   EXPECT_EQ(classify_break(context(false, 0.013, 50, 50), kH), BreakMechanism::kInPack);
-  EXPECT_EQ(classify_break(context(false, 0.1, 0, 0), kH), BreakMechanism::kUnderPack);
+  EXPECT_EQ(classify_break(context(false, 0.1, 0, 0), kH), BreakMechanism::kInRubble);
 }
 
 TEST(BreakMechanism, EveryMechanismHasItsOwnName) {
