@@ -22,7 +22,7 @@ The drawn runs' HDF5 files are needed; a run known only by its kept record
 (sweeplib/spec.py) is run again for them. And, beside the run the top view shows, run.xdmf and run_views.h5: its snapshots
 for ParaView (scripts/xdmf_snapshots.py).
 
-    scripts/sweep_figures.py SWEEP.toml [--out DIR] [--figures DIR] [--icedem PATH]
+    scripts/sweep_figures.py SWEEP.toml [--out DIR] [--figures DIR] [--icedem PATH] [--jobs N]
 """
 import argparse
 import csv
@@ -279,6 +279,7 @@ def main():
     ap.add_argument("--figures", help="where the PNGs go (default OUT/figures)")
     ap.add_argument("--icedem", default=execute.DEFAULT_ICEDEM,
                     help="to run again the drawn runs known only by their kept records")
+    ap.add_argument("--jobs", type=int, default=0, help="parallel jobs for those runs (0: one per core)")
     args = ap.parse_args()
     name, runs = spec.load(args.sweep)
     out = os.path.abspath(args.out or os.path.join(spec.ROOT, "sweeps", name))
@@ -290,7 +291,7 @@ def main():
     lowest = min(r.seed for r in runs)
     drawn = [r for r in runs if dict(r.grid).get(FII, 0.5) == 0.5 and r.seed == lowest
              and execute.status(r, out).state == "done"]
-    execute.run_here(drawn, out, os.path.abspath(args.icedem))
+    execute.run_here(drawn, out, os.path.abspath(args.icedem), args.jobs)
     records = {r: agg.load_record(r, out) for r in runs if execute.status(r, out).state == "done"}
     written = []
     for scenario in dict.fromkeys(r.scenario for r in runs):
