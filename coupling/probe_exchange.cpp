@@ -93,7 +93,7 @@ void ProbeDragExchange::update(const Scene& scene, const State& state) {
   const double draft = scene.ice.thickness * scene.ice.density / scene.water.density;
   for (std::size_t i = 0; i < floes.size(); ++i) {
     const btRigidBody& b = *floes[i].body;
-    if (!b.isInWorld() || !b.isActive()) continue;  // sleeping floes are at rest: no drag
+    if (liveness(b) != Liveness::kAwake) continue;  // sleeping floes are at rest: no drag
     const Polygon& outline = floes[i].shape->outline;
     double perimeter = 0;
     for (std::size_t k = 0; k < outline.size(); ++k) perimeter += (outline[(k + 1) % outline.size()] - outline[k]).norm();

@@ -23,10 +23,8 @@ btVector3 velocity_at(const btCollisionObject* object, const btVector3& point) {
 // solver treats the collision with the floe's real mass and momentum is
 // exchanged as it should be. Slower contact (a jam creeping against frozen
 // floes) leaves them fixed: that is the approximation freezing makes.
-void release_struck(World& world) {
+void release_struck(World& world, double v_wake, double dt) {
   btDispatcher& dispatcher = *world.dynamics().getDispatcher();
-  const double v_wake = world.scene().activation.linear_threshold;
-  const double dt = world.scene().time.dt / world.scene().time.substeps;
   for (int i = 0; i < dispatcher.getNumManifolds(); ++i) {
     const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
     const btCollisionObject* a = m->getBody0();
@@ -52,9 +50,11 @@ void release_struck(World& world) {
 
 }  // namespace
 
-void install_activation(World& world) {
-  const ActivationSettings& a = world.scene().activation;
-  if (a.sleeping && a.freeze_outside_region) world.dynamics().set_pre_solve_hook([&world] { release_struck(world); });
+void install_activation(const Scene& scene, World& world) {
+  const ActivationSettings& a = scene.activation;
+  const double v_wake = a.linear_threshold, dt = scene.time.dt / scene.time.substeps;
+  if (a.sleeping && a.freeze_outside_region)
+    world.dynamics().set_pre_solve_hook([&world, v_wake, dt] { release_struck(world, v_wake, dt); });
 }
 
 void update_activation(const Scene& scene, State& state) {

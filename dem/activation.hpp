@@ -20,7 +20,7 @@
 namespace icedem {
 
 /// Hook the strike check into the world's Bullet steps (once, after building it).
-void install_activation(World& world);
+void install_activation(const Scene& scene, World& world);
 
 /// Freeze resting floes outside the activation region and release frozen floes
 /// that the region reached or that were struck. Call after each Bullet step.

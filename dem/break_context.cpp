@@ -37,10 +37,9 @@ int floe_of(const World& world, const btCollisionObject* object) {
 
 }  // namespace
 
-BreakContext break_context(const World& world, int floe_id, const Eigen::Vector3d& midpoint,
+BreakContext break_context(const Scene& scene, const World& world, int floe_id, const Eigen::Vector3d& midpoint,
                            const Eigen::Vector3d& structure_position, double h) {
   BreakContext c;
-  const Scene& scene = world.scene();
   c.depth = -midpoint.y();
   c.distance = distance_from_structure(scene, structure_position, midpoint);
   Eigen::Vector3d structure_force = Eigen::Vector3d::Zero();

@@ -64,7 +64,7 @@ struct BreakContext {
 /// Gather the context of a break of a joint of layout floe `floe_id` whose
 /// midpoint is at `midpoint` (tank frame), from the contact manifolds of the
 /// Bullet step of `h` seconds just taken.
-BreakContext break_context(const World& world, int floe_id, const Eigen::Vector3d& midpoint,
+BreakContext break_context(const Scene& scene, const World& world, int floe_id, const Eigen::Vector3d& midpoint,
                            const Eigen::Vector3d& structure_position, double h);
 
 /// Horizontal distance of a point from the structure's section at the point's

@@ -4,6 +4,7 @@
 
 #include "dem/break_context.hpp"
 #include "dem/bullet_eigen.hpp"
+#include "dem/ice_lattice.hpp"
 
 namespace icedem {
 
@@ -50,7 +51,8 @@ void check_fracture(const Scene& scene, State& state, double h) {
     const btRigidBody& body_a = *world.floes()[joint.body_a].body;
     const btRigidBody& body_b = *world.floes()[joint.body_b].body;
     // asleep: the feedback is stale (bullet-notes.md) and the filter keeps its last value
-    if (!body_a.isActive() && !body_b.isActive() && scene.activation.skip_asleep) continue;
+    if (liveness(body_a) != Liveness::kAwake && liveness(body_b) != Liveness::kAwake && scene.activation.skip_asleep)
+      continue;
 
     JointLoads loads = joint_loads(world, joint);
     if (tau > 0) {
@@ -68,7 +70,7 @@ void check_fracture(const Scene& scene, State& state, double h) {
         std::min(margin.min_distance, distance_from_structure(scene, state.structure_position, at));
     if (mode == FailureMode::kNone) continue;
 
-    BreakContext context = break_context(world, joint.floe, at, state.structure_position, h);
+    BreakContext context = break_context(scene, world, joint.floe, at, state.structure_position, h);
     context.ratios = criterion_ratios(loads, capacity);
     const BreakMechanism mechanism = classify_break(context, scene.ice.thickness);
     const std::array<double, kFailureModes>& r = context.ratios;  // FailureMode order
@@ -78,7 +80,7 @@ void check_fracture(const Scene& scene, State& state, double h) {
         context.structure_force, context.press_down, context.press_toward, r[0], r[1], r[2], r[3], r[4]});
     ++state.breaks_by_mode[static_cast<int>(mode)];
     ++state.breaks_by_mechanism[static_cast<int>(mechanism)];
-    world.break_joint(joint);
+    break_joint(world, joint);
   }
 }
 

@@ -7,6 +7,7 @@
 #include "dem/cone_geometry.hpp"
 #include "dem/constants.hpp"
 #include "dem/errors.hpp"
+#include "dem/world_builder.hpp"
 
 namespace icedem {
 namespace {
@@ -81,13 +82,14 @@ StepDiagnostics check_health(const Scene& scene, const State& state) {
   double hull_reach = 0;
   for (const ProfileStation& s : scene.structure.profile)
     hull_reach = std::max(hull_reach, equal_area_vertex_radius(s.radius, scene.structure.segments));
-  const Eigen::AlignedBox3d tank = state.world->tank_box();
+  const Eigen::AlignedBox3d tank = tank_box(scene);
 
   for (const FloeBody& floe : state.world->floes()) {
     const btRigidBody& body = *floe.body;
-    if (!body.isInWorld()) continue;  // an element of a dormant lattice: its stand-in counts
+    const Liveness life = liveness(body);
+    if (life == Liveness::kOutside) continue;  // an element of a dormant lattice: its stand-in counts
     if (tank.contains(to_eigen(body.getCenterOfMassPosition()))) d.ice_mass += floe.shape->mass;
-    if (!body.isActive()) continue;   // a sleeping body does not move
+    if (life == Liveness::kAsleep) continue;   // a sleeping body does not move
     check_motion(scene, state, floe);
     d.max_speed = std::max(d.max_speed, static_cast<double>(body.getLinearVelocity().length()));
     d.max_angular_speed = std::max(d.max_angular_speed, static_cast<double>(body.getAngularVelocity().length()));
@@ -95,7 +97,7 @@ StepDiagnostics check_health(const Scene& scene, const State& state) {
     d.max_cone_penetration = std::max(d.max_cone_penetration, cone_penetration(scene, state, floe, hull_reach));
   }
   for (const IceJoint& joint : state.world->joints())
-    if (joint.constraint && state.world->floes()[joint.body_a].body->isInWorld())
+    if (joint.constraint && liveness(*state.world->floes()[joint.body_a].body) != Liveness::kOutside)
       d.max_joint_gap = std::max(d.max_joint_gap, joint_gap(joint));
 
   if (!state.load.force.allFinite() || !state.load.moment.allFinite())

@@ -4,6 +4,7 @@
 
 #include "dem/activation.hpp"
 #include "dem/errors.hpp"
+#include "dem/world_builder.hpp"
 #include "dem/step.hpp"
 
 namespace icedem {
@@ -86,7 +87,7 @@ CoupledFlowFactory& coupled_flow_factory() {
 State initial_state(const Scene& scene, const std::vector<Floe>& floes) {
   State state;
   state.world = build_world(scene, floes);
-  install_activation(*state.world);
+  install_activation(scene, *state.world);
   state.flow = make_flow(scene);
   if (drag_exchange_factory()) state.drag_exchange = drag_exchange_factory()(scene);
   state.structure_position = structure_position_at(scene, 0.0);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "dem/ice_lattice.hpp"
+
 namespace icedem {
 
 void update_lattice_region(const Scene& scene, State& state) {
@@ -12,13 +14,13 @@ void update_lattice_region(const Scene& scene, State& state) {
   for (DormantLattice& lattice : world.lattices()) {
     if (lattice.broken) continue;  // pieces stay pieces
     // the floe's nearest point is at least |centre - axis| - radius from the axis
-    const btVector3 c = world.lattice_centre(lattice);
+    const btVector3 c = lattice_centre(world, lattice);
     const double gap = std::hypot(c.x() - axis.x(), c.z() - axis.z()) - lattice.radius;
     if (!lattice.replaced && gap < radius) {
-      world.wake_lattice(lattice);
+      wake_lattice(world, lattice);
     } else if (lattice.replaced && gap > radius + kLatticeHysteresis) {
       // left the region intact: a rigid body again; its joints' filtered loads restart
-      if (world.make_dormant(lattice) && !state.filtered_joint_loads.empty())
+      if (make_dormant(world, lattice) && !state.filtered_joint_loads.empty())
         for (int j = 0; j < lattice.joints; ++j) state.filtered_joint_loads[lattice.first_joint + j] = JointLoads{};
     }
   }

@@ -105,6 +105,21 @@ double signed_area(const Polygon& polygon) {
 
 double area(const Polygon& polygon) { return std::abs(signed_area(polygon)); }
 
+AreaMoments area_moments(const Polygon& p) {
+  double a = 0, sxx = 0, szz = 0, sxz = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Eigen::Vector2d& u = p[i];
+    const Eigen::Vector2d& v = p[(i + 1) % p.size()];
+    const double c = u.x() * v.y() - v.x() * u.y();
+    a += c / 2;
+    sxx += c * (u.x() * u.x() + u.x() * v.x() + v.x() * v.x()) / 12;
+    szz += c * (u.y() * u.y() + u.y() * v.y() + v.y() * v.y()) / 12;
+    sxz += c * (u.x() * v.y() + 2 * u.x() * u.y() + 2 * v.x() * v.y() + v.x() * u.y()) / 24;
+  }
+  const double s = a < 0 ? -1.0 : 1.0;  // either vertex order
+  return {s * a, s * sxx, s * szz, s * sxz};
+}
+
 Eigen::Vector2d centroid(const Polygon& polygon) {
   const size_t n = polygon.size();
   assert(n > 0);

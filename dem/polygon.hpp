@@ -28,6 +28,16 @@ double signed_area(const Polygon& polygon);
 /// Absolute area in m^2.
 double area(const Polygon& polygon);
 
+/// Second moments of area of a polygon about the origin of its frame (its own
+/// centroid for a floe outline), either vertex order.
+struct AreaMoments {
+  double area;  // m^2
+  double sxx;   // m^4, integral of x^2 dA
+  double szz;   // m^4, integral of z^2 dA
+  double sxz;   // m^4, integral of x z dA
+};
+AreaMoments area_moments(const Polygon& polygon);
+
 /// Area centroid (x, z) in m. For a polygon of zero area the vertex mean is
 /// returned (it has no area centroid).
 Eigen::Vector2d centroid(const Polygon& polygon);

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "dem/errors.hpp"
+#include "dem/ice_lattice.hpp"
 #include "dem/initial_state.hpp"
 #include "dem/progress.hpp"
 #include "dem/recorder.hpp"
@@ -68,8 +69,8 @@ std::vector<BodyPose> body_poses(const World& world) {
   poses.reserve(world.floes().size());
   for (const FloeBody& f : world.floes()) {
     if (f.stand_in) continue;  // its elements are the output bodies
-    const Eigen::Isometry3d pose = world.output_pose(f);
-    poses.push_back(BodyPose{pose.translation(), Eigen::Quaterniond(pose.linear()), world.output_awake(f)});
+    const Eigen::Isometry3d pose = output_pose(world, f);
+    poses.push_back(BodyPose{pose.translation(), Eigen::Quaterniond(pose.linear()), output_awake(world, f)});
   }
   return poses;
 }

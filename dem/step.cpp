@@ -43,7 +43,8 @@ void apply_water_forces(const Scene& scene, State& state) {
   if (state.drag_exchange) water.drag_coefficient = water.skin_friction_coefficient = 0.0;
   for (FloeBody& floe : state.world->floes()) {
     btRigidBody& body = *floe.body;
-    if (!body.isInWorld() || (!body.isActive() && scene.activation.skip_asleep)) continue;
+    const Liveness life = liveness(body);
+    if (life == Liveness::kOutside || (life == Liveness::kAsleep && scene.activation.skip_asleep)) continue;
     BodyMotion motion{body_pose(body), to_eigen(body.getLinearVelocity()), to_eigen(body.getAngularVelocity())};
     const Wrench w = water_wrench(floe.shape->prism, motion, *state.flow, water, floe.shape->damping);
     body.applyCentralForce(btVector3(w.force.x(), w.force.y(), w.force.z()));
@@ -55,7 +56,7 @@ void apply_water_forces(const Scene& scene, State& state) {
     // Bullet adds gravity to awake bodies only, but a sleeping body touching an
     // awake one enters the contact solve with its applied forces: without its
     // weight the buoyancy alone would lift it there
-    if (!body.isActive() && body.getInvMass() > 0) body.applyCentralForce(body.getGravity() / body.getInvMass());
+    if (life == Liveness::kAsleep && body.getInvMass() > 0) body.applyCentralForce(body.getGravity() / body.getInvMass());
   }
 }
 

@@ -7,6 +7,11 @@
 
 namespace icedem {
 
+WaterParams water_params(const WaterSettings& w) {
+  return WaterParams{w.density, w.gravity, w.drag_coefficient, w.skin_friction_coefficient,
+                     w.heave_damping_ratio, w.roll_pitch_damping_ratio};
+}
+
 DampingCoefficients damping_coefficients(const ConvexPolyhedron& body, double mass,
                                          double horizontal_inertia, const WaterParams& p) {
   DampingCoefficients d;

@@ -22,6 +22,7 @@
 
 #include "dem/flow_field.hpp"
 #include "dem/hydrostatics.hpp"
+#include "dem/scene.hpp"
 
 namespace icedem {
 
@@ -42,6 +43,9 @@ struct WaterParams {
   // -, fraction of critical damping in roll and pitch; same argument and assumption as heave
   double roll_pitch_damping_ratio = 0.5;
 };
+
+/// The scene's water properties and hydrodynamic coefficients.
+WaterParams water_params(const WaterSettings& water);
 
 /// The state of a rigid body.
 struct BodyMotion {

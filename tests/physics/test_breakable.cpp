@@ -7,6 +7,7 @@
 #include "dem/break_context.hpp"
 #include "dem/calibration.hpp"
 #include "dem/fracture.hpp"
+#include "dem/ice_lattice.hpp"
 #include "dem/initial_state.hpp"
 #include "dem/lattice_region.hpp"
 #include "dem/scenario.hpp"
@@ -97,7 +98,7 @@ TEST(Breakable, PiecesCollideOnceBrokenApart) {
   step(scene, state);
   EXPECT_FALSE(manifold_between());  // jointed neighbours do not collide
   EXPECT_EQ(world.floes()[0].fragment, world.floes()[1].fragment);
-  world.break_joint(world.joints()[0]);
+  break_joint(world, world.joints()[0]);
   EXPECT_NE(world.floes()[0].fragment, world.floes()[1].fragment);
   step(scene, state);
   EXPECT_TRUE(manifold_between());  // the two pieces now touch as separate bodies
@@ -273,9 +274,9 @@ TEST(LatticeRegion, AFarFloeIsOneRigidBodyAndItsElementsFollowIt) {
   // an element's output pose is its place in the moved and turned stand-in
   const FloeBody& corner = world.floes()[d.first_element];
   const Eigen::Isometry3d expected = body_pose(whole) * to_eigen(d.offsets[0]);
-  EXPECT_LT((world.output_pose(corner).translation() - expected.translation()).norm(), 1e-12);
-  EXPECT_TRUE(world.output_awake(corner));
-  EXPECT_GT((world.output_pose(corner).translation() - to_eigen(d.offsets[0]).translation()).norm(), 5.0);
+  EXPECT_LT((output_pose(world, corner).translation() - expected.translation()).norm(), 1e-12);
+  EXPECT_TRUE(output_awake(world, corner));
+  EXPECT_GT((output_pose(world, corner).translation() - to_eigen(d.offsets[0]).translation()).norm(), 5.0);
 }
 
 TEST(LatticeRegion, TheLatticeTakesOverTheStandInsMotionWhenTheStructureComesNear) {
@@ -349,7 +350,7 @@ TEST(LatticeRegion, AnIntactLatticeThatLeavesTheRegionIsOneBodyAgainABrokenOneSt
   // one step's motion (under 2 mm at these speeds) of its place before that step
   for (int k = 0; k < d.elements; ++k) {
     EXPECT_FALSE(world.floes()[d.first_element + k].body->isInWorld());
-    EXPECT_LT((world.output_pose(world.floes()[d.first_element + k]).translation() - before[k]).norm(), 0.002);
+    EXPECT_LT((output_pose(world, world.floes()[d.first_element + k]).translation() - before[k]).norm(), 0.002);
   }
   // with the elements' mean motion (water drag has slowed it, but not reversed it)
   EXPECT_LT(whole.getLinearVelocity().x(), 0.0);
@@ -361,9 +362,9 @@ TEST(LatticeRegion, AnIntactLatticeThatLeavesTheRegionIsOneBodyAgainABrokenOneSt
   DormantLattice& d2 = s2.world->lattices()[0];
   update_lattice_region(near, s2);
   ASSERT_TRUE(d2.replaced);
-  s2.world->break_joint(s2.world->joints()[0]);
+  break_joint(*s2.world, s2.world->joints()[0]);
   EXPECT_TRUE(d2.broken);
-  EXPECT_FALSE(s2.world->make_dormant(d2));
+  EXPECT_FALSE(make_dormant(*s2.world, d2));
   EXPECT_TRUE(d2.replaced);
 }
 

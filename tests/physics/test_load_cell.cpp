@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "dem/world_builder.hpp"
 #include "dem/initial_state.hpp"
 #include "dem/step.hpp"
 #include "tests/support/scenes.hpp"
@@ -30,10 +31,10 @@ sleeping = false
 State bench_with_plate(const Scene& scene, const Eigen::Vector3d& plate_centre, const Eigen::Vector3d& half,
                        const std::vector<Floe>& floes) {
   State state;
-  state.world = std::make_unique<World>(scene);
+  state.world = std::make_unique<World>(world_settings(scene));
   state.world->add_structure(std::make_unique<btBoxShape>(btVector3(half.x(), half.y(), half.z())),
-                             plate_centre);
-  state.world->add_floes(floes);
+                             plate_centre, scene.friction.ice_structure);
+  add_floes(*state.world, scene, floes);
   state.flow = make_flow(scene);
   state.structure_position = plate_centre;
   return state;
