@@ -1,6 +1,6 @@
 // Error types and process exit codes shared by the whole solver.
 //
-// Two kinds of failure leave the program (DESIGN.md, "Exit codes"):
+// The kinds of failure that leave the program, each with its exit code:
 //   InputError     : the user's input is wrong (scenario, layout file, --set); exit 2.
 //                    The message names file, line, key, value and what was expected.
 //   NumericalError : the simulation blew up; exit 3. The message names the step,
@@ -8,6 +8,9 @@
 //   CouplingError  : the OpenFOAM side failed (missing, meshing, solver, exchange
 //                    timeout, a floe outside the mesh); exit 4. The message names
 //                    the step that failed and where its log is.
+//   OutputError    : the output could not be written (disk full, file vanished);
+//                    exit 5. The file is closed, marked failed, and holds the run
+//                    up to the time the message names.
 // Internal invariants use assert(); they are bugs, not user errors.
 #pragma once
 
@@ -22,6 +25,7 @@ enum ExitCode : int {
   kExitBadInput = 2,    // InputError
   kExitNumerical = 3,   // NumericalError
   kExitCoupling = 4,    // CouplingError
+  kExitOutput = 5,      // OutputError
   kExitInterrupted = 130,  // Ctrl-C, file kept and marked incomplete
 };
 
@@ -35,6 +39,12 @@ class InputError : public std::runtime_error {
 class NumericalError : public std::runtime_error {
  public:
   explicit NumericalError(const std::string& message) : std::runtime_error(message) {}
+};
+
+/// The output file could not be written (dem/recorder.hpp).
+class OutputError : public std::runtime_error {
+ public:
+  explicit OutputError(const std::string& message) : std::runtime_error(message) {}
 };
 
 /// A failure of the OpenFOAM coupling (coupling/).

@@ -8,11 +8,13 @@
 //   icedem foam-case SCENARIO.toml -o DIR       a runnable OpenFOAM case (DIR/Allrun)
 //   icedem foam-solve SCENARIO.toml             solve it into the cache (flow.model = "coupled")
 //   icedem flow SCENARIO.toml -o OUT.csv        the flow model's water velocity at sample points
-// Exit codes: 0 success, 2 bad input, 3 numerical failure, 4 OpenFOAM coupling failure,
-// 130 interrupted, 1 other.
+// Exit codes (dem/errors.hpp): 0 success, 2 bad input, 3 numerical failure, 4 OpenFOAM coupling
+// failure, 5 output not written (disk full), 130 interrupted, 1 other.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -25,6 +27,8 @@
 #include "dem/constants.hpp"
 #include "dem/errors.hpp"
 #include "dem/initial_state.hpp"
+#include "dem/output_lock.hpp"
+#include "dem/recorder.hpp"
 #include "dem/scenario.hpp"
 #include "dem/simulation.hpp"
 #include "dem/step_size_advice.hpp"
@@ -37,6 +41,35 @@ std::string joined_command_line(int argc, char** argv) {
   std::string s;
   for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
   return s;
+}
+
+// -o must not name an input: the run would overwrite the scenario or its layout file
+void refuse_input_as_output(const std::string& output, const std::vector<std::string>& inputs) {
+  std::error_code ec;
+  for (const std::string& input : inputs)
+    if (!input.empty() && std::filesystem::equivalent(output, input, ec))
+      throw InputError(fmt::format("-o {}: that is an input of the run ({}); choose another output file", output,
+                                   input));
+}
+
+// a file the run will write at its end must be writable before the run starts
+void require_writable(const std::string& path, const std::string& option) {
+  const std::filesystem::path p = std::filesystem::absolute(path);
+  std::error_code ec;
+  const std::string target = std::filesystem::exists(p, ec) ? p.string() : p.parent_path().string();
+  if (::access(target.c_str(), W_OK) != 0 || std::filesystem::is_directory(p, ec))
+    throw InputError(fmt::format("{} {}: cannot write there ({} is {})", option, path, target,
+                                 std::filesystem::exists(target, ec) ? "not writable" : "missing"));
+}
+
+// HDF5 1.10 crashes at exit cleaning up a file it could not close (a full disk mid-close):
+// then end here, after the messages, without the library's exit-time cleanup
+int leave(int code) {
+  if (Recorder::left_a_file_open()) {
+    std::fflush(nullptr);
+    std::_Exit(code);
+  }
+  return code;
 }
 
 void write_json(const std::string& path, const nlohmann::json& j) {
@@ -52,6 +85,9 @@ int run_command(const std::string& scenario_path, std::string output, const std:
   const std::filesystem::path dir = std::filesystem::absolute(output).parent_path();
   if (!std::filesystem::is_directory(dir))
     throw InputError(fmt::format("-o {}: the directory {} does not exist", output, dir.string()));
+  refuse_input_as_output(output, {scenario_path, scene.layout.file});
+  if (!summary_path.empty()) require_writable(summary_path, "--summary-json");
+  const OutputLock lock(output);  // one run per output file
   RunOptions options{output, !quiet, command_line};
   const RunSummary summary = run_simulation(scene, options);
   std::cout << summary_table(summary) << std::flush;
@@ -231,9 +267,12 @@ int main(int argc, char** argv) {
   } catch (const NumericalError& e) {
     std::cerr << "\nerror: " << e.what() << "\n(the output file keeps every step before the failure, "
               << "marked status = failed)\n";
-    return kExitNumerical;
+    return leave(kExitNumerical);
+  } catch (const OutputError& e) {
+    std::cerr << "\nerror: " << e.what() << "\n";
+    return leave(kExitOutput);
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
-    return kExitRuntime;
+    return leave(kExitRuntime);
   }
 }

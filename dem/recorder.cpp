@@ -13,6 +13,12 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <sys/statvfs.h>
+
+#include <fmt/format.h>
+
+#include "dem/errors.hpp"
+
 namespace icedem {
 
 namespace {
@@ -45,6 +51,10 @@ herr_t record_error(hid_t stack, void*) {
 /// Replaces HDF5's automatic error-stack printing, for the lifetime of the guard, by a
 /// recorder of the first error: failures are reported once, through the exception the
 /// recorder throws, with HDF5's most specific message (see hdf5_reason).
+// set when a file could not be closed: HDF5 keeps it open and crashes when the process ends
+// (HDF5 1.10's exit-time cleanup); Recorder::left_a_file_open() tells the program to skip it
+bool g_file_left_open = false;
+
 class QuietHdf5 {
  public:
   QuietHdf5() {
@@ -264,9 +274,44 @@ struct Recorder::Impl {
   // every write to the file ends here, so the file on disk is consistent between writes
   void flush_file() { file->flush(H5F_SCOPE_GLOBAL); }
 
+  // A write the disk cannot take is refused before it starts: one that fails half-way
+  // leaves HDF5 unable to close the file (and HDF5 1.10 crashes at exit on such a file).
+  // The margin covers chunk rounding and the metadata a flush and a close write.
+  static constexpr std::size_t kSpaceMargin = std::size_t(1) << 20;  // bytes
+  void require_space(std::size_t bytes) const {
+    struct statvfs fs {};
+    const std::string dir = std::filesystem::absolute(path).parent_path().string();
+    if (statvfs(dir.c_str(), &fs) != 0) return;  // unknown: let the write say
+    const double free_bytes = static_cast<double>(fs.f_bavail) * static_cast<double>(fs.f_frsize);
+    if (free_bytes < static_cast<double>(bytes + kSpaceMargin))
+      throw OutputError(fmt::format("disk full: {} has {:.0f} kB free, the output needs {:.0f} kB more for its next "
+                                    "block and {:.0f} kB to close; free some space and run again",
+                                    dir, free_bytes / 1e3, bytes / 1e3, kSpaceMargin / 1e3));
+  }
+
+  // bytes the buffered rows take in the file (as in memory: doubles and ints, unpadded)
+  std::size_t buffered_bytes() const {
+    return load_buffer.size() * sizeof(LoadSample) +
+           8 * (snap_time_buffer.size() + snap_position_buffer.size() + snap_orientation_buffer.size()) +
+           snap_awake_buffer.size() + event_buffer.size() * sizeof(FractureEvent);
+  }
+
+  // the buffered rows that did not fit: dropped, so that the file can still be closed
+  std::size_t drop_buffers() {
+    const std::size_t rows = load_buffer.size();
+    load_buffer.clear();
+    snap_time_buffer.clear();
+    snap_position_buffer.clear();
+    snap_orientation_buffer.clear();
+    snap_awake_buffer.clear();
+    event_buffer.clear();
+    return rows;
+  }
+
   void write_load_block() {
     const std::size_t n = load_buffer.size();
     if (n == 0) return;
+    require_space(buffered_bytes());
     // gather the buffered samples column by column
     std::vector<double> t(n), f(3 * n), m(3 * n), sx(n), p(3 * n);
     std::vector<int> contacts(n), awake(n), points(n);
@@ -305,6 +350,7 @@ struct Recorder::Impl {
   void write_snapshot_block() {
     const std::size_t k = snap_time_buffer.size();
     if (k == 0) return;
+    require_space(buffered_bytes());
     snap_time.write(snap_time_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
     snap_position.write(snap_position_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
     snap_orientation.write(snap_orientation_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
@@ -316,6 +362,8 @@ struct Recorder::Impl {
   }
 
   void write_event_block() {
+    if (event_buffer.empty()) return;
+    require_space(buffered_bytes());
     events.write(event_buffer.data(), event_buffer.size(), event_mem_type);
     event_buffer.clear();
   }
@@ -478,7 +526,11 @@ Recorder::Recorder(const std::string& path, const RunMeta& meta,
                    const std::vector<BodyOutline>& bodies)
     : impl_(std::make_unique<Impl>()) {
   impl_->path = path;
+  // HDF5's own error printing off for the process: every failure becomes one message of ours
+  // (objects closed in destructors would otherwise print kilobytes of HDF5 stack traces)
+  H5::Exception::dontPrint();
   QuietHdf5 quiet;
+  impl_->require_space(0);  // a full disk: say so before the run, not after
   // create the file
   try {
     H5::FileAccPropList access;
@@ -499,7 +551,7 @@ Recorder::Recorder(const std::string& path, const RunMeta& meta,
     std::error_code ec;
     if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
       reason = "directory '" + parent.string() + "' does not exist";
-    throw std::runtime_error("cannot create output file '" + path + "': " + reason);
+    throw OutputError("cannot create output file '" + path + "': " + reason);
   }
   // lay it out
   try {
@@ -511,7 +563,7 @@ Recorder::Recorder(const std::string& path, const RunMeta& meta,
     } catch (const H5::Exception&) {
       // already failing; the first error is the one to report
     }
-    throw std::runtime_error("cannot write the layout of output file '" + path + "': " + reason);
+    throw OutputError("cannot write the layout of output file '" + path + "': " + reason);
   }
 }
 
@@ -525,7 +577,7 @@ void Recorder::append(const LoadSample& sample) {
       impl_->write_load_block();
       impl_->flush_file();
     } catch (const H5::Exception& e) {
-      throw std::runtime_error("cannot write load samples to '" + impl_->path +
+      throw OutputError("cannot write load samples to '" + impl_->path +
                                "': " + hdf5_reason(e));
     }
   }
@@ -552,7 +604,7 @@ void Recorder::append_snapshot(double time, const std::vector<BodyPose>& poses) 
       impl_->write_snapshot_block();
       impl_->flush_file();
     } catch (const H5::Exception& e) {
-      throw std::runtime_error("cannot write snapshots to '" + impl_->path +
+      throw OutputError("cannot write snapshots to '" + impl_->path +
                                "': " + hdf5_reason(e));
     }
   }
@@ -567,7 +619,7 @@ void Recorder::append_fracture(const FractureEvent& event) {
       impl_->write_event_block();
       impl_->flush_file();
     } catch (const H5::Exception& e) {
-      throw std::runtime_error("cannot write fracture events to '" + impl_->path +
+      throw OutputError("cannot write fracture events to '" + impl_->path +
                                "': " + hdf5_reason(e));
     }
   }
@@ -592,7 +644,7 @@ void Recorder::write_floe_margins(const std::vector<double>& max_ratio,
                 "section, horizontally (inf if never checked)");
     impl_->flush_file();
   } catch (const H5::Exception& e) {
-    throw std::runtime_error("cannot write floe margins to '" + impl_->path + "': " + hdf5_reason(e));
+    throw OutputError("cannot write floe margins to '" + impl_->path + "': " + hdf5_reason(e));
   }
 }
 
@@ -606,7 +658,7 @@ void Recorder::set_attributes(const std::string& group,
     });
     impl_->flush_file();
   } catch (const H5::Exception& e) {
-    throw std::runtime_error("cannot write attributes on '" + group + "' in '" + impl_->path +
+    throw OutputError("cannot write attributes on '" + group + "' in '" + impl_->path +
                              "': " + hdf5_reason(e));
   }
 }
@@ -619,7 +671,7 @@ void Recorder::set_attribute(const std::string& group, const std::string& name,
     impl_->with_object(group, [&](const H5::H5Object& object) { write_attr(object, name, value); });
     impl_->flush_file();
   } catch (const H5::Exception& e) {
-    throw std::runtime_error("cannot write attribute '" + name + "' on '" + group + "' in '" +
+    throw OutputError("cannot write attribute '" + name + "' on '" + group + "' in '" +
                              impl_->path + "': " + hdf5_reason(e));
   }
 }
@@ -630,7 +682,7 @@ void Recorder::flush() {
   try {
     impl_->write_all();
   } catch (const H5::Exception& e) {
-    throw std::runtime_error("cannot flush output file '" + impl_->path +
+    throw OutputError("cannot flush output file '" + impl_->path +
                              "': " + hdf5_reason(e));
   }
 }
@@ -640,18 +692,27 @@ void Recorder::finish(const std::string& status, const std::string& message,
   impl_->require_open("finish");
   QuietHdf5 quiet;
   try {
-    impl_->write_all();
+    std::string note = message;
+    try {
+      impl_->write_all();
+    } catch (const OutputError& e) {  // the disk is full: close with what fitted
+      const std::size_t dropped = impl_->drop_buffers();
+      note += fmt::format("{}the last {} load rows (and their snapshots and breaks) did not fit on the disk: {}",
+                          note.empty() ? "" : "; ", dropped, e.what());
+    }
     write_attr(*impl_->meta, "status", status);
-    write_attr(*impl_->meta, "message", message);
+    write_attr(*impl_->meta, "message", note);
     write_attr(*impl_->meta, "wall_time_s", wall_time_s);
     write_attr(*impl_->meta, "finished_utc", utc_now_iso8601());
     impl_->flush_file();
     impl_->close();
   } catch (const H5::Exception& e) {
-    throw std::runtime_error("cannot finish output file '" + impl_->path +
-                             "': " + hdf5_reason(e));
+    g_file_left_open = true;
+    throw OutputError("cannot finish output file '" + impl_->path + "': " + hdf5_reason(e));
   }
 }
+
+bool Recorder::left_a_file_open() { return g_file_left_open; }
 
 bool Recorder::finished() const { return impl_->finished; }
 
@@ -671,12 +732,15 @@ Recorder::~Recorder() {
     impl_->flush_file();
     impl_->close();
   } catch (const H5::Exception& e) {
+    g_file_left_open = true;
     std::fprintf(stderr, "icedem: could not close output file '%s' cleanly: %s\n",
                  impl_->path.c_str(), hdf5_reason(e).c_str());
   } catch (const std::exception& e) {
+    g_file_left_open = true;
     std::fprintf(stderr, "icedem: could not close output file '%s' cleanly: %s\n",
                  impl_->path.c_str(), e.what());
   } catch (...) {
+    g_file_left_open = true;
     std::fprintf(stderr, "icedem: could not close output file '%s' cleanly\n",
                  impl_->path.c_str());
   }

@@ -183,6 +183,10 @@ class Recorder {
   /// wall_time_s, and closes the file.
   void finish(const std::string& status, const std::string& message, double wall_time_s);
 
+  /// True if some file could not be closed (disk full mid-close): HDF5 would crash
+  /// cleaning it up at exit, so the program should end with std::_Exit after its messages.
+  static bool left_a_file_open();
+
   /// True once finish() has succeeded.
   bool finished() const;
 

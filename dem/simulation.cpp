@@ -277,6 +277,15 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   } catch (const CouplingError& e) {  // the OpenFOAM partner failed or timed out: keep the run so far
     fail(e.what());
     throw;
+  } catch (const OutputError& e) {  // the disk is full: close the file with what fitted, marked failed
+    try {
+      fail(fmt::format("stopped at t = {:.2f} s", state.time));
+    } catch (const OutputError&) {
+      // could not even close it; the first error is the one to report
+    }
+    throw OutputError(fmt::format("{} (at t = {:.2f} s); the output file is closed and marked failed, its /meta "
+                                  "message says which rows did not fit",
+                                  e.what(), state.time));
   }
   if (state.drag_exchange) state.drag_exchange->finish(summary.status == "complete");
   progress.done();

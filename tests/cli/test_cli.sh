@@ -64,6 +64,43 @@ with h5py.File("run.h5", "r") as f:
     assert abs(f["/load/surge"][:] + f["/load/force"][:, 0]).max() == 0
 PY
 
+# 4b. nothing written is lost or mixed: a second run on the same -o is refused while the
+# first runs (the first completes); -o onto the scenario is refused; an unwritable
+# --summary-json is refused before the run
+"$icedem" run "$src/scenarios/examples/short_tow.toml" -o same.h5 -q >first.log 2>&1 &
+first=$!
+for _ in $(seq 50); do [ -s same.h5 ] && break; sleep 0.1; done
+msg=$("$icedem" run "$src/scenarios/examples/short_tow.toml" -o same.h5 -q 2>&1); code=$?
+wait $first; first_code=$?
+[ $code -eq 2 ] && echo "$msg" | grep -q "another icedem run is writing" && [ $first_code -eq 0 ] \
+  && ok "a second writer of one file is refused, the first completes" || fail "second writer: $code $first_code $msg"
+cp "$src/scenarios/examples/short_tow.toml" input.toml
+"$icedem" run input.toml -o input.toml -q >/dev/null 2>&1; code=$?
+[ $code -eq 2 ] && cmp -s input.toml "$src/scenarios/examples/short_tow.toml" \
+  && ok "-o onto the scenario is refused, the scenario kept" || fail "-o onto the scenario: exit $code"
+rm -f nosum.h5
+"$icedem" run "$src/scenarios/examples/short_tow.toml" -o nosum.h5 -q --summary-json no/such/dir/s.json >/dev/null 2>&1; code=$?
+[ $code -eq 2 ] && [ ! -e nosum.h5 ] && ok "unwritable --summary-json refused before the run" \
+  || fail "unwritable --summary-json: exit $code"
+
+# 4c. a full disk (a small tmpfs; needs root, skipped otherwise): exit 5 with one message,
+# the file closed, readable and marked failed
+mkdir -p full
+if mount -t tmpfs -o size=1400k tmpfs full 2>/dev/null; then
+  msg=$("$icedem" run "$src/scenarios/examples/short_tow.toml" -o full/out.h5 -q 2>&1); code=$?
+  $py -c "
+import h5py, sys
+with h5py.File('full/out.h5', 'r') as h:
+    assert h['/meta'].attrs['status'] == 'failed', h['/meta'].attrs['status']
+    assert 'did not fit' in h['/meta'].attrs['message']
+    assert len(h['/load/time']) > 0
+" && [ $code -eq 5 ] && [ "$(echo "$msg" | grep -c .)" -le 2 ] && echo "$msg" | grep -q "disk full" \
+    && ok "full disk: exit 5, one message, file closed and marked failed" || fail "full disk: exit $code: $msg"
+  umount full
+else
+  echo "skipped: full disk (cannot mount a tmpfs here)"
+fi
+
 # 5. Ctrl-C: exit 130, the file is readable and marked interrupted
 "$icedem" run "$src/scenarios/paper/small_floes.toml" -o int.h5 -q --set time.duration=100000 >/dev/null 2>&1 &
 pid=$!
