@@ -16,7 +16,7 @@ constexpr double kBlowUpSpeed = 50.0;
 
 /// Distance from the origin beyond which a body is considered lost, m. The tank
 /// is 35 m long and 1.8 m deep.
-constexpr double kBlowUpDistance = 1000.0;
+constexpr double kBlowUpDistance = 1000.0;  // m outside the tank
 
 /// Angular speed above which a floe or element is rocking unstably, rad/s: a
 /// 0.15 m element turning this fast moves its edge at over 1 m/s, 15 times the

@@ -31,8 +31,10 @@ void check_motion(const Scene& scene, const State& state, const FloeBody& floe) 
   const double v = body.getLinearVelocity().length();
   const double w = body.getAngularVelocity().length();
   if (!std::isfinite(x.length())) blow_up(state, body_name(floe), "|position|", x.length(), "m (not finite)");
-  if (x.length() > kBlowUpDistance)
-    blow_up(state, body_name(floe), "|position|", x.length(), fmt::format("m, beyond {} m", kBlowUpDistance));
+  // how far outside the tank: a scene may sit anywhere, a body does not leave its tank
+  const double outside = tank_box(scene).exteriorDistance(to_eigen(x));
+  if (outside > kBlowUpDistance)
+    blow_up(state, body_name(floe), "distance outside the tank", outside, fmt::format("m, beyond {} m", kBlowUpDistance));
   if (!std::isfinite(v) || v > kBlowUpSpeed)
     blow_up(state, body_name(floe), "speed", v, fmt::format("m/s, beyond {} m/s", kBlowUpSpeed));
   // a 0.3 m floe spinning at kBlowUpSpeed / 0.15 m would shed its edges at that speed

@@ -24,6 +24,19 @@ std::string origin_of(const std::string& file, const toml::node& node) {
   return fmt::format("{}:{}", file, node.source().begin.line);
 }
 
+// Limits on what a scenario can be: far above any real one, low enough that a
+// malformed file is refused at once instead of exhausting the parser (toml++
+// recurses once per nesting level) or the messages (which quote what they name).
+constexpr std::size_t kMaxScenarioBytes = std::size_t(1) << 20;  // a real scenario is a few kB
+constexpr int kMaxNesting = 16;        // dotted key segments, or brackets, per line (keys have 3)
+constexpr std::size_t kMaxQuote = 60;  // characters of a value or key quoted in a message
+
+// `text` cut to kMaxQuote characters, saying how long it was
+std::string excerpt(const std::string& text) {
+  if (text.size() <= kMaxQuote) return text;
+  return fmt::format("{}... ({} characters)", text.substr(0, kMaxQuote), text.size());
+}
+
 // short text of a TOML node as the user wrote it, for messages
 std::string show(const toml::node& node) {
   std::ostringstream s;
@@ -33,7 +46,40 @@ std::string show(const toml::node& node) {
     s << "a table";
   else
     node.visit([&](auto&& n) { s << n; });
-  return s.str();
+  return excerpt(s.str());
+}
+
+// Refuse text nested deeper than kMaxNesting (dotted keys, table headers, arrays) before the
+// parser sees it. Strings and comments are skipped; a line is judged by its worst nesting.
+void check_nesting(const std::string& text, const std::string& file) {
+  int line = 1, brackets = 0, dots = 0;
+  char quote = 0;
+  bool comment = false, in_value = false;
+  for (char c : text) {
+    if (c == '\n') {
+      ++line;
+      comment = false;
+      dots = 0;
+      in_value = brackets > 0;  // a multi-line array continues its value
+      if (quote == '"' || quote == '\'') quote = 0;  // single-line strings end at the line
+      continue;
+    }
+    if (comment) continue;
+    if (quote) {
+      if (c == quote) quote = 0;
+      continue;
+    }
+    if (c == '"' || c == '\'') quote = c;
+    else if (c == '#') comment = true;
+    else if (c == '=') in_value = true;
+    else if (c == '[') ++brackets;
+    else if (c == ']') brackets = std::max(0, brackets - 1);
+    else if (c == '.' && !in_value) ++dots;
+    if (brackets > kMaxNesting || dots > kMaxNesting)
+      throw InputError(fmt::format("{}:{}: nested more than {} levels deep; scenario keys have at most 3 "
+                                   "(`icedem keys` lists them)",
+                                   file, line, kMaxNesting));
+  }
 }
 
 std::optional<double> number(const toml::node& n) {
@@ -107,8 +153,9 @@ std::optional<KeyValue> convert(const KeySpec& s, const toml::node& n) {
 }
 
 std::string unknown_key_message(const std::string& where, const std::string& path, bool section) {
-  std::string msg = fmt::format("{}: unknown {} '{}'", where, section ? "section" : "key", path);
-  const std::string hint = nearest_key(path);
+  std::string msg = fmt::format("{}: unknown {} '{}'", excerpt(where), section ? "section" : "key", excerpt(path));
+  // a key far longer than any real one has no near neighbour (and the search would be slow)
+  const std::string hint = path.size() <= 3 * kMaxQuote ? nearest_key(path) : "";
   if (!hint.empty()) msg += fmt::format(" (did you mean '{}'?)", hint);
   msg += "; `icedem keys` lists every key";
   return msg;
@@ -120,7 +167,7 @@ void assign(Scenario& sc, const std::string& path, const toml::node& node, const
   if (!spec) throw InputError(unknown_key_message(where, path, false));
   auto value = convert(*spec, node);
   if (!value)
-    throw InputError(fmt::format("{}: {} = {}: expected {}", where, path, show(node),
+    throw InputError(fmt::format("{}: {} = {}: expected {}", where, excerpt(path), show(node),
                                  describe_expected(*spec)));
   sc.keys[path] = ResolvedKey{*value, where};
 }
@@ -155,14 +202,18 @@ void apply_override(Scenario& sc, const std::string& text) {
   trim(raw);
   const std::string where = "--set " + path + "=" + raw;
   const KeySpec* spec = find_key(path);
-  if (!spec) throw InputError(unknown_key_message(where, path, is_section(path)));
+  if (!spec && is_section(path))
+    throw InputError(fmt::format("{}: '{}' is a section, not a key: set one of its keys, e.g. --set {}.<key>=...; "
+                                 "`icedem keys` lists them",
+                                 excerpt(where), path, path));
+  if (!spec) throw InputError(unknown_key_message(where, path, false));
   // parse the value as TOML; a bare word is taken as a string for text keys
   toml::table parsed;
   try {
     parsed = toml::parse("v = " + raw);
   } catch (const toml::parse_error&) {
     if (spec->type != KeyType::kString && spec->type != KeyType::kChoice)
-      throw InputError(fmt::format("{}: '{}' is not a valid value; expected {}", where, raw,
+      throw InputError(fmt::format("{}: '{}' is not a valid value; expected {}", excerpt(where), excerpt(raw),
                                    describe_expected(*spec)));
     parsed = toml::table{{"v", raw}};
   }
@@ -211,6 +262,10 @@ Scenario parse_scenario(const std::string& toml_text, const std::string& display
   sc.base_dir = base_dir;
   for (const KeySpec& spec : scenario_keys()) sc.keys[spec.path] = ResolvedKey{spec.default_value, "default"};
 
+  if (toml_text.size() > kMaxScenarioBytes)
+    throw InputError(fmt::format("{}: {} bytes; a scenario is a few kB (at most {})", display_name, toml_text.size(),
+                                 kMaxScenarioBytes));
+  check_nesting(toml_text, display_name);
   toml::table table;
   try {
     table = toml::parse(toml_text, display_name);
@@ -225,12 +280,46 @@ Scenario parse_scenario(const std::string& toml_text, const std::string& display
 }
 
 Scenario read_scenario(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))  // a directory, a device such as /dev/null, a symlink loop
+    throw InputError(fmt::format("{}: not a scenario file ({})", excerpt(path),
+                                 ec ? ec.message() : fs::exists(path, ec) ? "not a regular file" : "no such file"));
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("{}: cannot open scenario file", path));
   std::stringstream text;
   text << in.rdbuf();
   const fs::path parent = fs::absolute(fs::path(path)).parent_path();
   return parse_scenario(text.str(), path, parent.string(), overrides);
+}
+
+// What a run can do, checked before it starts, so that `check` refuses what `run` cannot:
+// the number of steps and bodies (memory and time), and a tank deeper than the hull.
+// The bounds are far above any real scene: the paper's is 15,000 steps and 15,000 bodies.
+constexpr double kMaxSteps = 2.0e7;   // Bullet steps: about 1 GB of per-step records
+constexpr double kMaxBodies = 1.0e6;  // floes and elements: about 2 GB of Bullet bodies
+
+void check_limits(const Scenario& sc, const Scene& s) {
+  const double steps = s.time.duration / s.time.dt * s.time.substeps;
+  if (steps > kMaxSteps)
+    fail(sc, "time.dt", fmt::format("time.duration = {} s at this step and {} substeps is {:.3g} Bullet steps, more "
+                                    "than {:.0e} a run can hold; lengthen the step or shorten the run",
+                                    s.time.duration, s.time.substeps, steps, kMaxSteps));
+  if (s.layout.file.empty() && s.validation.kind == ValidationCase::kNone) {
+    const double floes = s.ice.concentration * s.channel.length * s.channel.width / (s.ice.floe_size * s.ice.floe_size);
+    const bool breakable = s.fracture.mode == FractureMode::kOn ||
+                           (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
+    const double per_floe = breakable ? std::pow(s.ice.floe_size / s.fracture.element_size, 2) : 1.0;
+    if (floes > kMaxBodies)
+      fail(sc, "ice.floe_size", fmt::format("{:.3g} floes of this size fill the channel, more than {:.0e}; use larger "
+                                            "floes or a smaller channel", floes, kMaxBodies));
+    if (floes * per_floe > kMaxBodies)
+      fail(sc, "fracture.element_size", fmt::format("{:.3g} elements in {:.3g} floes, more than {:.0e} bodies; use "
+                                                    "larger elements", floes * per_floe, floes, kMaxBodies));
+  }
+  const double keel = -s.structure.profile.front().y;  // m below the waterline
+  if (s.channel.tank_depth <= keel)
+    fail(sc, "tank.depth", fmt::format("the structure's keel is {} m deep (structure.profile): the water must be "
+                                       "deeper", keel));
 }
 
 Scene make_scene(const Scenario& sc) {
@@ -392,6 +481,7 @@ Scene make_scene(const Scenario& sc) {
     fail(sc, "stats.lowpass_hz", fmt::format("must be below the Nyquist frequency 1/(2 dt) = {} Hz", 0.5 / s.time.dt));
   if (s.stats.window_end_travel > 0 && s.stats.window_end_travel <= s.stats.window_start_travel)
     fail(sc, "stats.window_end_travel", "must be beyond stats.window_start_travel (or 0 for the end of the run)");
+  check_limits(sc, s);
   return s;
 }
 

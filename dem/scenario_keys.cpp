@@ -107,11 +107,11 @@ std::vector<KeySpec> make_keys() {
                        "width between the mother-ice edges, centred on z = 0 (paper: 4.8 m)"));
   k.push_back(boolean("channel.end_wall", true, "mother ice closes the far end of the channel"));
   k.push_back(positive("tank.width", "m", 6.0, 1.0e3, "tank breadth (Table 1: 6 m)"));
-  k.push_back(positive("tank.depth", "m", 1.8, 1.0e3, "water depth (Table 1: 1.8 m)"));
+  k.push_back(real("tank.depth", "m", 1.8, 0.05, 1.0e3, "water depth (Table 1: 1.8 m)"));
 
   // ice
   k.push_back(positive("ice.floe_size", "m", 0.3, 100.0, "side of the square floes (paper: 0.3 / 0.6 m)"));
-  k.push_back(positive("ice.thickness", "m", 0.033, 10.0, "ice thickness (Table 3: 0.033 m)"));
+  k.push_back(real("ice.thickness", "m", 0.033, 0.001, 10.0, "ice thickness (Table 3: 0.033 m)"));
   k.push_back(real("ice.concentration", "-", 0.75, 0.0, 0.9,
                    "area fraction of the channel covered by floes (paper: 0.75)", true));
   k.push_back(positive("ice.density", "kg/m^3", 930.0, 1.0e4, "ice density (Table 3)"));
@@ -206,9 +206,9 @@ std::vector<KeySpec> make_keys() {
   k.push_back(choice("fracture.mode", "off", {"off", "on", "auto"},
                      "breakable ice elements: off (rigid floes), on, or auto (only floes larger "
                      "than the characteristic length)"));
-  k.push_back(positive("fracture.element_size", "m", 0.15, 100.0,
+  k.push_back(real("fracture.element_size", "m", 0.15, 0.01, 100.0,
                        "side of the square ice elements (paper: 0.15 / 0.20 m)"));
-  k.push_back(real("fracture.cfm", "-", 1.0e-10, 0.0, 1.0e6,
+  k.push_back(real("fracture.cfm", "-", 1.0e-10, 0.0, 1.0,
                    "constraint force mixing of the element joints (Bullet units)"));
   k.push_back(real("fracture.erp", "-", 0.8, 0.0, 1.0, "error reduction of the element joints (paper: 0.8)"));
   k.push_back(integer("fracture.joint_iterations", 0, 0, 100000,

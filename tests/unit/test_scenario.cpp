@@ -180,3 +180,62 @@ TEST(Scenario, LayersStackGeneratedFieldsOnly) {
   EXPECT_NE(msg.find("layout.layers"), std::string::npos) << msg;
   EXPECT_NE(msg.find("layout.file"), std::string::npos) << msg;
 }
+
+// Malformed input found by fuzzing: refused with a message, never a crash or a hang.
+
+TEST(ScenarioLimits, DeeplyNestedKeysHeadersAndArraysAreRefusedBeforeParsing) {
+  // 31,000 dotted levels crashed the recursive TOML parser; 17 are refused at once
+  std::string deep = "a";
+  for (int i = 0; i < 31000; ++i) deep += ".a";
+  for (const std::string& text : {deep + " = 1\n", "[" + deep + "]\n", "[structure]\nprofile = " +
+                                                                          std::string(50000, '[') +
+                                                                          std::string(50000, ']') + "\n"}) {
+    const std::string msg = error_of(text);
+    EXPECT_NE(msg.find("nested more than 16 levels deep"), std::string::npos) << msg.substr(0, 200);
+    EXPECT_LT(msg.size(), 300u);
+  }
+  // dots inside strings and comments do not count
+  EXPECT_EQ(error_of("# a.b.c.d.e.f.g.h.i.j.k.l.m.n.o.p.q.r\n[layout]\nfile = \"\"\n"), "");
+}
+
+TEST(ScenarioLimits, HugeFilesKeysAndValuesGiveShortMessagesQuickly) {
+  EXPECT_NE(error_of(std::string(2 << 20, ' ')).find("a scenario is a few kB"), std::string::npos);
+  // a 900 kB key: no did-you-mean search over it, and the message quotes 60 characters
+  const std::string key_msg = error_of(std::string(900000, 'k') + " = 1\n");
+  EXPECT_NE(key_msg.find("(900000 characters)"), std::string::npos) << key_msg.substr(0, 300);
+  EXPECT_LT(key_msg.size(), 400u);
+  const std::string value_msg = error_of("[ice]\nthickness = \"" + std::string(500000, 'x') + "\"\n");
+  EXPECT_NE(value_msg.find("characters)"), std::string::npos);
+  EXPECT_LT(value_msg.size(), 400u);
+}
+
+TEST(ScenarioLimits, ASectionGivenAValueBySetSaysItIsASection) {
+  const std::string msg = error_of("", {"ice=3"});
+  EXPECT_NE(msg.find("'ice' is a section, not a key"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find("did you mean 'ice'"), std::string::npos) << msg;
+}
+
+TEST(ScenarioLimits, CheckRefusesWhatARunCannotDo) {
+  // 4e9 steps (vector reserve died mid-run), 9e12 floes (the layout looped for hours),
+  // a tank shallower than the keel, and key ranges without physical meaning
+  EXPECT_NE(error_of("", {"time.dt=1e-8"}).find("Bullet steps, more than"), std::string::npos);
+  EXPECT_NE(error_of("", {"ice.floe_size=1e-6"}).find("floes of this size fill the channel"), std::string::npos);
+  EXPECT_NE(error_of("", {"fracture.mode=\"on\"", "ice.floe_size=0.3", "fracture.element_size=0.01",
+                          "channel.length=1000", "channel.width=100", "tank.width=100"})
+                .find("bodies; use larger elements"),
+            std::string::npos);
+  EXPECT_NE(error_of("", {"tank.depth=0.3"}).find("keel is 0.443 m deep"), std::string::npos);
+  for (const char* bad : {"fracture.cfm=1e6", "fracture.element_size=1e-12", "ice.thickness=1e-9", "tank.depth=1e-300"})
+    EXPECT_NE(error_of("", {bad}).find("expected a number in"), std::string::npos) << bad;
+}
+
+TEST(ScenarioLimits, ADirectoryOrADeviceIsNoScenarioFile) {
+  for (const char* path : {"/dev/null", "/tmp"}) {
+    try {
+      read_scenario(path, {});
+      ADD_FAILURE() << path << " was read as a scenario";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("not a scenario file"), std::string::npos) << e.what();
+    }
+  }
+}

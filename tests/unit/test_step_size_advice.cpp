@@ -28,3 +28,11 @@ TEST(StepSizeAdvice, FastTowWarnsThatIceIsPushedIntoTheHull) {
   EXPECT_NE(w[0].find("time.substeps >= 4"), std::string::npos) << w[0];
   EXPECT_TRUE(step_size_warnings(scene_from("", {"structure.speed=0.7", "time.substeps=4"})).empty());
 }
+
+TEST(StepSizeAdvice, BeyondTheLargestSubstepCountItNamesTheTimeStep) {
+  // 10 m/s with 1 mm ice: a Bullet step of 1.2e-5 s, 42,000 substeps at dt 0.5 s, more than
+  // time.substeps allows (1000): the advice is a shorter time.dt instead
+  const auto w = step_size_warnings(scene_from("", {"structure.speed=10", "ice.thickness=0.001", "time.dt=0.5"}));
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_NE(w[1].find("time.dt <= 0.012 s with time.substeps = 1000"), std::string::npos) << w[1];
+}
