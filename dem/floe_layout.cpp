@@ -393,6 +393,10 @@ struct FileNaming {
   }
 };
 
+// limits on a layout file, far above a tank's (hundreds of floes, tens of kB)
+constexpr std::streamoff kMaxLayoutBytes = 64 << 20;
+constexpr int kMaxJsonDepth = 16;
+
 std::string shorten(const std::string& s) {
   constexpr size_t kMax = 160;
   return s.size() <= kMax ? s : s.substr(0, kMax) + "...";
@@ -554,12 +558,32 @@ std::vector<RawFloe> read_csv(const std::string& path, std::istream& in) {
 
 std::vector<RawFloe> read_json(const std::string& path, std::istream& in) {
   using nlohmann::json;
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // nesting deeper than a layout's ({"floes": [{"polygon": [[x, z]]}]}: 4) is refused before
+  // parsing: nlohmann's values are destroyed and printed recursively
+  int depth = 0, deepest = 0;
+  bool in_string = false, escaped = false;
+  for (char c : text) {
+    if (in_string) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') in_string = true;
+    else if (c == '[' || c == '{') deepest = std::max(deepest, ++depth);
+    else if (c == ']' || c == '}') --depth;
+  }
+  if (deepest > kMaxJsonDepth)
+    throw InputError(fmt::format("{}: nested {} levels deep; a layout is {{\"floes\": [{{\"centre\": [x, z], "
+                                 "\"yaw_deg\": 0, \"polygon\": [[x, z], ...]}}]}}, 4 levels",
+                                 path, deepest));
   json root;
   try {
-    root = json::parse(in);
-  } catch (const json::parse_error& e) {
+    root = json::parse(text);
+  } catch (const json::exception& e) {  // syntax, and numbers out of range (1e309)
     throw InputError(fmt::format("{}: invalid JSON ({}); expected {{\"floes\": [...]}}", path,
-                                 e.what()));
+                                 shorten(e.what())));
   }
   if (!root.is_object() || !root.contains("floes")) {
     throw InputError(fmt::format("{}: no key 'floes' at the top level; expected {{\"floes\": "
@@ -649,6 +673,11 @@ Floe finish_floe(const RawFloe& r, const FileNaming& naming, const Channel& ch) 
         poly_field, shorten(r.polygon_text)));
   }
 
+  // a yaw is an angle of a turn or less: beyond, sin and cos lose every digit
+  if (!(std::abs(r.yaw_deg) <= 360.0))
+    throw InputError(fmt::format("{} = {}: expected an angle in [-360, 360] degrees", naming.field(r, "yaw_deg", "yaw_deg"),
+                                 r.yaw_deg));
+
   // re-centre on the area centroid, moving the centre so the outline stays put
   Floe f;
   f.yaw = r.yaw_deg * kPi / 180.0;
@@ -693,6 +722,13 @@ Layout read_layout_file(const std::string& path, const Channel& channel) {
                                  ".json file",
                                  path));
   }
+  // a layout is a few hundred kB at most: refuse what would exhaust the parser
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0);
+  if (size > kMaxLayoutBytes)
+    throw InputError(fmt::format("{}: {} MB; a layout file of a tank's floes is under a MB (at most {} MB)", path,
+                                 size / 1e6, kMaxLayoutBytes / 1e6));
   const FileNaming naming{path, ext == ".csv"};
   const std::vector<RawFloe> raw = naming.csv ? read_csv(path, in) : read_json(path, in);
 

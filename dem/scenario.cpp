@@ -37,6 +37,16 @@ std::string excerpt(const std::string& text) {
   return fmt::format("{}... ({} characters)", text.substr(0, kMaxQuote), text.size());
 }
 
+// Why `path` is not a readable regular file ("" if it is): missing, a directory or a device
+// (/dev/null), or what the system says (a path too long, a symlink loop), never thrown.
+std::string not_a_file(const fs::path& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (st.type() == fs::file_type::not_found) return "no such file";
+  if (ec) return ec.message();
+  return st.type() == fs::file_type::regular ? "" : "not a regular file";
+}
+
 // short text of a TOML node as the user wrote it, for messages
 std::string show(const toml::node& node) {
   std::ostringstream s;
@@ -231,7 +241,7 @@ int integer(const Scenario& sc, const std::string& path) {
 
 [[noreturn]] void fail(const Scenario& sc, const std::string& path, const std::string& problem) {
   const ResolvedKey& k = sc.keys.at(path);
-  throw InputError(fmt::format("{}: {} = {}: {}", k.origin, path, format_value(k.value), problem));
+  throw InputError(fmt::format("{}: {} = {}: {}", excerpt(k.origin), path, excerpt(format_value(k.value)), problem));
 }
 
 }  // namespace
@@ -280,10 +290,8 @@ Scenario parse_scenario(const std::string& toml_text, const std::string& display
 }
 
 Scenario read_scenario(const std::string& path, const std::vector<std::string>& overrides) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))  // a directory, a device such as /dev/null, a symlink loop
-    throw InputError(fmt::format("{}: not a scenario file ({})", excerpt(path),
-                                 ec ? ec.message() : fs::exists(path, ec) ? "not a regular file" : "no such file"));
+  if (const std::string problem = not_a_file(path); !problem.empty())
+    throw InputError(fmt::format("{}: not a scenario file ({})", excerpt(path), problem));
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("{}: cannot open scenario file", path));
   std::stringstream text;
@@ -381,7 +389,8 @@ Scene make_scene(const Scenario& sc) {
   if (!file.empty()) {
     fs::path p(file);
     if (p.is_relative()) p = fs::path(sc.base_dir) / p;
-    if (!fs::exists(p)) fail(sc, "layout.file", fmt::format("no such file ({})", p.string()));
+    if (const std::string problem = not_a_file(p); !problem.empty())
+      fail(sc, "layout.file", fmt::format("{} ({})", problem, excerpt(p.string())));
     file = p.string();
   }
   s.layout = {file, real(sc, "layout.max_yaw_deg") * kPi / 180.0, integer(sc, "layout.sweeps"),

@@ -479,5 +479,28 @@ TEST(LayoutFile, BadCsvHeaderIsNamed) {
   EXPECT_NE(m.find("'yaw'"), std::string::npos) << m;
 }
 
+
+// Malformed layout files found by fuzzing: refused with the file named, never a crash,
+// a raw library message or NaN in the run.
+
+TEST(LayoutFile, AYawBeyondOneTurnIsRefused) {
+  // yaw_deg = 1e308 passed and put NaN into the run's snapshots
+  const std::string path = write_file("yaw.csv", "x,z,yaw_deg,polygon\n1.0,0.0,1e308,\"0 0; 0.3 0; 0.3 0.3; 0 0.3\"\n");
+  const std::string msg = read_error(path);
+  EXPECT_NE(msg.find("yaw.csv:2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("expected an angle in [-360, 360] degrees"), std::string::npos) << msg;
+}
+
+TEST(LayoutFile, JsonNestedTooDeepOrWithANumberOverflowIsRefused) {
+  // 100,000 levels crashed the recursive error path; 1e309 gave a raw library message
+  const std::string deep = write_file("deep.json", "{\"floes\": " + std::string(100000, '[') + std::string(100000, ']') + "}");
+  EXPECT_NE(read_error(deep).find("nested 100001 levels deep"), std::string::npos);
+  const std::string big =
+      write_file("big.json", "{\"floes\": [{\"centre\": [1e309, 0], \"yaw_deg\": 0, \"polygon\": [[0,0],[1,0],[1,1]]}]}");
+  const std::string msg = read_error(big);
+  EXPECT_NE(msg.find("big.json: invalid JSON"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("number overflow"), std::string::npos) << msg;
+}
+
 }  // namespace
 }  // namespace icedem

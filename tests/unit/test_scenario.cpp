@@ -238,3 +238,18 @@ TEST(ScenarioLimits, ADirectoryOrADeviceIsNoScenarioFile) {
     }
   }
 }
+
+TEST(ScenarioLimits, ALayoutPathThatLoopsOrIsTooLongIsNamedNotThrown) {
+  // std::filesystem threw on these (a raw library message, exit 1)
+  const std::string loop = std::string(ICEDEM_TEST_TMP) + "/loop_a";
+  std::filesystem::remove(loop);
+  std::filesystem::remove(loop + "_b");
+  std::filesystem::create_symlink(loop + "_b", loop);
+  std::filesystem::create_symlink(loop, loop + "_b");
+  const std::string msg = error_of("", {"layout.file=\"" + loop + "\""});
+  EXPECT_NE(msg.find("layout.file"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("symbolic links"), std::string::npos) << msg;
+  const std::string long_msg = error_of("", {"layout.file=\"/tmp/" + std::string(5000, 'x') + ".csv\""});
+  EXPECT_NE(long_msg.find("layout.file"), std::string::npos) << long_msg.substr(0, 300);
+  EXPECT_LT(long_msg.size(), 600u);
+}
