@@ -55,10 +55,15 @@ std::string summary_table(const RunSummary& s) {
                      s.wall_time_s - t.bullet - t.water - t.activation - t.load_cell - t.coupling);
   if (!s.validation.is_null()) {
     const nlohmann::json& v = s.validation;
-    out += fmt::format("  validation {}: {} = {:.4f} (reference {:.4f}), error {:+.1f} % (tolerance {:.0f} %): {}\n",
-                       v["case"].get<std::string>(), v["metric"].get<std::string>(), v["value"].get<double>(),
-                       v["reference"].get<double>(), 100 * v["rel_error"].get<double>(),
-                       100 * v["tolerance"].get<double>(), v["passed"].get<bool>() ? "passed" : "FAILED");
+    // a case without a result (the beam did not break) has null value and error, and a note
+    if (v["value"].is_number() && v["rel_error"].is_number())
+      out += fmt::format("  validation {}: {} = {:.4f} (reference {:.4f}), error {:+.1f} % (tolerance {:.0f} %): {}\n",
+                         v["case"].get<std::string>(), v["metric"].get<std::string>(), v["value"].get<double>(),
+                         v["reference"].get<double>(), 100 * v["rel_error"].get<double>(),
+                         100 * v["tolerance"].get<double>(), v["passed"].get<bool>() ? "passed" : "FAILED");
+    else
+      out += fmt::format("  validation {}: no result, FAILED: {}\n", v["case"].get<std::string>(),
+                         v.value("note", std::string("no value")));
     if (v.contains("elastic_modulus_MPa"))
       out += fmt::format("  inferred elastic modulus {:.1f} MPa (target {:.1f} MPa)\n",
                          v["elastic_modulus_MPa"].get<double>(), v["elastic_modulus_target_MPa"].get<double>());

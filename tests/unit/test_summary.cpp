@@ -18,3 +18,13 @@ TEST(Summary, WarnsWhenAnElementTurnsFasterThanTheRockingThreshold) {
   EXPECT_NE(table.find("warning: a floe or element turned at 40.0 rad/s (t = 165.20 s)"), std::string::npos)
       << table;
 }
+
+TEST(SummaryTable, AValidationCaseWithoutAResultSaysSoInsteadOfThrowing) {
+  // a cantilever whose beam did not break: value and error are null (JSON), with a note
+  RunSummary s;
+  s.validation = {{"case", "cantilever"}, {"metric", "bending stress at failure, kPa"}, {"value", nullptr},
+                  {"reference", 36.4}, {"rel_error", nullptr}, {"tolerance", 0.1}, {"passed", false},
+                  {"note", "the beam did not break within time.duration"}};
+  const std::string table = summary_table(s);
+  EXPECT_NE(table.find("validation cantilever: no result, FAILED: the beam did not break"), std::string::npos) << table;
+}
