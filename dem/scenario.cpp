@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -182,17 +183,20 @@ void assign(Scenario& sc, const std::string& path, const toml::node& node, const
   sc.keys[path] = ResolvedKey{*value, where};
 }
 
-// Walk a parsed table, flattening it to dotted paths.
-void walk(Scenario& sc, const toml::table& table, const std::string& prefix, const std::string& file) {
+// Walk a parsed table, flattening it to dotted paths. Keys that a --set replaces are not
+// checked: a --set can repair an invalid value in the file.
+void walk(Scenario& sc, const toml::table& table, const std::string& prefix, const std::string& file,
+          const std::set<std::string>& overridden) {
   for (auto&& [key, node] : table) {
     const std::string path = prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
+    if (overridden.count(path) && find_key(path)) continue;
     if (const toml::table* sub = node.as_table()) {
       if (find_key(path)) {
         // a key was given as a table: a type error, reported by assign()
         assign(sc, path, node, origin_of(file, node));
       }
       if (!is_section(path)) throw InputError(unknown_key_message(origin_of(file, node), path, true));
-      walk(sc, *sub, path, file);
+      walk(sc, *sub, path, file, overridden);
     } else {
       assign(sc, path, node, origin_of(file, node));
     }
@@ -283,7 +287,14 @@ Scenario parse_scenario(const std::string& toml_text, const std::string& display
     throw InputError(fmt::format("{}:{}: TOML syntax error: {}", display_name, e.source().begin.line,
                                  e.description()));
   }
-  walk(sc, table, "", display_name);
+  std::set<std::string> overridden;
+  for (const std::string& o : overrides) {
+    std::string path = o.substr(0, o.find('='));
+    path.erase(0, path.find_first_not_of(" \t"));
+    path.erase(path.find_last_not_of(" \t") + 1);
+    overridden.insert(path);
+  }
+  walk(sc, table, "", display_name, overridden);
   for (const std::string& o : overrides) apply_override(sc, o);
   apply_solver_profile(sc);
   return sc;

@@ -253,3 +253,13 @@ TEST(ScenarioLimits, ALayoutPathThatLoopsOrIsTooLongIsNamedNotThrown) {
   EXPECT_NE(long_msg.find("layout.file"), std::string::npos) << long_msg.substr(0, 300);
   EXPECT_LT(long_msg.size(), 600u);
 }
+
+TEST(ScenarioLimits, ASetRepairsAnInvalidValueInTheFile) {
+  const std::string file = "[ice]\nthickness = -5\n";
+  EXPECT_NE(error_of(file).find("test.toml:2: ice.thickness = -5"), std::string::npos);
+  EXPECT_EQ(error_of(file, {"ice.thickness=0.033"}), "");
+  EXPECT_DOUBLE_EQ(scene_from(file, {"ice.thickness = 0.04"}).ice.thickness, 0.04);
+  // only the replaced key: another invalid one is still reported
+  EXPECT_NE(error_of(file + "concentration = 7\n", {"ice.thickness=0.033"}).find("ice.concentration = 7"),
+            std::string::npos);
+}
