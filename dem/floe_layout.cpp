@@ -582,8 +582,11 @@ std::vector<RawFloe> read_json(const std::string& path, std::istream& in) {
   try {
     root = json::parse(text);
   } catch (const json::exception& e) {  // syntax, and numbers out of range (1e309)
-    throw InputError(fmt::format("{}: invalid JSON ({}); expected {{\"floes\": [...]}}", path,
-                                 shorten(e.what())));
+    // the parser's own words, without its "[json.exception.parse_error.101] " tag
+    std::string reason = e.what();
+    if (reason.rfind("[json.exception.", 0) == 0 && reason.find("] ") != std::string::npos)
+      reason = reason.substr(reason.find("] ") + 2);
+    throw InputError(fmt::format("{}: invalid JSON ({}); expected {{\"floes\": [...]}}", path, shorten(reason)));
   }
   if (!root.is_object() || !root.contains("floes")) {
     throw InputError(fmt::format("{}: no key 'floes' at the top level; expected {{\"floes\": "

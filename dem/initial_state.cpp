@@ -2,10 +2,12 @@
 
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "dem/activation.hpp"
 #include "dem/errors.hpp"
-#include "dem/world_builder.hpp"
 #include "dem/step.hpp"
+#include "dem/world_builder.hpp"
 
 namespace icedem {
 
@@ -25,16 +27,9 @@ Layout single_floe_layout(const Scene& scene, double lx, double lz) {
   layout.achieved_concentration = lx * lz / layout.channel_area;
   return layout;
 }
-}  // namespace
 
-Layout scene_layout(const Scene& scene) {
-  // validation cases: one rectangular floe at the middle of the channel
-  if (scene.validation.kind == ValidationCase::kPlateDeflection)
-    return single_floe_layout(scene, scene.validation.plate_size, scene.validation.plate_size);
-  if (scene.validation.kind == ValidationCase::kCantilever)  // a beam along x, one element wide
-    return single_floe_layout(scene, scene.validation.beam_elements * scene.fracture.element_size,
-                              scene.fracture.element_size);
-  if (!scene.layout.file.empty()) return read_layout_file(scene.layout.file, scene_channel(scene));
+// a generated square-floe field (layout.layers of them stacked for rafted ice)
+Layout generated_layout(const Scene& scene) {
   LayoutParams p;
   p.channel = scene_channel(scene);
   p.floe_size = scene.ice.floe_size;
@@ -56,6 +51,25 @@ Layout scene_layout(const Scene& scene) {
   }
   return layout;
 }
+
+}  // namespace
+
+Layout scene_layout(const Scene& scene) {
+  // validation cases: one rectangular floe at the middle of the channel
+  if (scene.validation.kind == ValidationCase::kPlateDeflection)
+    return single_floe_layout(scene, scene.validation.plate_size, scene.validation.plate_size);
+  if (scene.validation.kind == ValidationCase::kCantilever)  // a beam along x, one element wide
+    return single_floe_layout(scene, scene.validation.beam_elements * scene.fracture.element_size,
+                              scene.fracture.element_size);
+  if (!scene.layout.file.empty()) return read_layout_file(scene.layout.file, scene_channel(scene));
+  // a generated layout's problems come from the scenario's keys: name its file
+  try {
+    return generated_layout(scene);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", scene.source_path, e.what()));
+  }
+}
+
 
 std::unique_ptr<FlowField> make_flow(const Scene& scene) {
   switch (scene.flow.model) {

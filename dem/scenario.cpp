@@ -318,10 +318,17 @@ Scenario read_scenario(const std::string& path, const std::vector<std::string>& 
 constexpr double kMaxSteps = 2.0e7;   // Bullet steps: about 1 GB of per-step records
 constexpr double kMaxBodies = 1.0e6;  // floes and elements: about 2 GB of Bullet bodies
 
+// of keys that together break a limit, the first one the user set (else the first)
+std::string blamed(const Scenario& sc, std::initializer_list<const char*> keys) {
+  for (const char* k : keys)
+    if (sc.keys.at(k).origin != "default") return k;
+  return *keys.begin();
+}
+
 void check_limits(const Scenario& sc, const Scene& s) {
   const double steps = s.time.duration / s.time.dt * s.time.substeps;
   if (steps > kMaxSteps)
-    fail(sc, "time.dt", fmt::format("time.duration = {} s at this step and {} substeps is {:.3g} Bullet steps, more "
+    fail(sc, blamed(sc, {"time.dt", "time.duration", "time.substeps"}), fmt::format("time.duration = {} s at this step and {} substeps is {:.3g} Bullet steps, more "
                                     "than {:.0e} a run can hold; lengthen the step or shorten the run",
                                     s.time.duration, s.time.substeps, steps, kMaxSteps));
   if (s.layout.file.empty() && s.validation.kind == ValidationCase::kNone) {
@@ -330,7 +337,7 @@ void check_limits(const Scenario& sc, const Scene& s) {
                            (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
     const double per_floe = breakable ? std::pow(s.ice.floe_size / s.fracture.element_size, 2) : 1.0;
     if (floes > kMaxBodies)
-      fail(sc, "ice.floe_size", fmt::format("{:.3g} floes of this size fill the channel, more than {:.0e}; use larger "
+      fail(sc, blamed(sc, {"ice.floe_size", "channel.length", "channel.width", "ice.concentration"}), fmt::format("{:.3g} floes of this size fill the channel, more than {:.0e}; use larger "
                                             "floes or a smaller channel", floes, kMaxBodies));
     if (floes * per_floe > kMaxBodies)
       fail(sc, "fracture.element_size", fmt::format("{:.3g} elements in {:.3g} floes, more than {:.0e} bodies; use "
