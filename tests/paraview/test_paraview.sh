@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # "Opens in ParaView", tested: a short run's snapshots written as XDMF
-# (scripts/xdmf_snapshots.py) and read by ParaView's own XDMF reader (pvpython, from
-# Debian's paraview package). Skipped (exit 77) without pvpython.
+# (scripts/xdmf_snapshots.py) and read by ParaView's own XDMF reader (pvpython, in
+# Debian's python3-paraview package). Skipped (exit 77) without pvpython.
 # Usage: test_paraview.sh ICEDEM_BINARY SOURCE_DIR WORK_DIR
 set -euo pipefail
 icedem="$1"; src="$2"; work="$3"
-command -v pvpython >/dev/null || { echo "skipped: no pvpython (Debian package paraview)"; exit 77; }
+command -v pvpython >/dev/null || { echo "skipped: no pvpython (Debian package python3-paraview)"; exit 77; }
 mkdir -p "$work" && cd "$work"
 "$icedem" run "$src/scenarios/examples/short_tow.toml" -o run.h5 -q --set time.duration=10 \
   --set output.snapshot_interval=2 >/dev/null
