@@ -3,18 +3,21 @@
 #include <functional>
 #include <map>
 
-#include "dem/element_lattice.hpp"
-
 namespace icedem {
+
+ElementLattice floe_lattice(const Polygon& shape, double element_size, double& yaw0) {
+  yaw0 = principal_yaw(shape);
+  Polygon outline;
+  for (const Eigen::Vector2d& v : shape) outline.push_back(rotate(v, -yaw0));
+  return make_element_lattice(outline, element_size);
+}
 
 void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, const FractureSettings& fracture,
                       double friction) {
   // the lattice in the floe's principal frame (elements are squares in that frame)
-  const double yaw0 = principal_yaw(floe.shape);
-  Polygon outline;
-  for (const Eigen::Vector2d& v : floe.shape) outline.push_back(rotate(v, -yaw0));
+  double yaw0 = 0;
   const double Le = fracture.element_size;
-  const ElementLattice lattice = make_element_lattice(outline, Le);
+  const ElementLattice lattice = floe_lattice(floe.shape, Le, yaw0);
   const FloeShape& element = world.shape(square(Le));
 
   const double yaw = floe.yaw + yaw0;

@@ -10,11 +10,18 @@
 
 #include <Eigen/Geometry>
 
+#include "dem/element_lattice.hpp"
 #include "dem/floe_layout.hpp"
 #include "dem/scene.hpp"
 #include "dem/world.hpp"
 
 namespace icedem {
+
+/// A floe's element lattice in its principal frame (elements are squares there), and the
+/// yaw of that frame relative to the floe's outline. Throws InputError naming
+/// fracture.element_size if the outline cannot be cut into elements (not a rectangle,
+/// or not a whole number of elements across).
+ElementLattice floe_lattice(const Polygon& outline, double element_size, double& principal_yaw_out);
 
 /// Add a breakable floe: its elements (squares of fracture.element_size in the
 /// floe's principal frame) at height `y`, joined at the middle of each shared

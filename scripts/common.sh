@@ -12,7 +12,7 @@ ICEDEM_PACKAGES=(
   libbullet-dev libeigen3-dev libhdf5-dev libtomlplusplus-dev libcli11-dev
   nlohmann-json3-dev libfmt-dev googletest libgtest-dev libbenchmark-dev
   python3-numpy python3-h5py python3-matplotlib
-  python3-scipy parallel slurm-wlm munge
+  python3-scipy python3-skimage python3-pil parallel slurm-wlm munge
   openfoam
 )
 
