@@ -103,3 +103,13 @@ TEST(ShortTow, SameSeedSameLoads) {
   EXPECT_EQ(a.surge.mean, b.surge.mean);
   EXPECT_EQ(a.surge.max, b.surge.max);
 }
+
+TEST(ShortTow, AFieldFarFromTheOriginRunsWithoutAFalseBlowUp) {
+  // the blow-up distance is measured from the tank: a channel at x = 1500 m once stopped
+  // at step 1 as a "numerical blow-up" (a fixed 1000 m bound from the origin)
+  const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml",
+                                 {"channel.start_x=1500", "structure.start_x=1499", "time.duration=3"});
+  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/far_tow.h5", false, "test"});
+  EXPECT_EQ(s.status, "complete");
+  EXPECT_EQ(s.steps, 150);
+}
