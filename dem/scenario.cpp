@@ -245,7 +245,10 @@ int integer(const Scenario& sc, const std::string& path) {
 
 [[noreturn]] void fail(const Scenario& sc, const std::string& path, const std::string& problem) {
   const ResolvedKey& k = sc.keys.at(path);
-  throw InputError(fmt::format("{}: {} = {}: {}", excerpt(k.origin), path, excerpt(format_value(k.value)), problem));
+  // a key the scenario leaves at its default is still the scenario's: name the file
+  const std::string where = k.origin == "default" ? sc.path : k.origin;
+  throw InputError(fmt::format("{}: {} = {}{}: {}", excerpt(where), path, excerpt(format_value(k.value)),
+                               k.origin == "default" ? " (the default)" : "", problem));
 }
 
 }  // namespace
