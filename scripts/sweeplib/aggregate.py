@@ -25,6 +25,8 @@ import h5py
 import numpy as np
 from scipy import signal, stats
 
+# icedem's failure modes and break mechanisms (dem/joint_loads.cpp, dem/break_context.cpp: the
+# names of /fracture/events' mode_names and mechanism_names), spaces and hyphens as "_"
 MODES = ("compression", "shear", "bending", "tension", "in_plane_bending")
 MECHANISMS = ("on_the_slope", "pressed_under", "in_the_rubble", "in_the_pack")
 SEGMENT_S = 60.0
