@@ -270,7 +270,7 @@ class Execution(unittest.TestCase):
         self.assertEqual(set(rec), {"summary", "spectrum", "fracture_events"})
         self.assertGreater(len(rec["spectrum"]["frequency_hz"]), 10)
         self.assertLessEqual(max(rec["spectrum"]["frequency_hz"]), 2.0)
-        elsewhere = tempfile.mkdtemp(dir=WORK)  # the same sweep, none of its run directories
+        elsewhere = os.path.join(tempfile.mkdtemp(dir=WORK), "new")  # the same sweep, no directory at all
         self.assertEqual([execute.status(r, elsewhere).state for r in runs], ["done"] * 4)
         self.assertEqual(execute.run_parallel(runs, elsewhere, ICEDEM)[0].state, "done")
         self.assertFalse(os.path.exists(os.path.join(elsewhere, runs[0].path)))  # nothing was rerun
