@@ -74,7 +74,7 @@ double distance_from_structure(const Scene& scene, const Eigen::Vector3d& struct
 
 /// The mechanism of a break. A joint is submerged when it is at least one ice
 /// thickness deep (the floe's top half a thickness under water; afloat the
-/// midpoint is 0.4 h deep). Touching the structure: pressed under if submerged
+/// midpoint is 0.43 h deep). Touching the structure: pressed under if submerged
 /// and another floe presses it by more than kPressingForce, else on the slope.
 /// Not touching: in the rubble if submerged, else in the pack.
 BreakMechanism classify_break(const BreakContext& context, double thickness);

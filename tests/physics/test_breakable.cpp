@@ -415,7 +415,7 @@ TEST(BreakContext, AFloeLyingOnAnElementPressesItDownAndTheBreakRecordsIt) {
   btTransform t = top.getWorldTransform();
   t.getOrigin() += btVector3(0, h + 0.001, 0);  // resting on the free element after a 1 mm drop
   top.setWorldTransform(t);
-  const double weight = 917.0 * 0.15 * 0.15 * h * 9.81;  // N, the floe on top
+  const double weight = scene.ice.density * 0.15 * 0.15 * h * scene.water.gravity;  // N, the floe on top
 
   for (int i = 0; i < 50; ++i) step(scene, state);  // 1 s: landed and at rest
   ASSERT_EQ(state.breaks_by_mode[static_cast<int>(FailureMode::kBending)], 0);

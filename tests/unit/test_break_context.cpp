@@ -25,8 +25,8 @@ BreakContext context(bool touching, double depth, double press_down, double pres
 }  // namespace
 
 TEST(BreakMechanism, TouchingTheStructureIsOnTheSlopeUnlessSubmergedAndPressed) {
-  // afloat, the midpoint of a 33 mm floe is 0.4 h = 13 mm deep: on the slope even when pressed
-  EXPECT_EQ(classify_break(context(true, 0.013, 50, 50), kH), BreakMechanism::kOnSlope);
+  // afloat, the midpoint of a 33 mm floe is 0.43 h = 14 mm deep: on the slope even when pressed
+  EXPECT_EQ(classify_break(context(true, 0.014, 50, 50), kH), BreakMechanism::kOnSlope);
   // deep (riding down the slope) but nothing presses it: on the slope
   EXPECT_EQ(classify_break(context(true, 0.2, 0, 0), kH), BreakMechanism::kOnSlope);
   EXPECT_EQ(classify_break(context(true, 0.2, 0.5 * kPressingForce, 0.4 * kPressingForce), kH),
@@ -37,7 +37,7 @@ TEST(BreakMechanism, TouchingTheStructureIsOnTheSlopeUnlessSubmergedAndPressed) 
 }
 
 TEST(BreakMechanism, AwayFromTheStructureIsInOrUnderThePack) {
-  EXPECT_EQ(classify_break(context(false, 0.013, 50, 50), kH), BreakMechanism::kInPack);
+  EXPECT_EQ(classify_break(context(false, 0.014, 50, 50), kH), BreakMechanism::kInPack);
   EXPECT_EQ(classify_break(context(false, 0.1, 0, 0), kH), BreakMechanism::kInRubble);
 }
 
