@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "dem/errors.hpp"
+#include "dem/hdf5_io.hpp"
 
 namespace icedem {
 
@@ -32,50 +33,9 @@ constexpr hsize_t kSeriesChunkRows = 1024;
 // target chunk size of the snapshot arrays, bytes (HDF5 advice: 10 KiB to 1 MiB)
 constexpr std::size_t kSnapshotChunkBytes = std::size_t(256) << 10;
 
-// innermost description of the first HDF5 failure inside the current QuietHdf5 scope
-thread_local std::string first_hdf5_error;
-
-// collects the description of the innermost (first-raised) error on an HDF5 error stack
-herr_t collect_innermost(unsigned n, const H5E_error2_t* err, void* out) {
-  if (n == 0 && err->desc != nullptr) *static_cast<std::string*>(out) = err->desc;
-  return 0;
-}
-
-// HDF5 calls this when an API call fails, while its error stack is still intact
-herr_t record_error(hid_t stack, void*) {
-  if (first_hdf5_error.empty())
-    H5Ewalk2(stack, H5E_WALK_UPWARD, collect_innermost, &first_hdf5_error);
-  return 0;
-}
-
-/// Replaces HDF5's automatic error-stack printing, for the lifetime of the guard, by a
-/// recorder of the first error: failures are reported once, through the exception the
-/// recorder throws, with HDF5's most specific message (see hdf5_reason).
 // set when a file could not be closed: HDF5 keeps it open and crashes when the process ends
 // (HDF5 1.10's exit-time cleanup); Recorder::left_a_file_open() tells the program to skip it
 bool g_file_left_open = false;
-
-class QuietHdf5 {
- public:
-  QuietHdf5() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, record_error, nullptr);
-    first_hdf5_error.clear();
-  }
-  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  QuietHdf5(const QuietHdf5&) = delete;
-  QuietHdf5& operator=(const QuietHdf5&) = delete;
-
- private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
-
-/// The most specific message HDF5 gave for the failure behind `e` (e.g. the errno text of a
-/// failed open), falling back to the C++ exception's own message.
-std::string hdf5_reason(const H5::Exception& e) {
-  return first_hdf5_error.empty() ? e.getDetailMsg() : first_hdf5_error;
-}
 
 std::string utc_now_iso8601() {
   std::time_t now = std::time(nullptr);
@@ -84,104 +44,6 @@ std::string utc_now_iso8601() {
   char buf[32];
   std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
   return buf;
-}
-
-H5::StrType utf8_string_type() {
-  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
-  type.setCset(H5T_CSET_UTF8);
-  return type;
-}
-
-// attributes are replaced, not rewritten, so that type and size may change between writes
-void write_attr(const H5::H5Object& obj, const std::string& name, const std::string& value) {
-  if (obj.attrExists(name)) obj.removeAttr(name);
-  H5::StrType type = utf8_string_type();
-  H5::Attribute attr = obj.createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
-  attr.write(type, value);
-}
-
-void write_attr(const H5::H5Object& obj, const std::string& name, double value) {
-  if (obj.attrExists(name)) obj.removeAttr(name);
-  H5::Attribute attr =
-      obj.createAttribute(name, H5::PredType::IEEE_F64LE, H5::DataSpace(H5S_SCALAR));
-  attr.write(H5::PredType::NATIVE_DOUBLE, &value);
-}
-
-void write_attr(const H5::H5Object& obj, const std::string& name, uint64_t value) {
-  if (obj.attrExists(name)) obj.removeAttr(name);
-  H5::Attribute attr =
-      obj.createAttribute(name, H5::PredType::STD_U64LE, H5::DataSpace(H5S_SCALAR));
-  attr.write(H5::PredType::NATIVE_UINT64, &value);
-}
-
-void write_attr(const H5::H5Object& obj, const std::string& name, int value) {
-  if (obj.attrExists(name)) obj.removeAttr(name);
-  H5::Attribute attr =
-      obj.createAttribute(name, H5::PredType::STD_I32LE, H5::DataSpace(H5S_SCALAR));
-  attr.write(H5::PredType::NATIVE_INT, &value);
-}
-
-/// A dataset whose first dimension grows by appended rows.
-struct Series {
-  std::unique_ptr<H5::DataSet> dataset;  // held by pointer: H5 objects must not be assigned
-  std::vector<hsize_t> row_shape;  // dimensions after the first
-  hsize_t rows = 0;                // rows written to the file
-
-  /// Appends `count` rows from contiguous memory of type `memtype`.
-  void write(const void* data, hsize_t count, const H5::DataType& memtype) {
-    if (count == 0) return;
-    std::vector<hsize_t> dims{rows + count};
-    dims.insert(dims.end(), row_shape.begin(), row_shape.end());
-    dataset->extend(dims.data());
-
-    // select the new rows in the file, the whole buffer in memory
-    std::vector<hsize_t> start(dims.size(), 0), block = dims;
-    start[0] = rows;
-    block[0] = count;
-    rows += count;
-    hsize_t elements = 1;
-    for (hsize_t d : block) elements *= d;
-    if (elements == 0) return;  // zero bodies: extend only
-    H5::DataSpace file_space = dataset->getSpace();
-    file_space.selectHyperslab(H5S_SELECT_SET, block.data(), start.data());
-    H5::DataSpace mem_space(static_cast<int>(block.size()), block.data());
-    dataset->write(data, memtype, mem_space, file_space);
-  }
-};
-
-/// Creates an empty, chunked, extendible dataset of rows of shape `row_shape` in `group`.
-Series create_series(const H5::Group& group, const std::string& name, const H5::DataType& type,
-                     const std::vector<hsize_t>& row_shape, hsize_t chunk_rows,
-                     const std::string& units, const std::string& description) {
-  std::vector<hsize_t> dims{0}, maxdims{H5S_UNLIMITED}, chunk{chunk_rows};
-  for (hsize_t d : row_shape) {
-    dims.push_back(d);
-    // a zero-size fixed dimension cannot hold a chunk; make it extendible instead
-    maxdims.push_back(d > 0 ? d : H5S_UNLIMITED);
-    chunk.push_back(std::max<hsize_t>(d, 1));
-  }
-  H5::DataSpace space(static_cast<int>(dims.size()), dims.data(), maxdims.data());
-  H5::DSetCreatPropList props;
-  props.setChunk(static_cast<int>(chunk.size()), chunk.data());
-  Series series;
-  series.dataset = std::make_unique<H5::DataSet>(group.createDataSet(name, type, space, props));
-  series.row_shape = row_shape;
-  write_attr(*series.dataset, "units", units);
-  write_attr(*series.dataset, "description", description);
-  return series;
-}
-
-/// Writes a fixed-size dataset in one go.
-void write_fixed(const H5::Group& group, const std::string& name, const H5::DataType& file_type,
-                 const H5::DataType& mem_type, const std::vector<hsize_t>& dims,
-                 const void* data, const std::string& units, const std::string& description) {
-  H5::DataSpace space(static_cast<int>(dims.size()), dims.data());
-  H5::DataSet dataset = group.createDataSet(name, file_type, space);
-  hsize_t elements = 1;
-  for (hsize_t d : dims) elements *= d;
-  if (elements > 0) dataset.write(data, mem_type);
-  write_attr(dataset, "units", units);
-  write_attr(dataset, "description", description);
 }
 
 // fracture events: the in-memory layout is FractureEvent itself, the file layout is packed;

@@ -1,0 +1,64 @@
+// HDF5 writing helpers shared by the output files: quiet error handling with
+// HDF5's most specific message, attributes that can be replaced, datasets that
+// grow by rows, and fixed datasets written in one go. Every dataset carries
+// `units` and `description` attributes.
+#pragma once
+
+#include <H5Cpp.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace icedem {
+
+/// Replaces HDF5's automatic error-stack printing, for the lifetime of the guard, by a
+/// recorder of the first error: failures are reported once, through the exception the
+/// caller throws, with HDF5's most specific message (see hdf5_reason).
+class QuietHdf5 {
+ public:
+  QuietHdf5();
+  ~QuietHdf5();
+  QuietHdf5(const QuietHdf5&) = delete;
+  QuietHdf5& operator=(const QuietHdf5&) = delete;
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
+/// The most specific message HDF5 gave for the failure behind `e` inside the current
+/// QuietHdf5 scope (e.g. the errno text of a failed open), else the exception's own message.
+std::string hdf5_reason(const H5::Exception& e);
+
+/// Variable-length UTF-8 strings.
+H5::StrType utf8_string_type();
+
+/// Scalar attributes, replaced (not rewritten) so that type and size may change.
+void write_attr(const H5::H5Object& obj, const std::string& name, const std::string& value);
+void write_attr(const H5::H5Object& obj, const std::string& name, double value);
+void write_attr(const H5::H5Object& obj, const std::string& name, uint64_t value);
+void write_attr(const H5::H5Object& obj, const std::string& name, int value);
+
+/// A dataset whose first dimension grows by appended rows.
+struct Series {
+  std::unique_ptr<H5::DataSet> dataset;  // held by pointer: H5 objects must not be assigned
+  std::vector<hsize_t> row_shape;        // dimensions after the first
+  hsize_t rows = 0;                      // rows written to the file
+
+  /// Appends `count` rows from contiguous memory of type `memtype`.
+  void write(const void* data, hsize_t count, const H5::DataType& memtype);
+};
+
+/// Creates an empty, chunked, extendible dataset of rows of shape `row_shape` in `group`.
+Series create_series(const H5::Group& group, const std::string& name, const H5::DataType& type,
+                     const std::vector<hsize_t>& row_shape, hsize_t chunk_rows, const std::string& units,
+                     const std::string& description);
+
+/// Writes a fixed-size dataset in one go.
+void write_fixed(const H5::Group& group, const std::string& name, const H5::DataType& file_type,
+                 const H5::DataType& mem_type, const std::vector<hsize_t>& dims, const void* data,
+                 const std::string& units, const std::string& description);
+
+}  // namespace icedem
