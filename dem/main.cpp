@@ -76,7 +76,7 @@ int leave(int code) {
 
 void write_json(const std::string& path, const nlohmann::json& j) {
   std::ofstream out(path);
-  if (!out) throw std::runtime_error(fmt::format("{}: cannot write the summary JSON", path));
+  if (!out) throw OutputError(fmt::format("{}: cannot write the summary JSON", path));
   out << j.dump(2) << "\n";
 }
 
