@@ -90,7 +90,7 @@ void ProbeDragExchange::update(const Scene& scene, const State& state) {
   r.drag_coefficient = scene.water.drag_coefficient;
   r.skin_friction_coefficient = scene.water.skin_friction_coefficient;
   const std::vector<FloeBody>& floes = state.world->floes();
-  const double draft = scene.ice.thickness * scene.ice.density / scene.water.density;
+  const double draft = scene.ice.draft;
   for (std::size_t i = 0; i < floes.size(); ++i) {
     const btRigidBody& b = *floes[i].body;
     if (liveness(b) != Liveness::kAwake) continue;  // sleeping floes are at rest: no drag

@@ -446,10 +446,13 @@ Scene make_scene(const Scenario& sc) {
   if (!s.coupling.spawn_partner && s.coupling.exchange_dir.empty() && s.coupling.mode == CouplingMode::kProbe)
     fail(sc, "coupling.exchange_dir", "a directory shared with the external partner (coupling.partner = \"external\")");
 
-  // characteristic length l_c = (D / (rho_w g))^(1/4), D = E h^3 / (12 (1 - nu^2))
-  // (physics-targets.md 2): "auto" makes only floes at least this large breakable
-  const double D = s.ice.elastic_modulus * std::pow(s.ice.thickness, 3) /
-                   (12.0 * (1.0 - s.ice.poisson_ratio * s.ice.poisson_ratio));
+  // the ice's derived properties, computed here once
+  s.ice.draft = s.ice.thickness * s.ice.density / s.water.density;
+  s.ice.flexural_rigidity = s.ice.elastic_modulus * std::pow(s.ice.thickness, 3) /
+                            (12.0 * (1.0 - s.ice.poisson_ratio * s.ice.poisson_ratio));
+  // characteristic length l_c = (D / (rho_w g))^(1/4): "auto" makes only floes at least this
+  // large breakable
+  const double D = s.ice.flexural_rigidity;
   const std::string& fracture = get<std::string>(sc, "fracture.mode");
   s.fracture = {fracture == "on" ? FractureMode::kOn : fracture == "auto" ? FractureMode::kAuto
                                                                            : FractureMode::kOff,

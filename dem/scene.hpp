@@ -67,6 +67,9 @@ struct IceSettings {
   double shear_strength;        // Pa
   double poisson_ratio;         // -
   bool contact_crushing;        // a contact's normal force limited to the crushing force
+  // derived once by make_scene, not keys:
+  double draft = 0;              // m, floating draft h rho_i / rho_w (Archimedes, a flat floe)
+  double flexural_rigidity = 0;  // N m, D = E h^3 / (12 (1 - nu^2)), thin-plate theory
 };
 
 /// Largest normal force of one contact with crushing on: the compressive strength

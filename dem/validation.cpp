@@ -27,19 +27,13 @@ double finite_plate_factor(double a_over_lc) {
   return 1.0;
 }
 
-namespace {
-double flexural_rigidity(const Scene& s) {
-  return s.ice.elastic_modulus * std::pow(s.ice.thickness, 3) / (12 * (1 - s.ice.poisson_ratio * s.ice.poisson_ratio));
-}
-}  // namespace
-
 double plate_finite_factor(const Scene& s) {
   // the plate's equal-area radius over the characteristic length
   return finite_plate_factor(s.validation.plate_size / std::sqrt(kPi) / s.fracture.characteristic_length);
 }
 
 double hertz_plate_compliance(const Scene& s) {
-  return 1.0 / (8.0 * std::sqrt(flexural_rigidity(s) * s.water.density * s.water.gravity));
+  return 1.0 / (8.0 * std::sqrt(s.ice.flexural_rigidity * s.water.density * s.water.gravity));
 }
 
 double modulus_from_compliance(const Scene& s, double compliance, double factor) {

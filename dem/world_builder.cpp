@@ -54,8 +54,7 @@ bool is_breakable(const Scene& scene, const Polygon& outline) {
 
 double initial_height(const Scene& scene, const Floe& floe) {
   const double h = scene.ice.thickness;
-  const double draft = h * scene.ice.density / scene.water.density;  // Archimedes, flat prism
-  return h / 2 - draft + floe.layer * (h + scene.layout.min_gap);
+  return h / 2 - scene.ice.draft + floe.layer * (h + scene.layout.min_gap);
 }
 
 void add_profile_structure(World& world, const Scene& scene) {
@@ -78,8 +77,7 @@ void add_profile_structure(World& world, const Scene& scene) {
 void add_boundaries(World& world, const Scene& scene) {
   const ChannelSettings& c = scene.channel;
   const double h = scene.ice.thickness;
-  const double draft = h * scene.ice.density / scene.water.density;
-  const double y_ice = h / 2 - draft;  // centre of a floating sheet
+  const double y_ice = h / 2 - scene.ice.draft;  // centre of a floating sheet
   const Eigen::AlignedBox3d tank = tank_box(scene);
   const double x0 = tank.min().x(), x1 = tank.max().x();
   const double x_end = c.start_x + c.length;
