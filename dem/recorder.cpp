@@ -185,8 +185,7 @@ struct Recorder::Impl {
         m[3 * i + k] = s.moment[k];
         p[3 * i + k] = s.structure_position[k];
       }
-      // the paper's surge load resists towing (+x), so it is the negated x force
-      sx[i] = -s.force.x();
+      sx[i] = s.surge();
       contacts[i] = s.cone_contacts;
       awake[i] = s.awake_bodies;
       points[i] = s.contact_points;

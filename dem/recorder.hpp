@@ -112,6 +112,10 @@ struct LoadSample {
   int awake_bodies;                    // bodies being solved
   int contact_points = 0;              // contact points in the whole world (solver load)
   StepDiagnostics diagnostics;         // speeds, energy, ice mass, joint gap, cone penetration
+
+  /// The surge load, N: the load resisting towing (+x), positive when the ice pushes back,
+  /// as the paper plots it. The one place its sign is decided (/load/surge, statistics, progress).
+  double surge() const { return -force.x(); }
 };
 
 /// One joint break, with what its floe was doing (dem/break_context.hpp).

@@ -250,11 +250,11 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
 
       // record
       const LoadReading& load = state.load;
-      recorder.append(LoadSample{state.time, load.force, load.moment, state.structure_position,
-                                 load.contacts, state.awake_floes, state.contact_points,
-                                 state.diagnostics});
+      const LoadSample sample{state.time,     load.force,         load.moment,          state.structure_position,
+                              load.contacts,  state.awake_floes,  state.contact_points, state.diagnostics};
+      recorder.append(sample);
       history.time.push_back(state.time);
-      history.surge.push_back(-load.force.x());  // resisting towing, positive
+      history.surge.push_back(sample.surge());
       history.heave.push_back(load.force.y());
       history.sway.push_back(load.force.z());
       history.solver.push_back(state.diagnostics);
@@ -265,7 +265,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
         recorder.append_snapshot(state.time, body_poses(*state.world));
 
       // report, and keep the file readable every few seconds
-      progress.update(state.time, -load.force.x(), state.awake_floes);
+      progress.update(state.time, sample.surge(), state.awake_floes);
       if (wall() - last_flush > 5.0) {
         recorder.flush();
         last_flush = wall();
