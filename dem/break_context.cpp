@@ -57,10 +57,7 @@ BreakContext break_context(const Scene& scene, const World& world, int floe_id, 
     const double sign = floe_is_0 ? 1.0 : -1.0;
     for (int k = 0; k < m->getNumContacts(); ++k) {
       const btManifoldPoint& p = m->getContactPoint(k);
-      const Eigen::Vector3d force =
-          sign / h *
-          to_eigen(p.m_normalWorldOnB * p.m_appliedImpulse + p.m_lateralFrictionDir1 * p.m_appliedImpulseLateral1 +
-                   p.m_lateralFrictionDir2 * p.m_appliedImpulseLateral2);
+      const Eigen::Vector3d force = sign / h * to_eigen(contact_impulse(p));
       if (structure) {
         c.touching_structure = true;
         structure_force += force;

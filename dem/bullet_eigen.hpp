@@ -22,4 +22,11 @@ inline Eigen::Isometry3d to_eigen(const btTransform& t) {
 /// A body's centre-of-mass pose as an Eigen transform (body frame -> tank frame).
 inline Eigen::Isometry3d body_pose(const btRigidBody& body) { return to_eigen(body.getCenterOfMassTransform()); }
 
+/// The impulse a contact point applied to body 0 of its manifold in the last solve, N s: the
+/// normal impulse and both friction directions' (body 1 felt the opposite).
+inline btVector3 contact_impulse(const btManifoldPoint& p) {
+  return p.m_normalWorldOnB * p.m_appliedImpulse + p.m_lateralFrictionDir1 * p.m_appliedImpulseLateral1 +
+         p.m_lateralFrictionDir2 * p.m_appliedImpulseLateral2;
+}
+
 }  // namespace icedem

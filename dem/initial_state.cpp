@@ -70,7 +70,6 @@ Layout scene_layout(const Scene& scene) {
   }
 }
 
-
 std::unique_ptr<FlowField> make_flow(const Scene& scene) {
   switch (scene.flow.model) {
     case FlowModel::kStill: return std::make_unique<StillWater>();

@@ -15,9 +15,7 @@ void LoadCell::accumulate(const btDispatcher& dispatcher, const btRigidBody* str
     const double sign = is_body0 ? 1.0 : -1.0;
     for (int k = 0; k < m->getNumContacts(); ++k) {
       const btManifoldPoint& p = m->getContactPoint(k);
-      const btVector3 j = p.m_normalWorldOnB * p.m_appliedImpulse +
-                          p.m_lateralFrictionDir1 * p.m_appliedImpulseLateral1 +
-                          p.m_lateralFrictionDir2 * p.m_appliedImpulseLateral2;
+      const btVector3 j = contact_impulse(p);
       if (j.isZero()) continue;
       const Eigen::Vector3d impulse = sign * to_eigen(j);
       const Eigen::Vector3d at = to_eigen(is_body0 ? p.getPositionWorldOnA() : p.getPositionWorldOnB());

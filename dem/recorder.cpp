@@ -364,9 +364,9 @@ struct Recorder::Impl {
                            "joint breaks: time, floe id, joint index, failure mode code, load/threshold "
                            "ratio of the criterion that fired, joint midpoint, and the floe's state at "
                            "the break: mechanism code, contact with the structure, depth below the "
-                           "waterline, distance from the structure's waterline section, contact forces "
-                           "of the structure and of other floes (down, towards the axis), load ratio "
-                           "of every criterion");
+                           "waterline, horizontal distance from the structure's section at its height, "
+                           "contact forces of the structure and of other floes (down, towards the axis), "
+                           "load ratio of every criterion");
     flush_file();
   }
 
@@ -439,7 +439,7 @@ void Recorder::append(const LoadSample& sample) {
       impl_->flush_file();
     } catch (const H5::Exception& e) {
       throw OutputError("cannot write load samples to '" + impl_->path +
-                               "': " + hdf5_reason(e));
+                        "': " + hdf5_reason(e));
     }
   }
 }
@@ -466,7 +466,7 @@ void Recorder::append_snapshot(double time, const std::vector<BodyPose>& poses) 
       impl_->flush_file();
     } catch (const H5::Exception& e) {
       throw OutputError("cannot write snapshots to '" + impl_->path +
-                               "': " + hdf5_reason(e));
+                        "': " + hdf5_reason(e));
     }
   }
 }
@@ -481,7 +481,7 @@ void Recorder::append_fracture(const FractureEvent& event) {
       impl_->flush_file();
     } catch (const H5::Exception& e) {
       throw OutputError("cannot write fracture events to '" + impl_->path +
-                               "': " + hdf5_reason(e));
+                        "': " + hdf5_reason(e));
     }
   }
 }
@@ -501,8 +501,8 @@ void Recorder::write_floe_margins(const std::vector<double>& max_ratio,
                 "criterion over the run (0 for rigid floes and lattices never awake)");
     write_fixed(fracture, "floe_min_distance", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
                 min_distance.data(), "m",
-                "per layout floe: the closest a joint midpoint came to the structure's waterline "
-                "section, horizontally (inf if never checked)");
+                "per layout floe: the closest a joint midpoint came to the structure's section at its "
+                "height, horizontally (inf if never checked)");
     impl_->flush_file();
   } catch (const H5::Exception& e) {
     throw OutputError("cannot write floe margins to '" + impl_->path + "': " + hdf5_reason(e));

@@ -203,17 +203,23 @@ void walk(Scenario& sc, const toml::table& table, const std::string& prefix, con
   }
 }
 
+std::string trimmed(std::string s) {
+  s.erase(0, s.find_first_not_of(" \t"));
+  s.erase(s.find_last_not_of(" \t") + 1);
+  return s;
+}
+
+// the key a --set text names ("" without an '=')
+std::string override_key(const std::string& text) {
+  const auto eq = text.find('=');
+  return eq == std::string::npos ? "" : trimmed(text.substr(0, eq));
+}
+
 void apply_override(Scenario& sc, const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError(fmt::format("--set {}: expected key.path=value", text));
-  std::string path = text.substr(0, eq), raw = text.substr(eq + 1);
-  auto trim = [](std::string& s) {
-    s.erase(0, s.find_first_not_of(" \t"));
-    s.erase(s.find_last_not_of(" \t") + 1);
-  };
-  trim(path);
-  trim(raw);
+  const std::string path = override_key(text), raw = trimmed(text.substr(eq + 1));
   const std::string where = "--set " + path + "=" + raw;
   const KeySpec* spec = find_key(path);
   if (!spec && is_section(path))
@@ -291,12 +297,7 @@ Scenario parse_scenario(const std::string& toml_text, const std::string& display
                                  e.description()));
   }
   std::set<std::string> overridden;
-  for (const std::string& o : overrides) {
-    std::string path = o.substr(0, o.find('='));
-    path.erase(0, path.find_first_not_of(" \t"));
-    path.erase(path.find_last_not_of(" \t") + 1);
-    overridden.insert(path);
-  }
+  for (const std::string& o : overrides) overridden.insert(override_key(o));
   walk(sc, table, "", display_name, overridden);
   for (const std::string& o : overrides) apply_override(sc, o);
   apply_solver_profile(sc);

@@ -160,18 +160,12 @@ double process_cpu_time() {
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
-// "0 compression, 1 shear, ...": the code -> name attributes of /fracture/events
-std::string mode_names() {
+// "0 compression, 1 shear, ...": the code -> name attributes of /fracture/events, for an enum
+// of `count` codes named by `name`
+template <typename Code>
+std::string code_names(int count, const char* (*name)(Code)) {
   std::string out;
-  for (int m = 0; m < kFailureModes; ++m)
-    out += fmt::format("{}{} {}", m ? ", " : "", m, failure_mode_name(static_cast<FailureMode>(m)));
-  return out;
-}
-
-std::string mechanism_names() {
-  std::string out;
-  for (int m = 0; m < kBreakMechanisms; ++m)
-    out += fmt::format("{}{} {}", m ? ", " : "", m, break_mechanism_name(static_cast<BreakMechanism>(m)));
+  for (int m = 0; m < count; ++m) out += fmt::format("{}{} {}", m ? ", " : "", m, name(static_cast<Code>(m)));
   return out;
 }
 
@@ -213,8 +207,8 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
                                       {"achieved_concentration", layout.achieved_concentration},
                                       {"target_concentration", scene.ice.concentration},
                                       {"channel_area_m2", layout.channel_area}});
-  recorder.set_attribute("/fracture/events", "mode_names", mode_names());
-  recorder.set_attribute("/fracture/events", "mechanism_names", mechanism_names());
+  recorder.set_attribute("/fracture/events", "mode_names", code_names(kFailureModes, failure_mode_name));
+  recorder.set_attribute("/fracture/events", "mechanism_names", code_names(kBreakMechanisms, break_mechanism_name));
   recorder.set_attribute("/layout", "source", scene.layout.file.empty() ? "generated" : scene.layout.file);
 
   const long total_steps = std::lround(scene.time.duration / scene.time.dt);
