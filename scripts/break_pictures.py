@@ -32,6 +32,7 @@ from scipy.spatial import ConvexHull  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sweeplib import aggregate as agg, execute, spec  # noqa: E402
+from xdmf_snapshots import quat_to_matrix  # noqa: E402
 
 FII, FIS = "friction.ice_ice", "friction.ice_structure"
 WANTED = ((0.3, "pressed under"), (0.7, "on the slope"))  # Fig. 18 (a) and (b)
@@ -88,11 +89,7 @@ def body_points(h, k):
         v = verts[off[b]:off[b + 1]]
         local = np.vstack([np.column_stack([v[:, 0], np.full(len(v), y), v[:, 1]])
                            for y in (-thick[b] / 2, thick[b] / 2)])
-        w, x, y, z = q[b]
-        R = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                      [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                      [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
-        out.append(pos[b] + local @ R.T)
+        out.append(pos[b] + local @ quat_to_matrix(q[b]).T)
     return out
 
 

@@ -72,8 +72,7 @@ def pixel_to_tank(metres_per_pixel=None, origin=(0.0, 0.0), reference=None):
 
 
 def polygon_area(p):
-    x, z = p[:, 0], p[:, 1]
-    return 0.5 * abs(np.dot(x, np.roll(z, -1)) - np.dot(z, np.roll(x, -1)))
+    return abs(signed_area_xz(p))
 
 
 def floes_from_labels(labels, to_tank, min_area=0.0, region=None):
