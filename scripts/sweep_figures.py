@@ -19,8 +19,9 @@
                                 every floe that came within 1 m of the structure, per f_ii
 
 The drawn runs' HDF5 files are needed; a run known only by its kept record
-(sweeplib/spec.py) is run again for them. And, beside the run the top view shows, run.xdmf and run_views.h5: its snapshots
-for ParaView (scripts/xdmf_snapshots.py).
+(sweeplib/spec.py) is run again for them. And, beside the run the top view
+shows, run.xdmf and run_views.h5: its snapshots for ParaView
+(scripts/xdmf_snapshots.py).
 
     scripts/sweep_figures.py SWEEP.toml [--out DIR] [--figures DIR] [--icedem PATH] [--jobs N]
 """

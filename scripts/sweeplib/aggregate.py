@@ -152,11 +152,16 @@ def make_record(run_dir):
 
 
 def load_record(run, out):
-    """The record of a finished run: from its directory (kept as run.record_file too, when the
-    sweep keeps records and it is not there yet), else from the kept file alone."""
+    """The record of a finished run: the kept file when the sweep keeps records and it is at
+    least as new as the run's summary; else made from the run's directory (reading its HDF5
+    file) and kept."""
     from . import execute
     run_dir = os.path.join(out, run.path)
-    if execute.finished_here(run, out):
+    summary = os.path.join(run_dir, "summary.json")
+    kept_is_current = (run.record_file and os.path.isfile(run.record_file)
+                       and (not os.path.isfile(summary)
+                            or os.path.getmtime(run.record_file) >= os.path.getmtime(summary)))
+    if execute.finished_here(run, out) and not kept_is_current:
         record = make_record(run_dir)
         if run.record_file:
             os.makedirs(os.path.dirname(run.record_file), exist_ok=True)
