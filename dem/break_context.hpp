@@ -42,7 +42,7 @@ const char* break_mechanism_name(BreakMechanism mechanism);
 /// elements, downward plus towards the structure axis, exceeds this: the weight
 /// of a tenth of a 0.15 m element (0.67 N), well above the drag that holds a
 /// drifting floe against its neighbours (about 0.01 N at 0.07 m/s) and well
-/// below the 45 N edge load that breaks a 0.6 m floe (docs/breakage.md).
+/// below the 45 N edge load that breaks a 0.6 m floe (docs/model/breakage.md).
 constexpr double kPressingForce = 0.67;  // N
 
 /// Floes whose joints come this close to the structure (distance_from_structure)

@@ -20,7 +20,7 @@ constexpr double kBlowUpDistance = 1000.0;  // m outside the tank
 
 /// Angular speed above which a floe or element is rocking unstably, rad/s: a
 /// 0.15 m element turning this fast moves its edge at over 1 m/s, 15 times the
-/// tow speed, while stable runs stay below 2 rad/s (README, "Breakable ice").
+/// tow speed, while stable runs stay below 2 rad/s (docs/model/physics.md, "Breakable ice").
 /// A warning, not a blow-up: the run goes on.
 constexpr double kRockingAngularSpeed = 15.0;
 

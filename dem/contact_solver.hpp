@@ -6,7 +6,7 @@
 // about one contact along such a chain per sweep, so at a fixed small number
 // of sweeps the chain is not solved, the penetration it should have resisted
 // is removed by the split impulse instead, and the peak load at the structure
-// is a property of the sweep count (README, "Convergence"). This solver:
+// is a property of the sweep count (docs/model/convergence.md). This solver:
 //  - measures every island's convergence after each sweep and stops the sweeps
 //    of that island once the residual is below solver.tolerance (quiet islands
 //    stop after a sweep or two, the jammed one runs up to the cap);

@@ -5,7 +5,7 @@
 //
 // Per-step joint loads from the PGS solver are noisy and depend on the
 // iteration count; fracture.joint_iterations and fracture.load_filter_time are
-// the two remedies (README, "Breakable ice": measured effect on breaks and cost).
+// the two remedies (docs/model/physics.md, "Breakable ice": measured effect on breaks and cost).
 #pragma once
 
 #include "dem/joint_loads.hpp"

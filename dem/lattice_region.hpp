@@ -6,7 +6,7 @@
 // one stays a lattice. This saves the joint rows, most of the solver's work in a
 // breakable scene; the price is that ice outside the region cannot break
 // (scripts/fracture_remedy.sh measures where breaks happen with lattices
-// everywhere; README, "Breakable ice").
+// everywhere; docs/model/physics.md, "Breakable ice").
 #pragma once
 
 #include "dem/scene.hpp"

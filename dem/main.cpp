@@ -1,7 +1,8 @@
-// The `icedem` command (DESIGN.md, "Interfaces other tools rely on"):
+// The `icedem` command (docs/user/commands.md):
 //   icedem run SCENARIO.toml [-o OUT.h5] [--set key.path=value ...] [--summary-json FILE]
 //   icedem check SCENARIO.toml [--set ...]     validate only
 //   icedem keys                                 every scenario key (markdown)
+//   icedem schema                               every output: datasets, attributes, summary keys
 //   icedem stl SCENARIO.toml -o hull.stl        the structure's surface
 //   icedem calibrate PLATE.toml [--target-modulus PA] [--write OUT.toml]
 //                                               joint CFM for a target elastic modulus
@@ -29,6 +30,7 @@
 #include "dem/ice_lattice.hpp"
 #include "dem/initial_state.hpp"
 #include "dem/output_lock.hpp"
+#include "dem/output_schema.hpp"
 #include "dem/recorder.hpp"
 #include "dem/scenario.hpp"
 #include "dem/simulation.hpp"
@@ -218,7 +220,8 @@ int main(int argc, char** argv) {
   check->add_option("scenario", scenario, "scenario TOML file")->required();
   check->add_option("--set", sets, "override a scenario key")->take_all();
 
-  app.add_subcommand("keys", "print every scenario key with unit, default, range and meaning");
+  CLI::App* keys = app.add_subcommand("keys", "print every scenario key with unit, default, range and meaning");
+  CLI::App* schema = app.add_subcommand("schema", "print every output (HDF5 datasets, attributes, summary keys)");
 
   CLI::App* stl = app.add_subcommand("stl", "write the structure's surface as an ASCII STL");
   stl->add_option("scenario", scenario, "scenario TOML file")->required();
@@ -264,7 +267,8 @@ int main(int argc, char** argv) {
     if (*foam_case) return foam_case_command(scenario, sets, output);
     if (*foam_solve) return foam_solve_command(scenario, sets);
     if (*flow_cmd) return flow_command(scenario, sets, output);
-    std::cout << keys_markdown();
+    if (*keys) std::cout << keys_markdown();
+    if (*schema) std::cout << output_markdown();
     return kExitOk;
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -1,5 +1,5 @@
 // The HDF5 recorder: buffered, crash-tolerant writing of one run's out.h5 (layout in
-// recorder.hpp).
+// dem/output_schema.hpp).
 #include "dem/recorder.hpp"
 
 #include <H5Cpp.h>
@@ -12,6 +12,7 @@
 #include <exception>
 #include <filesystem>
 #include <stdexcept>
+#include <utility>
 
 #include <sys/statvfs.h>
 
@@ -19,13 +20,11 @@
 
 #include "dem/errors.hpp"
 #include "dem/hdf5_io.hpp"
+#include "dem/output_schema.hpp"
 
 namespace icedem {
 
 namespace {
-
-// version of this file layout, written to /meta format_version; bump on incompatible change
-constexpr int kFormatVersion = 1;
 
 // rows per chunk of the per-step series: 1024 doubles = 8 KiB, a few seconds of a run
 constexpr hsize_t kSeriesChunkRows = 1024;
@@ -47,54 +46,44 @@ std::string utc_now_iso8601() {
 }
 
 // fracture events: the in-memory layout is FractureEvent itself, the file layout is packed;
-// both are built from this one list of members
-struct EventMember {
-  const char* name;
-  std::size_t offset;
-  bool integer;  // i4, else f8
-};
-const std::vector<EventMember>& event_members() {
-  static const std::vector<EventMember> members{
-      {"time", offsetof(FractureEvent, time), false},
-      {"floe", offsetof(FractureEvent, floe), true},
-      {"joint", offsetof(FractureEvent, joint), true},
-      {"mode", offsetof(FractureEvent, mode), true},
-      {"ratio", offsetof(FractureEvent, ratio), false},
-      {"x", offsetof(FractureEvent, x), false},
-      {"z", offsetof(FractureEvent, z), false},
-      {"mechanism", offsetof(FractureEvent, mechanism), true},
-      {"touching_structure", offsetof(FractureEvent, touching_structure), true},
-      {"depth", offsetof(FractureEvent, depth), false},
-      {"distance", offsetof(FractureEvent, distance), false},
-      {"structure_force", offsetof(FractureEvent, structure_force), false},
-      {"press_down", offsetof(FractureEvent, press_down), false},
-      {"press_toward", offsetof(FractureEvent, press_toward), false},
-      {"ratio_compression", offsetof(FractureEvent, ratio_compression), false},
-      {"ratio_shear", offsetof(FractureEvent, ratio_shear), false},
-      {"ratio_bending", offsetof(FractureEvent, ratio_bending), false},
-      {"ratio_tension", offsetof(FractureEvent, ratio_tension), false},
-      {"ratio_in_plane_bending", offsetof(FractureEvent, ratio_in_plane_bending), false},
-  };
-  return members;
-}
+// both are built from the schema's one list of fields
+const H5::PredType& event_mem_type(Element e) { return e == Element::i4 ? H5::PredType::NATIVE_INT : H5::PredType::NATIVE_DOUBLE; }
+const H5::PredType& event_file_type(Element e) { return e == Element::i4 ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE; }
 
 H5::CompType fracture_mem_type() {
   H5::CompType type(sizeof(FractureEvent));
-  for (const EventMember& m : event_members())
-    type.insertMember(m.name, m.offset, m.integer ? H5::PredType::NATIVE_INT : H5::PredType::NATIVE_DOUBLE);
+  for (const EventField& f : event_fields()) type.insertMember(f.name, f.offset, event_mem_type(f.element));
   return type;
 }
 
 H5::CompType fracture_file_type() {
   std::size_t size = 0;
-  for (const EventMember& m : event_members()) size += m.integer ? 4 : 8;
+  for (const EventField& f : event_fields()) size += event_file_type(f.element).getSize();
   H5::CompType type(size);
   std::size_t offset = 0;
-  for (const EventMember& m : event_members()) {
-    type.insertMember(m.name, offset, m.integer ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE);
-    offset += m.integer ? 4 : 8;
+  for (const EventField& f : event_fields()) {
+    type.insertMember(f.name, offset, event_file_type(f.element));
+    offset += event_file_type(f.element).getSize();
   }
   return type;
+}
+
+// "time: s, floe: 1, ...": the units attribute of /fracture/events
+std::string event_units() {
+  std::string out;
+  for (const EventField& f : event_fields()) out += fmt::format("{}{}: {}", out.empty() ? "" : ", ", f.name, f.unit);
+  return out;
+}
+
+// the file type of a per-step series' element
+const H5::PredType& series_file_type(Element e) {
+  return e == Element::i4 ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE;
+}
+
+// the group and the name of a dataset path: "/load/force" -> "/load", "force"
+std::pair<std::string, std::string> split_path(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  return {path.substr(0, slash), path.substr(slash + 1)};
 }
 
 }  // namespace
@@ -108,9 +97,8 @@ struct Recorder::Impl {
   std::size_t bodies = 0;
   std::size_t appended_rows = 0;
 
-  // per-step series
-  Series time, force, moment, surge, cone_contacts, structure_position, awake_bodies, contact_points;
-  std::vector<Series> diagnostics = std::vector<Series>(kDiagnosticCount);  // kDiagnosticColumns order
+  // per-step series, in series_columns() order
+  std::vector<Series> series = std::vector<Series>(series_columns().size());
   // snapshots
   Series snap_time, snap_position, snap_orientation, snap_awake;
   // fracture events
@@ -174,36 +162,20 @@ struct Recorder::Impl {
     const std::size_t n = load_buffer.size();
     if (n == 0) return;
     require_space(buffered_bytes());
-    // gather the buffered samples column by column
-    std::vector<double> t(n), f(3 * n), m(3 * n), sx(n), p(3 * n);
-    std::vector<int> contacts(n), awake(n), points(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const LoadSample& s = load_buffer[i];
-      t[i] = s.time;
-      for (int k = 0; k < 3; ++k) {
-        f[3 * i + k] = s.force[k];
-        m[3 * i + k] = s.moment[k];
-        p[3 * i + k] = s.structure_position[k];
+    // gather the buffered samples column by column, as the schema reads them
+    std::vector<double> values;
+    std::vector<int> integers;
+    for (std::size_t c = 0; c < series.size(); ++c) {
+      const SeriesColumn& col = series_columns()[c];
+      values.resize(n * col.width);
+      for (std::size_t i = 0; i < n; ++i)
+        for (int k = 0; k < col.width; ++k) values[col.width * i + k] = col.value(load_buffer[i], k);
+      if (col.element == Element::i4) {
+        integers.assign(values.begin(), values.end());
+        series[c].write(integers.data(), n, H5::PredType::NATIVE_INT);
+      } else {
+        series[c].write(values.data(), n, H5::PredType::NATIVE_DOUBLE);
       }
-      sx[i] = s.surge();
-      contacts[i] = s.cone_contacts;
-      awake[i] = s.awake_bodies;
-      points[i] = s.contact_points;
-    }
-    const auto& dbl = H5::PredType::NATIVE_DOUBLE;
-    const auto& integer = H5::PredType::NATIVE_INT;
-    time.write(t.data(), n, dbl);
-    force.write(f.data(), n, dbl);
-    moment.write(m.data(), n, dbl);
-    surge.write(sx.data(), n, dbl);
-    cone_contacts.write(contacts.data(), n, integer);
-    structure_position.write(p.data(), n, dbl);
-    awake_bodies.write(awake.data(), n, integer);
-    contact_points.write(points.data(), n, integer);
-    std::vector<double> column(n);
-    for (std::size_t c = 0; c < diagnostics.size(); ++c) {
-      for (std::size_t i = 0; i < n; ++i) column[i] = load_buffer[i].diagnostics.*kDiagnosticColumns[c].field;
-      diagnostics[c].write(column.data(), n, dbl);
     }
     load_buffer.clear();
   }
@@ -269,11 +241,36 @@ struct Recorder::Impl {
     }
   }
 
+  // the group a dataset path lives in, created on first use
+  H5::Group parent_group(const std::string& path) {
+    const std::string group = split_path(path).first;
+    return file->nameExists(group) ? file->openGroup(group) : file->createGroup(group);
+  }
+
+  // a growing dataset of one of the schema's other datasets (units and description from it)
+  Series schema_series(const std::string& path, const H5::DataType& type, const std::vector<hsize_t>& row_shape,
+                       hsize_t chunk_rows, const std::string& units) {
+    const DatasetEntry& e = dataset_entry(path);
+    return create_series(parent_group(path), split_path(path).second, type, row_shape, chunk_rows, units,
+                         e.description);
+  }
+  Series schema_series(const std::string& path, const H5::DataType& type, const std::vector<hsize_t>& row_shape,
+                       hsize_t chunk_rows) {
+    return schema_series(path, type, row_shape, chunk_rows, dataset_entry(path).unit);
+  }
+
+  // a fixed dataset of the schema, written in one go
+  void schema_fixed(const std::string& path, const H5::DataType& file_type, const H5::DataType& mem_type,
+                    const std::vector<hsize_t>& dims, const void* data) {
+    const DatasetEntry& e = dataset_entry(path);
+    write_fixed(parent_group(path), split_path(path).second, file_type, mem_type, dims, data, e.unit, e.description);
+  }
+
   void create_layout(const RunMeta& run, const std::vector<BodyOutline>& outlines) {
     // metadata first: a file killed at any later point says what run it belongs to
     meta = std::make_unique<H5::Group>(file->createGroup("/meta"));
     const H5::Group& m = *meta;
-    write_attr(m, "format_version", kFormatVersion);
+    write_attr(m, "format_version", kOutputFormatVersion);
     write_attr(m, "scenario", run.scenario_text);
     write_attr(m, "scenario_path", run.scenario_path);
     write_attr(m, "command_line", run.command_line);
@@ -286,35 +283,15 @@ struct Recorder::Impl {
     write_attr(m, "message", std::string(""));
     write_attr(m, "wall_time_s", 0.0);
 
-    const H5::DataType& f8 = H5::PredType::IEEE_F64LE;
-    const H5::DataType& i4 = H5::PredType::STD_I32LE;
-    const H5::DataType& u1 = H5::PredType::STD_U8LE;
-
-    // per-step load series
-    H5::Group load = file->createGroup("/load");
-    time = create_series(load, "time", f8, {}, kSeriesChunkRows, "s", "simulation time");
-    force = create_series(load, "force", f8, {3}, kSeriesChunkRows, "N",
-                          "force by the ice on the structure, tank frame (x surge, y heave up, "
-                          "z sway)");
-    moment = create_series(load, "moment", f8, {3}, kSeriesChunkRows, "N m",
-                           "moment by the ice on the structure about the cone axis at the "
-                           "waterline, tank frame");
-    surge = create_series(load, "surge", f8, {}, kSeriesChunkRows, "N",
-                          "surge load = -force_x: the load resisting towing, positive");
-    cone_contacts = create_series(load, "cone_contacts", i4, {}, kSeriesChunkRows, "1",
-                                  "contact points between ice and structure");
-    H5::Group structure = file->createGroup("/structure");
-    structure_position = create_series(structure, "position", f8, {3}, kSeriesChunkRows, "m",
-                                       "structure reference point, tank frame");
-    H5::Group diagnostics_group = file->createGroup("/diagnostics");
-    awake_bodies = create_series(diagnostics_group, "awake_bodies", i4, {}, kSeriesChunkRows, "1",
-                                 "bodies being solved (not sleeping)");
-    contact_points = create_series(diagnostics_group, "contact_points", i4, {}, kSeriesChunkRows, "1",
-                                   "contact points in the whole world (solver load)");
-    for (std::size_t c = 0; c < diagnostics.size(); ++c) {
-      const DiagnosticColumn& col = kDiagnosticColumns[c];
-      diagnostics[c] = create_series(diagnostics_group, col.name, f8, {}, kSeriesChunkRows, col.unit, col.description);
+    // per-step series: load, structure, diagnostics
+    for (std::size_t c = 0; c < series.size(); ++c) {
+      const SeriesColumn& col = series_columns()[c];
+      const std::vector<hsize_t> row_shape = col.width == 1 ? std::vector<hsize_t>{} : std::vector<hsize_t>{hsize_t(col.width)};
+      series[c] = create_series(parent_group(col.path), split_path(col.path).second, series_file_type(col.element),
+                                row_shape, kSeriesChunkRows, col.unit, col.description);
     }
+
+    const H5::DataType& f8 = H5::PredType::IEEE_F64LE;
 
     // body outlines: a flat vertex list indexed by offsets (CSR), since outlines differ in size
     bodies = outlines.size();
@@ -331,52 +308,28 @@ struct Recorder::Impl {
       offset[i + 1] = offset[i] + static_cast<int64_t>(outlines[i].outline.size());
     }
     const hsize_t nb = bodies, nv = vertices.size() / 2;
-    H5::Group body_group = file->createGroup("/bodies");
-    write_fixed(body_group, "floe_id", i4, H5::PredType::NATIVE_INT, {nb}, floe_id.data(), "1",
-                "floe id of each body; body order is the snapshot order");
-    write_fixed(body_group, "thickness", f8, H5::PredType::NATIVE_DOUBLE, {nb},
-                thickness.data(), "m", "body thickness");
-    write_fixed(body_group, "vertex_offset", H5::PredType::STD_I64LE, H5::PredType::NATIVE_INT64,
-                {nb + 1}, offset.data(), "1",
-                "outline of body i is vertices[vertex_offset[i]:vertex_offset[i+1]]");
-    write_fixed(body_group, "vertices", f8, H5::PredType::NATIVE_DOUBLE, {nv, 2},
-                vertices.data(), "m", "outline vertices in the body frame (x, z)");
+    schema_fixed("/bodies/floe_id", H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT, {nb}, floe_id.data());
+    schema_fixed("/bodies/thickness", f8, H5::PredType::NATIVE_DOUBLE, {nb}, thickness.data());
+    schema_fixed("/bodies/vertex_offset", H5::PredType::STD_I64LE, H5::PredType::NATIVE_INT64, {nb + 1}, offset.data());
+    schema_fixed("/bodies/vertices", f8, H5::PredType::NATIVE_DOUBLE, {nv, 2}, vertices.data());
 
     // snapshots: chunks of whole snapshots, sized so that a chunk stays near kSnapshotChunkBytes
     const std::size_t snapshot_bytes = std::max<std::size_t>(bodies, 1) * 4 * sizeof(double);
     const hsize_t snap_rows = std::clamp<hsize_t>(kSnapshotChunkBytes / snapshot_bytes, 1, 256);
-    H5::Group snapshots = file->createGroup("/snapshots");
-    snap_time = create_series(snapshots, "time", f8, {}, 256, "s", "snapshot time");
-    snap_position = create_series(snapshots, "position", f8, {nb, 3}, snap_rows, "m",
-                                  "body origin, tank frame");
-    snap_orientation =
-        create_series(snapshots, "orientation", f8, {nb, 4}, snap_rows, "1",
-                      "body-to-tank rotation as a unit quaternion (w, x, y, z)");
-    snap_awake = create_series(snapshots, "awake", u1, {nb}, snap_rows, "1",
-                               "1 if the body was awake (being solved)");
+    snap_time = schema_series("/snapshots/time", f8, {}, 256);
+    snap_position = schema_series("/snapshots/position", f8, {nb, 3}, snap_rows);
+    snap_orientation = schema_series("/snapshots/orientation", f8, {nb, 4}, snap_rows);
+    snap_awake = schema_series("/snapshots/awake", H5::PredType::STD_U8LE, {nb}, snap_rows);
 
-    // fracture events
-    H5::Group fracture = file->createGroup("/fracture");
-    events = create_series(fracture, "events", fracture_file_type(), {}, 256,
-                           "time: s, floe: 1, joint: 1, mode: 1, ratio: 1, x: m, z: m, mechanism: 1, "
-                           "touching_structure: 1, depth: m, distance: m, structure_force: N, "
-                           "press_down: N, press_toward: N, ratio_*: 1",
-                           "joint breaks: time, floe id, joint index, failure mode code, load/threshold "
-                           "ratio of the criterion that fired, joint midpoint, and the floe's state at "
-                           "the break: mechanism code, contact with the structure, depth below the "
-                           "waterline, horizontal distance from the structure's section at its height, "
-                           "contact forces of the structure and of other floes (down, towards the axis), "
-                           "load ratio of every criterion");
+    // fracture events (/fracture/floe_* are written at the end, by write_floe_margins)
+    events = schema_series("/fracture/events", fracture_file_type(), {}, 256, event_units());
     flush_file();
   }
 
   // every object must be closed for the file to close: HDF5 keeps it open while any is
   void close() {
-    for (Series* s : {&time, &force, &moment, &surge, &cone_contacts, &structure_position,
-                      &awake_bodies, &contact_points, &snap_time, &snap_position, &snap_orientation, &snap_awake,
-                      &events})
-      s->dataset.reset();
-    for (Series& s : diagnostics) s.dataset.reset();
+    for (Series* s : {&snap_time, &snap_position, &snap_orientation, &snap_awake, &events}) s->dataset.reset();
+    for (Series& s : series) s.dataset.reset();
     meta.reset();
     file->close();
     finished = true;
@@ -493,16 +446,11 @@ void Recorder::write_floe_margins(const std::vector<double>& max_ratio,
     throw std::invalid_argument("Recorder::write_floe_margins: one ratio and one distance per floe");
   QuietHdf5 quiet;
   try {
-    const H5::Group fracture = impl_->file->openGroup("/fracture");
     const hsize_t n = max_ratio.size();
-    write_fixed(fracture, "floe_max_ratio", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
-                max_ratio.data(), "1",
-                "per layout floe: the largest load / capacity ratio of any of its joints under any "
-                "criterion over the run (0 for rigid floes and lattices never awake)");
-    write_fixed(fracture, "floe_min_distance", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
-                min_distance.data(), "m",
-                "per layout floe: the closest a joint midpoint came to the structure's section at its "
-                "height, horizontally (inf if never checked)");
+    impl_->schema_fixed("/fracture/floe_max_ratio", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
+                        max_ratio.data());
+    impl_->schema_fixed("/fracture/floe_min_distance", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
+                        min_distance.data());
     impl_->flush_file();
   } catch (const H5::Exception& e) {
     throw OutputError("cannot write floe margins to '" + impl_->path + "': " + hdf5_reason(e));

@@ -54,7 +54,7 @@ std::vector<KeySpec> make_keys() {
   k.push_back(choice("solver.profile", "converged", {"converged", "paper"},
                      "solver settings as a set (dem/solver_profile.cpp): \"converged\" = warm-started "
                      "normal and friction impulses, sweeps until the residual is below 0.01 or 160 sweeps "
-                     "(the convergence study's choice, docs/convergence.md); \"paper\" = the seed paper's "
+                     "(the convergence study's choice, docs/model/convergence.md); \"paper\" = the seed paper's "
                      "numerics, 10 PGS sweeps a step on Bullet's solver as it comes"));
   k.push_back(integer("solver.iterations", 160, 1, 100000,
                       "(profile) cap of projected Gauss-Seidel sweeps over the contacts per island and "
@@ -76,7 +76,7 @@ std::vector<KeySpec> make_keys() {
                      "Bullet broadphase: dynamic AABB tree, or 3-axis sweep and prune over the tank"));
   k.push_back(boolean("solver.split_impulse", true,
                       "correct contact penetration with a separate position impulse, so measured "
-                      "contact impulses carry no Baumgarte push (see README, load cell)"));
+                      "contact impulses carry no Baumgarte push (docs/model/physics.md, load cell)"));
   k.push_back(real("solver.contact_erp", "-", 0.2, 0.0, 1.0,
                    "fraction of contact penetration corrected per step"));
 
@@ -242,7 +242,7 @@ std::vector<KeySpec> make_keys() {
   k.push_back(boolean("activation.freeze_outside_region", false,
                       "resting floes outside the activation region become fixed obstacles until "
                       "struck or reached (dem/activation.hpp): 2-3x faster, but the frozen field "
-                      "cannot creep, which shortens peak spacing and raises peaks (README)"));
+                      "cannot creep, which shortens peak spacing and raises peaks (docs/model/physics.md)"));
   k.push_back(real("activation.region_ahead", "m", 3.0, 0.0, 1.0e4,
                    "activation region: distance ahead of the structure axis where no floe is frozen"));
   k.push_back(real("activation.region_behind", "m", 2.0, 0.0, 1.0e4,

@@ -1,6 +1,6 @@
 // The scenario keys: each key declared once, with its type, unit, default,
 // allowed range and a one-line doc. The parser, the validator, the resolved
-// scenario text written to /meta and `icedem keys` (docs/scenario_keys.md) all
+// scenario text written to /meta and `icedem keys` (docs/user/scenario_keys.md) all
 // read this one table.
 #pragma once
 
@@ -61,7 +61,7 @@ std::string describe_expected(const KeySpec& spec);
 /// A value formatted as TOML (strings quoted, lists bracketed).
 std::string format_value(const KeyValue& value);
 
-/// Markdown table of every key (docs/scenario_keys.md is generated from it).
+/// Markdown table of every key (docs/user/scenario_keys.md is generated from it).
 std::string keys_markdown();
 
 }  // namespace icedem

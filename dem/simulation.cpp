@@ -133,20 +133,13 @@ void compute_statistics(const Scene& scene, const LoadHistory& h, RunSummary& s)
   s.mean_fz_N = n ? fz / n : 0.0;
 }
 
+// the summary's numbers marked for /stats (dem/summary.hpp), so the file carries its statistics
 void write_statistics(Recorder& rec, const RunSummary& s) {
-  std::map<std::string, double> a{{"steps", double(s.steps)},
-                                  {"sim_time_s", s.sim_time_s},
-                                  {"wall_time_s", s.wall_time_s},
-                                  {"cpu_time_s", s.cpu_time_s},
-                                  {"mean_awake", s.mean_awake},
-                                  {"breaks", double(s.breaks)},
-                                  {"first_contact_s", s.first_contact_s}};
-  if (s.has_statistics) {
-    a.insert({{"mean_fx_N", s.surge.mean}, {"max_fx_N", s.surge.max}, {"std_fx_N", s.surge.std},
-              {"min_fx_N", s.surge.min}, {"mean_fy_N", s.mean_fy_N}, {"mean_fz_N", s.mean_fz_N},
-              {"window_start_s", s.surge.window_start}, {"window_end_s", s.surge.window_end},
-              {"window_s", s.surge.window_s}, {"lowpass_hz", s.surge.lowpass_hz},
-              {"peaks", double(s.surge.peaks)}, {"peak_interval_s", s.surge.peak_interval_s}});
+  std::map<std::string, double> a;
+  for (const SummaryField& f : summary_fields()) {
+    if (!f.stats) continue;
+    const nlohmann::json value = f.value(s);
+    if (value.is_number()) a[f.key] = value.get<double>();
   }
   rec.set_attributes("/stats", a);
   if (!s.has_statistics) rec.set_attribute("/stats", "note", s.statistics_note);

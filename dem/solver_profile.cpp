@@ -18,7 +18,7 @@ using Settings = std::vector<std::pair<std::string, KeyValue>>;
 // "converged" (the default): the solver keys' own defaults (dem/scenario_keys.cpp), so it
 // sets nothing: full warm starting of normal and friction impulses, and sweeps until the
 // residual is below 1 % or 160 sweeps. Chosen by the convergence study
-// (scripts/convergence, docs/convergence.md): against a reference at dt/2 and 4x the
+// (scripts/convergence, docs/model/convergence.md): against a reference at dt/2 and 4x the
 // sweeps it is within 5 % on the mean and 10 % on p99 and the mean of maxima for small
 // rigid floes and 0.20 m lattices; 0.15 m lattices remain low on the peaks.
 const std::map<std::string, Settings>& profiles() {

@@ -20,7 +20,7 @@ double median(std::vector<double> v) {
 }
 
 // sweeps per step, and a warning when the cap, not the tolerance, ended the sweeps
-// of many steps: the loads of those steps are not converged (README, "Convergence")
+// of many steps: the loads of those steps are not converged (docs/model/convergence.md)
 std::string solver_line(const SolverSummary& v) {
   std::string out = fmt::format("  contact solver: {:.1f} sweeps per step on average, at most {:d} (cap {:d}), "
                                 "tolerance {:g}, largest residual {:.2g}\n",
@@ -32,7 +32,7 @@ std::string solver_line(const SolverSummary& v) {
                        100 * v.capped_window_fraction, v.cap, v.tolerance);
   if (v.tolerance == 0)
     out += "  note: solver.tolerance = 0 runs every island to the cap and nothing checks that the loads "
-           "converged (README, \"Convergence\")\n";
+           "converged (docs/model/convergence.md)\n";
   return out;
 }
 
@@ -68,11 +68,11 @@ std::string summary_table(const RunSummary& s) {
       out += fmt::format("  inferred elastic modulus {:.1f} MPa (target {:.1f} MPa)\n",
                          v["elastic_modulus_MPa"].get<double>(), v["elastic_modulus_target_MPa"].get<double>());
   }
-  // an element turning this fast is rocking unstably, not moving with the ice (README,
+  // an element turning this fast is rocking unstably, not moving with the ice (docs/model/physics.md,
   // "Breakable ice": at ERP 0.8 elements rock with a growing period-2 oscillation)
   if (s.health.max.max_angular_speed > kRockingAngularSpeed)
     out += fmt::format("  warning: a floe or element turned at {:.1f} rad/s (t = {:.2f} s): unstable joints? "
-                       "/diagnostics/max_angular_speed has the history; README, \"Breakable ice\"\n",
+                       "/diagnostics/max_angular_speed has the history; docs/model/physics.md, \"Breakable ice\"\n",
                        s.health.max.max_angular_speed, s.health.max_time[0]);
   out += solver_line(s.solver);
   if (!s.has_statistics) {
@@ -103,63 +103,132 @@ std::string summary_table(const RunSummary& s) {
   return out;
 }
 
-nlohmann::json summary_json(const RunSummary& s) {
-  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  const bool ok = s.has_statistics;
-  nlohmann::json j;
-  j["scenario"] = s.scenario;
-  j["output"] = s.output;
-  j["status"] = s.status;
-  j["message"] = s.message;
-  j["statistics_note"] = s.statistics_note;
-  j["mean_fx_N"] = ok ? num(s.surge.mean) : nullptr;
-  j["max_fx_N"] = ok ? num(s.surge.max) : nullptr;
-  j["std_fx_N"] = ok ? num(s.surge.std) : nullptr;
-  j["mean_fy_N"] = ok ? num(s.mean_fy_N) : nullptr;
-  j["mean_fz_N"] = ok ? num(s.mean_fz_N) : nullptr;
-  j["window_s"] = ok ? num(s.surge.window_s) : nlohmann::json(0.0);
-  j["window_start_s"] = ok ? num(s.surge.window_start) : nullptr;
-  j["window_end_s"] = ok ? num(s.surge.window_end) : nullptr;
-  j["lowpass_hz"] = ok ? num(s.surge.lowpass_hz) : nullptr;
-  j["peaks"] = ok ? s.surge.peaks : 0;
-  j["peak_interval_s"] = ok ? num(s.surge.peak_interval_s) : nullptr;
-  j["first_contact_s"] = s.first_contact_s >= 0 ? num(s.first_contact_s) : nullptr;
-  j["breaks"] = s.breaks;
-  for (int m = 0; m < kFailureModes; ++m)
-    j["breaks_by_mode"][failure_mode_name(static_cast<FailureMode>(m))] = s.breaks_by_mode[m];
-  for (int m = 0; m < kBreakMechanisms; ++m)
-    j["breaks_by_mechanism"][break_mechanism_name(static_cast<BreakMechanism>(m))] = s.breaks_by_mechanism[m];
-  j["near_structure_max_ratio"] = s.near_structure_max_ratio;
-  j["steps"] = s.steps;
-  j["sim_time_s"] = s.sim_time_s;
-  j["wall_time_s"] = s.wall_time_s;
-  j["cpu_time_s"] = s.cpu_time_s;
-  j["realtime_factor"] = s.wall_time_s > 0 ? num(s.sim_time_s / s.wall_time_s) : nullptr;
-  j["steps_per_second"] = s.wall_time_s > 0 ? num(s.steps / s.wall_time_s) : nullptr;
-  j["floes"] = s.floes;
-  j["achieved_concentration"] = s.achieved_concentration;
-  j["mean_awake"] = s.mean_awake;
-  j["warnings"] = s.warnings;
-  j["max_angular_speed_rad_s"] = s.health.max.max_angular_speed;
-  // the largest value of each per-step diagnostic and when (scripts/stress bounds them)
-  for (std::size_t c = 0; c < kDiagnosticCount; ++c) {
-    const DiagnosticColumn& col = kDiagnosticColumns[c];
-    j["health"][col.name] = {{"max", num(s.health.max.*col.field)}, {"unit", col.unit}, {"time_s", s.health.max_time[c]}};
+namespace {
+
+using json = nlohmann::json;
+
+// a number, or null when it is not finite (JSON has no NaN or infinity)
+json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+// a statistic of the analysis window: null when the window held no data
+json window_stat(const RunSummary& s, double v) { return s.has_statistics ? num(v) : json(nullptr); }
+
+}  // namespace
+
+const std::vector<SummaryField>& summary_fields() {
+  using S = const RunSummary&;
+  static const std::vector<SummaryField> fields{
+      {"scenario", "", false, false, "scenario file as given", [](S s) { return json(s.scenario); }},
+      {"output", "", false, false, "HDF5 output file", [](S s) { return json(s.output); }},
+      {"status", "", false, false, "complete, interrupted or failed", [](S s) { return json(s.status); }},
+      {"message", "", false, false, "the error or note of the run, empty if none", [](S s) { return json(s.message); }},
+      {"warnings", "", false, false, "scene warnings (step size), printed first",
+       [](S s) { return json(s.warnings); }},
+      {"statistics_note", "", false, false, "why the load statistics are null, empty if they are not",
+       [](S s) { return json(s.statistics_note); }},
+      {"mean_fx_N", "N", true, false, "mean surge load (the load resisting towing, positive) over the analysis window",
+       [](S s) { return window_stat(s, s.surge.mean); }},
+      {"max_fx_N", "N", true, false, "largest surge load in the window", [](S s) { return window_stat(s, s.surge.max); }},
+      {"min_fx_N", "N", true, false, "smallest surge load in the window", [](S s) { return window_stat(s, s.surge.min); }},
+      {"std_fx_N", "N", true, false, "standard deviation of the surge load in the window",
+       [](S s) { return window_stat(s, s.surge.std); }},
+      {"mean_fy_N", "N", true, false, "mean heave load in the window (ice on structure, + up)",
+       [](S s) { return window_stat(s, s.mean_fy_N); }},
+      {"mean_fz_N", "N", true, false, "mean sway load in the window", [](S s) { return window_stat(s, s.mean_fz_N); }},
+      {"window_s", "s", true, false, "length of the analysis window (0 without one)",
+       [](S s) { return s.has_statistics ? num(s.surge.window_s) : json(0.0); }},
+      {"window_start_s", "s", true, false, "start of the analysis window (stats.window_start_travel beyond first contact)",
+       [](S s) { return window_stat(s, s.surge.window_start); }},
+      {"window_end_s", "s", true, false, "end of the analysis window", [](S s) { return window_stat(s, s.surge.window_end); }},
+      {"lowpass_hz", "Hz", true, false, "low-pass applied before the statistics (0: none)",
+       [](S s) { return window_stat(s, s.surge.lowpass_hz); }},
+      {"peaks", "1", true, false, "load peaks in the window: local maxima with a prominence of one standard deviation, "
+       "at least half a floe passage apart", [](S s) { return s.has_statistics ? json(s.surge.peaks) : json(0); }},
+      {"peak_interval_s", "s", true, false, "mean spacing of those peaks",
+       [](S s) { return window_stat(s, s.surge.peak_interval_s); }},
+      {"first_contact_s", "s", true, false, "first ice contact with the structure (null: none)",
+       [](S s) { return s.first_contact_s >= 0 ? num(s.first_contact_s) : json(nullptr); }},
+      {"breaks", "1", true, false, "joint failures (0 with rigid floes)", [](S s) { return json(s.breaks); }},
+      {"breaks_by_mode", "1", false, false, "breaks per failure mode, by name (the names of /fracture/events mode_names)",
+       [](S s) {
+         json j = json::object();
+         for (int m = 0; m < kFailureModes; ++m) j[failure_mode_name(static_cast<FailureMode>(m))] = s.breaks_by_mode[m];
+         return j;
+       }},
+      {"breaks_by_mechanism", "1", false, false,
+       "breaks per mechanism, by name (the names of /fracture/events mechanism_names; docs/model/breakage.md)",
+       [](S s) {
+         json j = json::object();
+         for (int m = 0; m < kBreakMechanisms; ++m)
+           j[break_mechanism_name(static_cast<BreakMechanism>(m))] = s.breaks_by_mechanism[m];
+         return j;
+       }},
+      {"near_structure_max_ratio", "1", false, false,
+       "for every breakable floe that came within 1 m of the structure: the largest load / capacity ratio of its "
+       "joints over the run", [](S s) { return json(s.near_structure_max_ratio); }},
+      {"steps", "1", true, false, "solver steps", [](S s) { return json(s.steps); }},
+      {"sim_time_s", "s", true, false, "simulated time", [](S s) { return json(s.sim_time_s); }},
+      {"wall_time_s", "s", true, false, "wall time of the run", [](S s) { return json(s.wall_time_s); }},
+      {"cpu_time_s", "s", true, false, "user + system CPU time of the process (the fair cost on a shared machine)",
+       [](S s) { return json(s.cpu_time_s); }},
+      {"realtime_factor", "1", false, false, "simulated time over wall time",
+       [](S s) { return s.wall_time_s > 0 ? num(s.sim_time_s / s.wall_time_s) : json(nullptr); }},
+      {"steps_per_second", "1/s", false, false, "steps per second of wall time",
+       [](S s) { return s.wall_time_s > 0 ? num(s.steps / s.wall_time_s) : json(nullptr); }},
+      {"floes", "1", false, false, "floes in the layout", [](S s) { return json(s.floes); }},
+      {"achieved_concentration", "1", false, false, "ice area over channel area of the layout",
+       [](S s) { return json(s.achieved_concentration); }},
+      {"mean_awake", "1", true, false, "bodies solved per step (not asleep), averaged over the run",
+       [](S s) { return json(s.mean_awake); }},
+      {"max_angular_speed_rad_s", "rad/s", false, false,
+       "fastest turn of a floe or element in the run; above 15 rad/s the table warns of unstable joints",
+       [](S s) { return json(s.health.max.max_angular_speed); }},
+      {"health", "", false, false,
+       "for each /diagnostics series its max, unit and time_s; plus ice_mass_initial_kg and "
+       "ice_mass_max_relative_change (ice lost or created)",
+       [](S s) {
+         json j = json::object();
+         for (std::size_t c = 0; c < kDiagnosticCount; ++c) {
+           const DiagnosticColumn& col = kDiagnosticColumns[c];
+           j[col.name] = {{"max", num(s.health.max.*col.field)}, {"unit", col.unit}, {"time_s", s.health.max_time[c]}};
+         }
+         j["ice_mass_initial_kg"] = num(s.health.initial_ice_mass);
+         j["ice_mass_max_relative_change"] = num(s.health.max_ice_mass_change);
+         return j;
+       }},
+      {"solver", "", false, false,
+       "the contact solver over the run: cap, tolerance, iterations_mean and iterations_max (sweeps per step), "
+       "capped_steps, capped_window_fraction (share of the window's steps that hit the cap unconverged), residual_max",
+       [](S s) {
+         return json{{"cap", s.solver.cap},
+                     {"tolerance", s.solver.tolerance},
+                     {"iterations_mean", s.solver.iterations_mean},
+                     {"iterations_max", s.solver.iterations_max},
+                     {"capped_steps", s.solver.capped_steps},
+                     {"capped_window_fraction", s.solver.capped_window_fraction},
+                     {"residual_max", num(s.solver.residual_max)}};
+       }},
+      {"stage_time_s", "s", false, false,
+       "wall time per stage of the step: structure, water, bullet, load_cell, activation, health, fracture, coupling",
+       [](S s) {
+         const StageTimes& t = s.stage_times;
+         return json{{"structure", t.structure}, {"water", t.water},           {"bullet", t.bullet},
+                     {"load_cell", t.load_cell}, {"activation", t.activation}, {"health", t.health},
+                     {"fracture", t.fracture},   {"coupling", t.coupling}};
+       }},
+      {"validation", "", false, true,
+       "validation cases only: case, metric, value, reference, rel_error, tolerance, passed and the case's own "
+       "figures", [](S s) { return s.validation; }},
+  };
+  return fields;
+}
+
+json summary_json(const RunSummary& s) {
+  json j = json::object();
+  for (const SummaryField& f : summary_fields()) {
+    json value = f.value(s);
+    if (!(f.omit_if_null && value.is_null())) j[f.key] = std::move(value);
   }
-  j["health"]["ice_mass_initial_kg"] = num(s.health.initial_ice_mass);
-  j["health"]["ice_mass_max_relative_change"] = num(s.health.max_ice_mass_change);
-  if (!s.validation.is_null()) j["validation"] = s.validation;
-  j["solver"] = {{"cap", s.solver.cap},
-                 {"tolerance", s.solver.tolerance},
-                 {"iterations_mean", s.solver.iterations_mean},
-                 {"iterations_max", s.solver.iterations_max},
-                 {"capped_steps", s.solver.capped_steps},
-                 {"capped_window_fraction", s.solver.capped_window_fraction},
-                 {"residual_max", num(s.solver.residual_max)}};
-  const StageTimes& t = s.stage_times;
-  j["stage_time_s"] = {{"structure", t.structure}, {"water", t.water},         {"bullet", t.bullet},
-                       {"load_cell", t.load_cell}, {"activation", t.activation}, {"health", t.health},
-                       {"fracture", t.fracture}, {"coupling", t.coupling}};
   return j;
 }
 

@@ -1,11 +1,13 @@
 // The run summary: a one-screen table and the JSON file that sweeps read.
 //
-// JSON keys (DESIGN.md, stable): mean_fx_N, max_fx_N, std_fx_N, window_s, breaks,
-// steps, sim_time_s, wall_time_s; more keys are added, none removed. "fx" is the
-// surge load as the paper plots it: the force resisting towing, positive.
+// The JSON keys are declared once, in summary_fields(): sweeps and scripts rely on them,
+// so keys are added, none renamed or removed. "fx" is the surge load as the paper plots it:
+// the force resisting towing, positive.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -61,6 +63,20 @@ struct RunSummary {
   std::vector<std::string> warnings;  // scene warnings (step_size_warnings), printed first
   nlohmann::json validation;  // validation block of a validation case, null otherwise
 };
+
+/// One key of the summary JSON. The numeric keys marked `stats` are also written as
+/// attributes of /stats in the HDF5 file (when not null).
+struct SummaryField {
+  const char* key;
+  const char* unit;  // "" for text and objects
+  bool stats;
+  bool omit_if_null;  // left out of the JSON when null (the validation block)
+  const char* description;
+  std::function<nlohmann::json(const RunSummary&)> value;
+};
+
+/// Every key of the summary JSON, in the order docs/user/output.md lists them.
+const std::vector<SummaryField>& summary_fields();
 
 /// A short human-readable table.
 std::string summary_table(const RunSummary& s);

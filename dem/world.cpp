@@ -85,7 +85,7 @@ World::World(const WorldSettings& settings)
   // manifold lands in another island's solve is then solved twice, and each solve
   // adds its applied forces again: a floe near (not touching) floes of other islands
   // got its water forces and weight several times per step, and one went unstable
-  // in the paper grid (README, "Numerical stability"). With this flag Bullet skips
+  // in the paper grid (docs/model/stability.md). With this flag Bullet skips
   // manifolds without contact points when it builds islands (and sorts pairs so
   // that the order is reproducible, which it already was here).
   dynamics_->getDispatchInfo().m_deterministicOverlappingPairs = true;

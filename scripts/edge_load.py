@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The vertical edge load that breaks a square floe floating on water, in bending:
-the statics behind docs/breakage.md.
+the statics behind docs/model/breakage.md.
 
     scripts/edge_load.py [--size L] [--thickness H] [--element-size LE] [--modulus E]
                          [--poisson NU] [--bending-strength SB] [--water-density RHO]

@@ -25,13 +25,16 @@ ROCKING_RAD_S = 15.0
 def summarise(path):
     with h5py.File(path, "r") as f:
         events = f["/fracture/events"][:]
+        mode_names = f["/fracture/events"].attrs.get("mode_names", "")
         t = f["/load/time"][:]
         pos = f["/structure/position"][:]
         w = f["/diagnostics/max_angular_speed"][:] if "/diagnostics/max_angular_speed" in f else np.zeros(0)
     out = {"breaks": int(len(events))}
     out["rocking_steps"] = int(np.sum(w > ROCKING_RAD_S))
     out["max_angular_speed"] = float(np.max(w)) if len(w) else float("nan")
-    names = {0: "compression", 1: "shear", 2: "bending", 3: "tension", 4: "in_plane_bending"}
+    # icedem names its failure modes in the attribute: "0 compression, 1 shear, ..."
+    names = {int(code): name.replace(" ", "_").replace("-", "_")
+             for code, _, name in (part.strip().partition(" ") for part in str(mode_names).split(",")) if code.isdigit()}
     for code, name in names.items():
         out[name] = int(np.sum(events["mode"] == code)) if len(events) else 0
     if len(events) == 0:

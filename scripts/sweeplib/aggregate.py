@@ -25,10 +25,6 @@ import h5py
 import numpy as np
 from scipy import signal, stats
 
-# icedem's failure modes and break mechanisms (dem/joint_loads.cpp, dem/break_context.cpp: the
-# names of /fracture/events' mode_names and mechanism_names), spaces and hyphens as "_"
-MODES = ("compression", "shear", "bending", "tension", "in_plane_bending")
-MECHANISMS = ("on_the_slope", "pressed_under", "in_the_rubble", "in_the_pack")
 SEGMENT_S = 60.0
 # The load spectrum of a pack is red: its largest power sits at the lowest bin,
 # the slow build-up and release of the compacted pack over tens of seconds. The
@@ -108,6 +104,14 @@ def mode_key(name):
 # A record keeps the spectrum up to this frequency: the peaks of interest (floe
 # passages at 0.1-0.3 Hz) lie far below it, and the record stays a few kB.
 RECORD_MAX_HZ = 2.0
+
+
+def break_names(summaries, key):
+    """The failure modes (key "breaks_by_mode") or break mechanisms ("breaks_by_mechanism") the
+    runs' summaries count, spaces and hyphens as "_", sorted. icedem declares them once
+    (/fracture/events mode_names and mechanism_names) and every summary counts all of them, so
+    the tools read them instead of repeating them."""
+    return sorted({mode_key(k) for x in summaries for k in (x.get(key) or {})})
 
 
 def _names(attribute):
@@ -197,6 +201,8 @@ def aggregate(groups):
     """groups: {config: (scenario, grid tuple, [run records])} -> (list of row dicts, list of
     ensemble spectra (f, p), one per row)."""
     rows, spectra = [], []
+    everything = [r for _, _, records in groups.values() for r in records]
+    modes, mechanisms = break_names(everything, "breaks_by_mode"), break_names(everything, "breaks_by_mechanism")
     for config, (scenario, grid, records) in groups.items():
         row = {"configuration": config, "scenario": scenario}
         for k, v in grid:
@@ -223,9 +229,9 @@ def aggregate(groups):
             row["spectral_peak_hz"] = float(np.mean(sp)) if sp else float("nan")
         hz = row["spectral_peak_hz"]
         row["spectral_peak_period_s"] = 1.0 / hz if math.isfinite(hz) and hz > 0 else float("nan")
-        for mode in MODES:
+        for mode in modes:
             row["breaks_" + mode] = int(sum(r["breaks_by_mode"].get(mode, 0) for r in records))
-        for mechanism in MECHANISMS:
+        for mechanism in mechanisms:
             row["breaks_" + mechanism] = int(sum(r.get("breaks_by_mechanism", {}).get(mechanism, 0) for r in records))
         rtf = _finite(r["realtime_factor"] for r in records)
         row["realtime_factor"] = float(np.mean(rtf)) if rtf else float("nan")

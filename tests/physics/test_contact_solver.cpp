@@ -246,7 +246,7 @@ TEST(ContactSolver, BoxOnASlopeBelowItsFrictionAngleDoesNotCreep) {
   const double bullet = creep(std::make_unique<btSequentialImpulseConstraintSolver>(), 0.85);
   std::printf("creep over 60 s on a 20 degree slope: warm-started friction %.3g m, Bullet %.3g m\n", ours, bullet);
   // 0.1 mm in 60 s: a creep speed below 2e-6 m/s, a thousandth of the slowest ice motion
-  // the solver must resolve (a jammed pack creeping at 1 mm/s, README)
+  // the solver must resolve (a jammed pack creeping at 1 mm/s, docs/model/convergence.md)
   EXPECT_LT(ours, 1e-4);
 }
 

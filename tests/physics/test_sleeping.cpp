@@ -81,7 +81,7 @@ TEST(Sleeping, BulletIslandsWakeTheWholeField) {
 // apart share a manifold but not an island, so a floe was solved in its own
 // island and again in its neighbour's, and got its weight and water forces once
 // per solve: it heaved as if several times lighter, which made the explicit
-// heave and roll damping unstable (a blow-up in the paper grid, README). Bullet
+// heave and roll damping unstable (a blow-up in the paper grid, docs/model/stability.md). Bullet
 // batches islands for the solver (128 rows by default), which hid this in small
 // fields; batches of one island show it in any field.
 TEST(Sleeping, FloesThatDoNotTouchHeaveAsIfAlone) {

@@ -164,8 +164,10 @@ class Aggregation(unittest.TestCase):
 
     def test_rows_average_over_seeds_and_sum_breaks(self):
         from sweeplib import aggregate as agg
+        # a summary counts every mode icedem has, also those that never fired (here shear)
         recs = [{"mean_fx_N": m, "max_fx_N": 10 * m, "peak_interval_s": 4.0, "spectral_peak_hz": 0.25,
-                 "breaks_by_mode": {"bending": b, agg.mode_key("in-plane bending"): 1}, "realtime_factor": 5.0,
+                 "breaks_by_mode": {"bending": b, "shear": 0, agg.mode_key("in-plane bending"): 1},
+                 "realtime_factor": 5.0,
                  "wall_time_s": 7.0}
                 for m, b in ((1.0, 2), (3.0, 1))]
         rows, spectra = agg.aggregate({"s/a=1": ("s", (("a", 1),), recs)})

@@ -1,0 +1,199 @@
+// The output tables of dem/output_schema.hpp and their markdown.
+#include "dem/output_schema.hpp"
+
+#include <cstddef>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "dem/summary.hpp"
+
+namespace icedem {
+
+const char* element_name(Element element) {
+  switch (element) {
+    case Element::f8: return "f8";
+    case Element::i4: return "i4";
+    case Element::i8: return "i8";
+    case Element::u1: return "u1";
+    case Element::compound: return "compound";
+    case Element::text: return "string";
+  }
+  return "?";
+}
+
+const std::vector<SeriesColumn>& series_columns() {
+  using L = const LoadSample&;
+  static const std::vector<SeriesColumn> columns = [] {
+    std::vector<SeriesColumn> c{
+        {"/load/time", Element::f8, 1, "s", "simulation time at the end of the step", [](L s, int) { return s.time; }},
+        {"/load/force", Element::f8, 3, "N",
+         "force by the ice on the structure, tank frame (x surge, y heave up, z sway), mean over the step",
+         [](L s, int k) { return s.force[k]; }},
+        {"/load/moment", Element::f8, 3, "N m",
+         "moment by the ice on the structure about the cone axis at the waterline, tank frame",
+         [](L s, int k) { return s.moment[k]; }},
+        {"/load/surge", Element::f8, 1, "N",
+         "surge load = -force_x: the load resisting towing, positive when the ice pushes back (as the paper plots it)",
+         [](L s, int) { return s.surge(); }},
+        {"/load/cone_contacts", Element::i4, 1, "1", "contact points between ice and structure",
+         [](L s, int) { return double(s.cone_contacts); }},
+        {"/structure/position", Element::f8, 3, "m", "structure reference point, tank frame",
+         [](L s, int k) { return s.structure_position[k]; }},
+        {"/diagnostics/awake_bodies", Element::i4, 1, "1", "bodies being solved (not sleeping)",
+         [](L s, int) { return double(s.awake_bodies); }},
+        {"/diagnostics/contact_points", Element::i4, 1, "1", "contact points in the whole world (solver load)",
+         [](L s, int) { return double(s.contact_points); }},
+    };
+    for (const DiagnosticColumn& d : kDiagnosticColumns) {
+      const double StepDiagnostics::*field = d.field;
+      c.push_back({std::string("/diagnostics/") + d.name, Element::f8, 1, d.unit, d.description,
+                   [field](L s, int) { return s.diagnostics.*field; }});
+    }
+    return c;
+  }();
+  return columns;
+}
+
+const std::vector<DatasetEntry>& other_datasets() {
+  static const std::vector<DatasetEntry> entries{
+      {"/bodies/floe_id", "nb", Element::i4, "1", "floe id of each body; body order is the snapshot order"},
+      {"/bodies/thickness", "nb", Element::f8, "m", "body thickness"},
+      {"/bodies/vertex_offset", "nb + 1", Element::i8, "1",
+       "outline of body i is vertices[vertex_offset[i]:vertex_offset[i+1]]"},
+      {"/bodies/vertices", "nv x 2", Element::f8, "m", "outline vertices in the body frame (x, z)"},
+      {"/snapshots/time", "k", Element::f8, "s", "snapshot time (every output.snapshot_interval)"},
+      {"/snapshots/position", "k x nb x 3", Element::f8, "m", "body origin, tank frame"},
+      {"/snapshots/orientation", "k x nb x 4", Element::f8, "1",
+       "body-to-tank rotation as a unit quaternion (w, x, y, z)"},
+      {"/snapshots/awake", "k x nb", Element::u1, "1", "1 if the body was awake (being solved)"},
+      {"/fracture/events", "e", Element::compound, "",
+       "joint breaks, one row per break, with the floe's state at the break (fields below; empty for rigid floes)"},
+      {"/fracture/floe_max_ratio", "f", Element::f8, "1",
+       "per layout floe: the largest load / capacity ratio of any of its joints under any criterion over the run "
+       "(0 for rigid floes and lattices never awake); runs with breakable floes only"},
+      {"/fracture/floe_min_distance", "f", Element::f8, "m",
+       "per layout floe: the closest a joint midpoint came to the structure's section at its height, horizontally "
+       "(inf if never checked); runs with breakable floes only"},
+  };
+  return entries;
+}
+
+const DatasetEntry& dataset_entry(std::string_view path) {
+  for (const DatasetEntry& e : other_datasets())
+    if (e.path == path) return e;
+  throw std::logic_error(fmt::format("output schema: no dataset '{}' is declared (dem/output_schema.cpp)", path));
+}
+
+const std::vector<EventField>& event_fields() {
+  static const std::vector<EventField> fields{
+      {"time", offsetof(FractureEvent, time), Element::f8, "s", "time of the break"},
+      {"floe", offsetof(FractureEvent, floe), Element::i4, "1", "floe id"},
+      {"joint", offsetof(FractureEvent, joint), Element::i4, "1", "joint index within the floe"},
+      {"mode", offsetof(FractureEvent, mode), Element::i4, "1", "failure mode code (attribute mode_names)"},
+      {"ratio", offsetof(FractureEvent, ratio), Element::f8, "1", "load / capacity of the criterion that fired (>= 1)"},
+      {"x", offsetof(FractureEvent, x), Element::f8, "m", "joint midpoint at the break, tank frame"},
+      {"z", offsetof(FractureEvent, z), Element::f8, "m", "joint midpoint at the break, tank frame"},
+      {"mechanism", offsetof(FractureEvent, mechanism), Element::i4, "1",
+       "what the floe was doing, code (attribute mechanism_names; docs/model/breakage.md)"},
+      {"touching_structure", offsetof(FractureEvent, touching_structure), Element::i4, "1",
+       "1 if an element of the floe touched the structure"},
+      {"depth", offsetof(FractureEvent, depth), Element::f8, "m", "joint midpoint below the waterline (+ down)"},
+      {"distance", offsetof(FractureEvent, distance), Element::f8, "m",
+       "horizontal distance of the joint midpoint from the structure's section at its height"},
+      {"structure_force", offsetof(FractureEvent, structure_force), Element::f8, "N",
+       "the structure's contact force on the floe"},
+      {"press_down", offsetof(FractureEvent, press_down), Element::f8, "N",
+       "other floes' contact force on the floe, downward"},
+      {"press_toward", offsetof(FractureEvent, press_toward), Element::f8, "N",
+       "other floes' contact force on the floe, towards the structure axis"},
+      {"ratio_compression", offsetof(FractureEvent, ratio_compression), Element::f8, "1",
+       "load / capacity in compression (paper eq. 1)"},
+      {"ratio_shear", offsetof(FractureEvent, ratio_shear), Element::f8, "1", "load / capacity in shear (eq. 2)"},
+      {"ratio_bending", offsetof(FractureEvent, ratio_bending), Element::f8, "1", "load / capacity in bending (eq. 3)"},
+      {"ratio_tension", offsetof(FractureEvent, ratio_tension), Element::f8, "1",
+       "load / capacity in tension (fracture.tension_strength; 0 when off)"},
+      {"ratio_in_plane_bending", offsetof(FractureEvent, ratio_in_plane_bending), Element::f8, "1",
+       "load / capacity in in-plane bending (0 when off)"},
+  };
+  return fields;
+}
+
+const std::vector<AttributeEntry>& file_attributes() {
+  static const std::vector<AttributeEntry> entries{
+      {"/meta", "format_version", Element::i4, "1", "version of this layout"},
+      {"/meta", "scenario", Element::text, "", "the resolved scenario: every key with its value, as TOML"},
+      {"/meta", "scenario_path", Element::text, "", "scenario file as given"},
+      {"/meta", "command_line", Element::text, "", "the full command line"},
+      {"/meta", "version", Element::text, "", "icedem version"},
+      {"/meta", "bullet_version", Element::text, "", "Bullet version"},
+      {"/meta", "precision", Element::text, "", "Bullet's scalar: double or float"},
+      {"/meta", "seed", Element::i8, "1", "random seed of the layout (unsigned)"},
+      {"/meta", "started_utc", Element::text, "", "start, ISO 8601"},
+      {"/meta", "finished_utc", Element::text, "", "end, ISO 8601 (absent if the run did not finish)"},
+      {"/meta", "wall_time_s", Element::f8, "s", "wall time so far (updated at every flush)"},
+      {"/meta", "status", Element::text, "",
+       "running while running (a file left running was killed), then complete, interrupted, failed or "
+       "incomplete (the run ended without closing the file normally)"},
+      {"/meta", "message", Element::text, "", "the error or note of the run (also which rows did not fit a full disk)"},
+      {"/layout", "floes", Element::f8, "1", "floes in the layout"},
+      {"/layout", "achieved_concentration", Element::f8, "1", "ice area over channel area"},
+      {"/layout", "target_concentration", Element::f8, "1", "ice.concentration"},
+      {"/layout", "channel_area_m2", Element::f8, "m2", "channel area the concentration refers to"},
+      {"/layout", "source", Element::text, "", "\"generated\" or the layout file"},
+      {"/stats", "note", Element::text, "", "why there are no load statistics (only then)"},
+      {"/fracture/events", "mode_names", Element::text, "", "failure mode code -> name: \"0 compression, 1 shear, ...\""},
+      {"/fracture/events", "mechanism_names", Element::text, "", "mechanism code -> name, the same way"},
+  };
+  return entries;
+}
+
+namespace {
+
+std::string cell(std::string_view text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+}  // namespace
+
+std::string output_markdown() {
+  std::string md =
+      "# Outputs\n\n"
+      "Generated by `icedem schema` from dem/output_schema.cpp and dem/summary.cpp; do not edit by hand.\n\n"
+      "A run writes an HDF5 file (`-o OUT.h5`) and, with `--summary-json FILE`, a JSON summary; the\n"
+      "summary's table is also printed. Paths and keys are added over time, none renamed or removed.\n\n"
+      "## HDF5 file\n\n"
+      "Every dataset has `units` (\"1\" for counts, flags and ratios) and `description` attributes.\n"
+      "Shapes: n = steps, nb = bodies (rigid floes and ice elements), nv = outline vertices,\n"
+      "k = snapshots, e = breaks, f = layout floes. The file is written in the HDF5 1.8 format and\n"
+      "flushed every few seconds of wall time, so it stays readable after a crash or a kill.\n\n"
+      "### Per-step series\n\n"
+      "| path | shape | type | unit | meaning |\n|---|---|---|---|---|\n";
+  for (const SeriesColumn& c : series_columns())
+    md += fmt::format("| `{}` | {} | {} | {} | {} |\n", c.path, c.width == 1 ? "n" : fmt::format("n x {}", c.width),
+                      element_name(c.element), c.unit, cell(c.description));
+  md += "\n### Bodies, snapshots and breaks\n\n| path | shape | type | unit | meaning |\n|---|---|---|---|---|\n";
+  for (const DatasetEntry& e : other_datasets())
+    md += fmt::format("| `{}` | {} | {} | {} | {} |\n", e.path, e.shape, element_name(e.element), e.unit,
+                      cell(e.description));
+  md += "\n### Fields of `/fracture/events`\n\n| field | type | unit | meaning |\n|---|---|---|---|\n";
+  for (const EventField& f : event_fields())
+    md += fmt::format("| `{}` | {} | {} | {} |\n", f.name, element_name(f.element), f.unit, cell(f.description));
+  md += "\n### Attributes\n\n| object | attribute | type | unit | meaning |\n|---|---|---|---|---|\n";
+  for (const AttributeEntry& a : file_attributes())
+    md += fmt::format("| `{}` | `{}` | {} | {} | {} |\n", a.object, a.name, element_name(a.element), a.unit,
+                      cell(a.description));
+  for (const SummaryField& f : summary_fields())
+    if (f.stats)
+      md += fmt::format("| `/stats` | `{}` | f8 | {} | as the summary key (below), when not null |\n", f.key, f.unit);
+  md += "\n## Summary (`--summary-json FILE`)\n\n"
+        "Statistics are `null` when the analysis window holds no data (`statistics_note` says why).\n\n"
+        "| key | unit | meaning |\n|---|---|---|\n";
+  for (const SummaryField& f : summary_fields())
+    md += fmt::format("| `{}` | {} | {} |\n", f.key, f.unit, cell(f.description));
+  return md;
+}
+
+}  // namespace icedem

@@ -1,0 +1,122 @@
+// The output schema (dem/output_schema.hpp) is the file: a run with breaks writes exactly the
+// datasets the schema declares, with its shapes' ranks, element types and units, and the
+// attributes it lists; /stats repeats the summary's numbers. A dataset added to the recorder
+// but not to the schema (or the reverse) fails here, so docs/user/output.md cannot drift.
+#include <gtest/gtest.h>
+
+#include <H5Cpp.h>
+
+#include <map>
+#include <set>
+#include <string>
+
+#include "dem/output_schema.hpp"
+#include "dem/scenario.hpp"
+#include "dem/simulation.hpp"
+
+using namespace icedem;
+
+namespace {
+
+struct Found {
+  std::string units;
+  int rank;
+  H5T_class_t type_class;
+  std::size_t type_size;
+};
+
+// every dataset in the file, by path
+herr_t collect(hid_t object, const char* name, const H5O_info_t* info, void* data) {
+  if (info->type != H5O_TYPE_DATASET) return 0;
+  auto& found = *static_cast<std::map<std::string, Found>*>(data);
+  H5::DataSet set(H5Dopen(object, name, H5P_DEFAULT));
+  std::string units;
+  H5::Attribute a = set.openAttribute("units");
+  a.read(a.getStrType(), units);
+  found[std::string("/") + name] = {units, set.getSpace().getSimpleExtentNdims(), set.getDataType().getClass(),
+                                    set.getDataType().getSize()};
+  return 0;
+}
+
+// the rank of a schema shape: "k x nb x 3" has three dimensions
+int rank_of(const std::string& shape) {
+  int rank = 1;
+  for (std::size_t i = 0; i + 2 < shape.size(); ++i) rank += shape.compare(i, 3, " x ") == 0;
+  return rank;
+}
+
+void expect_element(const std::string& path, const Found& f, Element e) {
+  switch (e) {
+    case Element::f8: EXPECT_EQ(f.type_class, H5T_FLOAT) << path; EXPECT_EQ(f.type_size, 8u) << path; break;
+    case Element::i4: EXPECT_EQ(f.type_class, H5T_INTEGER) << path; EXPECT_EQ(f.type_size, 4u) << path; break;
+    case Element::i8: EXPECT_EQ(f.type_class, H5T_INTEGER) << path; EXPECT_EQ(f.type_size, 8u) << path; break;
+    case Element::u1: EXPECT_EQ(f.type_class, H5T_INTEGER) << path; EXPECT_EQ(f.type_size, 1u) << path; break;
+    case Element::compound: EXPECT_EQ(f.type_class, H5T_COMPOUND) << path; break;
+    case Element::text: EXPECT_EQ(f.type_class, H5T_STRING) << path; break;
+  }
+}
+
+}  // namespace
+
+TEST(OutputSchema, ABreakableRunWritesExactlyTheDeclaredDatasetsAndAttributes) {
+  // the golden breakable case, shortened: joints break within a second of the first contact
+  const Scene scene = load_scene(
+      std::string(ICEDEM_SOURCE_DIR) + "/scenarios/paper/large_floes_breakable_015.toml",
+      {"time.duration=3", "channel.start_x=3.0", "channel.length=3.6", "channel.width=3.0", "ice.concentration=0.6",
+       "structure.start_x=2.2", "structure.speed=0.2", "ice.bending_strength=12e3", "stats.window_start_travel=0.1"});
+  const std::string out = std::string(ICEDEM_TEST_TMP) + "/output_schema.h5";
+  const RunSummary s = run_simulation(scene, RunOptions{out, false, "test"});
+  ASSERT_EQ(s.status, "complete");
+  ASSERT_GT(s.breaks, 0) << "the case must break joints, so that /fracture/events has rows";
+
+  H5::H5File file(out, H5F_ACC_RDONLY);
+  std::map<std::string, Found> found;
+  H5Ovisit(file.getId(), H5_INDEX_NAME, H5_ITER_NATIVE, collect, &found);
+
+  std::set<std::string> declared;
+  for (const SeriesColumn& c : series_columns()) {
+    declared.insert(c.path);
+    ASSERT_TRUE(found.count(c.path)) << c.path << " is declared but not written";
+    const Found& f = found.at(c.path);
+    EXPECT_EQ(f.units, c.unit) << c.path;
+    EXPECT_EQ(f.rank, c.width == 1 ? 1 : 2) << c.path;
+    expect_element(c.path, f, c.element);
+  }
+  for (const DatasetEntry& e : other_datasets()) {
+    declared.insert(e.path);
+    ASSERT_TRUE(found.count(e.path)) << e.path << " is declared but not written";
+    const Found& f = found.at(e.path);
+    if (e.element != Element::compound) EXPECT_EQ(f.units, e.unit) << e.path;
+    EXPECT_EQ(f.rank, rank_of(e.shape)) << e.path;
+    expect_element(e.path, f, e.element);
+  }
+  for (const auto& [path, f] : found) EXPECT_TRUE(declared.count(path)) << path << " is written but not declared";
+
+  // the break rows carry every declared field
+  const H5::CompType events = file.openDataSet("/fracture/events").getCompType();
+  ASSERT_EQ(events.getNmembers(), static_cast<int>(event_fields().size()));
+  for (std::size_t i = 0; i < event_fields().size(); ++i)
+    EXPECT_EQ(events.getMemberName(static_cast<unsigned>(i)), event_fields()[i].name);
+
+  // the attributes: every declared one is there (/stats note only without statistics)
+  for (const AttributeEntry& a : file_attributes()) {
+    if (std::string(a.object) == "/stats" && std::string(a.name) == "note") continue;
+    const bool exists = std::string(a.object) == "/fracture/events"
+                            ? file.openDataSet(a.object).attrExists(a.name)
+                            : file.openGroup(a.object).attrExists(a.name);
+    EXPECT_TRUE(exists) << a.object << " " << a.name;
+  }
+  // /stats holds the summary's numbers marked for it, with their values
+  const nlohmann::json summary = summary_json(s);
+  const H5::Group stats = file.openGroup("/stats");
+  for (const SummaryField& f : summary_fields()) {
+    if (!f.stats || !summary[f.key].is_number()) continue;
+    ASSERT_TRUE(stats.attrExists(f.key)) << f.key;
+    double value = 0;
+    stats.openAttribute(f.key).read(H5::PredType::NATIVE_DOUBLE, &value);
+    EXPECT_EQ(value, summary[f.key].get<double>()) << f.key;
+  }
+  // and the summary JSON holds every declared key (validation only in validation cases)
+  for (const SummaryField& f : summary_fields())
+    if (!f.omit_if_null) EXPECT_TRUE(summary.contains(f.key)) << f.key;
+}
