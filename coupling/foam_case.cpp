@@ -30,7 +30,7 @@ std::string read_file(const fs::path& p) {
 
 FoamCaseSpec foam_case_spec(const Scene& scene) {
   const CouplingSettings& c = scene.coupling;
-  // background cell and hull refinement per mesh (openfoam-notes.md: coarse ~15k cells,
+  // background cell and hull refinement per mesh (docs/model/openfoam.md: coarse ~15k cells,
   // medium ~110k, fine ~300k; rms speed differences 0.35 % and 0.13 % against fine)
   const std::map<std::string, std::pair<double, int>> meshes{{"coarse", {0.2, 2}}, {"medium", {0.1, 2}},
                                                              {"fine", {0.1, 3}}};

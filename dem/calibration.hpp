@@ -5,7 +5,7 @@
 // Bullet scales CFM by each row's effective mass, so the paper's Sigma values
 // do not transfer, and a plate's compliance also comes from PGS
 // non-convergence: E depends on the CFM *and* on solver.iterations and time.dt
-// (physics-targets.md 6). The search therefore holds the scene's solver
+// (docs/model/validation_targets.md §6). The search therefore holds the scene's solver
 // settings fixed; when even stiff joints (CFM -> 0) are too soft, it says so
 // and names solver.iterations as the key to raise.
 #pragma once

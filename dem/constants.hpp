@@ -7,7 +7,7 @@ namespace icedem {
 
 /// Bullet collision margin on ice and structure shapes, m. Bullet's default
 /// (0.04 m) is larger than the 0.033 m ice thickness and would ruin contact
-/// normals and freeboard (bullet-notes.md); a millimetre keeps GJK robust.
+/// normals and freeboard (docs/model/bullet.md); a millimetre keeps GJK robust.
 constexpr double kDefaultCollisionMargin = 0.001;
 
 /// Speed above which a body is considered blown up, m/s. Nothing in a 0.07 m/s

@@ -4,7 +4,7 @@
 // broadphase pairs, i.e. from overlapping bounding boxes enlarged by the contact
 // threshold. At 75 % ice concentration neighbouring floes' boxes overlap, so the
 // whole field is one island and one moving floe keeps all ~1000 awake
-// (bullet-notes.md: 936 of 960 awake). Here two bodies share an island only if
+// (docs/model/bullet.md: 936 of 960 awake). Here two bodies share an island only if
 // their contact manifold holds at least one contact point, i.e. they touch or
 // are about to. Floes that merely sit near each other sleep independently, and
 // a sleeping floe is woken when an awake one touches it. Every solved contact

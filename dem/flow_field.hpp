@@ -1,11 +1,11 @@
-// Water velocity models in the tank frame (x surge, y up, z sway; DESIGN.md "Conventions").
+// Water velocity models in the tank frame (x surge, y up, z sway; docs/model/architecture.md, "Conventions").
 //
 // The hydrodynamic forces on a floe (water_forces.hpp) use the velocity of the floe
 // relative to the local water. A FlowField says what the water does at a point:
 //   StillWater        : nothing moves.
 //   UniformFlow       : a uniform current.
 //   ConePotentialFlow : the disturbance of the towed structure, seen strip-wise as a circular
-//                       cylinder of the local radius (physics-targets.md section 5; a
+//                       cylinder of the local radius (docs/model/validation_targets.md §5; a
 //                       slender-body approximation, poor for a 45-degree cone, but it puts the
 //                       2U shoulder speed-up and the bow stagnation in the right places).
 // The coupled (OpenFOAM) model lives in coupling/ and implements the same interface.

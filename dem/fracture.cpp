@@ -50,7 +50,7 @@ void check_fracture(const Scene& scene, State& state, double h) {
     if (!joint.constraint) continue;  // broken already
     const btRigidBody& body_a = *world.floes()[joint.body_a].body;
     const btRigidBody& body_b = *world.floes()[joint.body_b].body;
-    // asleep: the feedback is stale (bullet-notes.md) and the filter keeps its last value
+    // asleep: the feedback is stale (docs/model/bullet.md) and the filter keeps its last value
     if (liveness(body_a) != Liveness::kAwake && liveness(body_b) != Liveness::kAwake && scene.activation.skip_asleep)
       continue;
 

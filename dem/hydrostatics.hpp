@@ -2,10 +2,10 @@
 //
 // A body is a convex polyhedron in its own frame, whose origin is the centre of mass.
 // `submerge` clips every face against the half-space y <= water_level of the tank frame
-// (y is up, y = 0 is the still-water line, DESIGN.md "Conventions") and returns the exact
+// (y is up, y = 0 is the still-water line, docs/model/architecture.md, "Conventions") and returns the exact
 // submerged volume, the centre of buoyancy and the wetted part of every face, for any
 // orientation. The force at the centre of buoyancy then gives the right righting moment
-// of a heeled floe (physics-targets.md section 1: GM = L^2/(12 d) + d/2 - h/2).
+// of a heeled floe (docs/model/validation_targets.md §1: GM = L^2/(12 d) + d/2 - h/2).
 //
 // `submerge` runs for every awake body at every time step, so it avoids heap allocation
 // in its hot path: it reuses per-thread scratch buffers, and the overload that fills an

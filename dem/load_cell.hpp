@@ -4,7 +4,7 @@
 // read. A contact point's total impulse is the normal impulse along its normal
 // plus both friction impulses along their directions; Bullet applies it to
 // body 0 and its opposite to body 1, so the sign flips when the structure is
-// body 1 (bullet-notes.md). Summed over points and divided by the step length it
+// body 1 (docs/model/bullet.md). Summed over points and divided by the step length it
 // is the force of the ice on the structure; the moment is taken about the
 // structure's reference point (its axis at the waterline), like the paper's
 // six-component load cell.

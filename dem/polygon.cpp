@@ -183,7 +183,7 @@ Polygon make_ccw(Polygon polygon) {
 }
 
 Eigen::Vector2d rotate(const Eigen::Vector2d& p, double yaw) {
-  // rotation about +y (DESIGN.md): x' = x c + z s, z' = -x s + z c
+  // rotation about +y (docs/model/architecture.md): x' = x c + z s, z' = -x s + z c
   const double c = std::cos(yaw), s = std::sin(yaw);
   return {p.x() * c + p.y() * s, -p.x() * s + p.y() * c};
 }

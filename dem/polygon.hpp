@@ -9,7 +9,7 @@
 //   outline then has its outward normal +y by the right-hand rule.
 //   Caution: in a plot with x to the right and z upwards (the view from below)
 //   a ccw polygon appears clockwise.
-// Yaw is a right-handed rotation about +y by theta (DESIGN.md, "Conventions"):
+// Yaw is a right-handed rotation about +y by theta (docs/model/architecture.md, "Conventions"):
 //   x' = x cos(theta) + z sin(theta),  z' = -x sin(theta) + z cos(theta).
 #pragma once
 

@@ -89,7 +89,7 @@ std::vector<KeySpec> make_keys() {
   {
     // Table 2: waterline breadth 1.228 m, maximum 1.472 m at depth-moulded 0.565 m
     // (0.122 m above the waterline), draft 0.443 m -> a 45-degree cone; below the
-    // waterline it is continued straight to the keel (physics-targets.md 4a, [U]).
+    // waterline it is continued straight to the keel (docs/model/validation_targets.md §4a, [U]).
     KeySpec p{"structure.profile", KeyType::kPairList, "m",
               PairList{{-0.443, 0.171}, {0.0, 0.614}, {0.122, 0.736}}, 0.0, 100.0, false, {},
               "hull profile as [height y, radius] stations from keel to deck (Table 2 cone)"};
@@ -152,7 +152,7 @@ std::vector<KeySpec> make_keys() {
   k.push_back(positive("water.gravity", "m/s^2", 9.81, 100.0, "gravitational acceleration"));
   k.push_back(real("water.drag_coefficient", "-", 1.0, 0.0, 10.0,
                    "form drag C_d of wetted faces facing the relative flow (bluff edge, "
-                   "physics-targets 5)"));
+                   "docs/model/validation_targets.md §5)"));
   k.push_back(real("water.skin_friction_coefficient", "-", 0.0092, 0.0, 1.0,
                    "skin friction C_f of wetted faces (laminar Blasius 1.328/sqrt(Re), Re = 2.1e4)"));
   k.push_back(real("water.heave_damping_ratio", "-", 0.5, 0.0, 10.0,
@@ -274,7 +274,7 @@ std::vector<KeySpec> make_keys() {
   k.push_back(positive("validation.plate_size", "m", 2.7, 100.0, "side of the square plate (paper: 2.7 / 5.4 m)"));
   k.push_back(positive("validation.load", "N", 10.0, 1.0e4, "downward point load at the plate centre"));
   k.push_back(positive("validation.tolerance", "-", 0.05, 10.0,
-                       "accepted relative error of the validation metric (physics-targets.md: 5 %)"));
+                       "accepted relative error of the validation metric (docs/model/validation_targets.md: 5 %)"));
   return k;
 }
 

@@ -116,7 +116,7 @@ void compute_statistics(const Scene& scene, const LoadHistory& h, RunSummary& s)
   const double t1 = scene.stats.window_end_travel > 0 && v > 0
                         ? s.first_contact_s + scene.stats.window_end_travel / v
                         : 0.0;
-  // peaks at least half a floe passage apart (physics-targets.md 7)
+  // peaks at least half a floe passage apart (docs/model/validation_targets.md §7)
   const double separation = v > 0 ? 0.5 * scene.ice.floe_size / v : 1.0;
   try {
     s.surge = load_statistics(h.time, h.surge, t0, t1, scene.stats.lowpass_hz, separation);

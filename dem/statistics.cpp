@@ -1,5 +1,5 @@
 // Load statistics: zero-phase Butterworth low-pass, peak detection by prominence and
-// separation, and window statistics (physics-targets.md section 7).
+// separation, and window statistics (docs/model/validation_targets.md §7).
 #include "dem/statistics.hpp"
 
 #include "dem/constants.hpp"

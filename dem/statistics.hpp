@@ -1,5 +1,5 @@
 // Load statistics over an analysis window: zero-phase low-pass, peak detection, and the
-// mean / standard deviation / extremes the paper reports (physics-targets.md section 7).
+// mean / standard deviation / extremes the paper reports (docs/model/validation_targets.md §7).
 #pragma once
 
 #include <cstddef>
@@ -41,7 +41,7 @@ struct LoadStatistics {
 /// samples with window_start <= t <= window_end (window_end <= 0: to the end of the record).
 /// The whole record is low-passed first when lowpass_hz > 0, so the window edges carry no
 /// filter transient. Peaks need a prominence of one standard deviation of the window signal
-/// and a spacing of min_peak_separation_s (physics-targets.md section 7: ~1 sigma, ~0.5 L/v).
+/// and a spacing of min_peak_separation_s (docs/model/validation_targets.md §7: ~1 sigma, ~0.5 L/v).
 /// Throws InputError naming `stats.window_start_travel` if the window holds fewer than 2
 /// samples, std::invalid_argument if the two vectors differ in length.
 LoadStatistics load_statistics(const std::vector<double>& time, const std::vector<double>& load,

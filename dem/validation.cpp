@@ -12,7 +12,7 @@
 namespace icedem {
 
 double finite_plate_factor(double a_over_lc) {
-  // physics-targets.md 2: exact free-edge circular plate, w0 / w0_inf against a / l_c
+  // docs/model/validation_targets.md §2: exact free-edge circular plate, w0 / w0_inf against a / l_c
   static const std::array<std::array<double, 2>, 10> table{{{1, 2.70}, {1.5, 1.46}, {2, 1.165}, {2.5, 1.106},
                                                             {3, 1.088}, {3.5, 1.064}, {4, 1.038}, {5, 1.008},
                                                             {6, 1.001}, {8, 1.000}}};

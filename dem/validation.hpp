@@ -1,11 +1,11 @@
 // Validation cases run by `icedem run` (scenarios/validation/): they set up their
 // loads, measure during the run, and add a `validation` block to the summary
-// JSON: {metric, value, reference, rel_error, tolerance, passed} (DESIGN.md).
+// JSON: {metric, value, reference, rel_error, tolerance, passed} (docs/model/architecture.md).
 //
 // plate_deflection (seed paper Fig. 6): a floating square plate of elements
 // under a central point load P. Reference: Hertz's infinite plate on a Winkler
 // foundation, w0 / P = 1 / (8 sqrt(D rho_w g)) = 0.0889 mm/N for the paper's
-// ice, times the finite-plate factor of physics-targets.md 2 (free-edge circular
+// ice, times the finite-plate factor of docs/model/validation_targets.md §2 (free-edge circular
 // plate of equal area; 1.04-1.06 for 2.7 m).
 //
 // cantilever (seed paper Fig. 7, eq. 6), two ways:
@@ -16,11 +16,11 @@
 //    (measured 0.5-1.5 s after the break, as the paper did), and
 //    sigma' = 6 (P_c - P_b) l / (L_e T_e^2) must match sigma_b, in bending, at
 //    the root. Like the paper's, this P_b is the pushed-under fragment's, not
-//    the inclined beam's at the break (physics-targets.md 3).
+//    the inclined beam's at the break (docs/model/validation_targets.md §3).
 //  - tip_speed = 0: the beam in air, each free element's weight carried by an
 //    upward force (standing for buoyancy, so P_b = 0), the tip loaded by a force
 //    growing at validation.load_rate.
-// As physics-targets.md 3 says, this checks how the joint load is extracted and
+// As docs/model/validation_targets.md §3 says, this checks how the joint load is extracted and
 // judged, not the ice.
 #pragma once
 
@@ -35,7 +35,7 @@
 namespace icedem {
 
 /// Centre deflection of a free-edge floating plate of equal-area radius a,
-/// relative to the infinite plate, against a / l_c (physics-targets.md 2).
+/// relative to the infinite plate, against a / l_c (docs/model/validation_targets.md §2).
 double finite_plate_factor(double a_over_lc);
 
 /// The finite-plate factor of the scene's plate-deflection case (its plate's

@@ -1,15 +1,15 @@
 // The hydrostatic and hydrodynamic wrench of the water on one rigid floe or ice element.
 //
-// Components, summed (DESIGN.md "Physics model"):
+// Components, summed (docs/model/physics.md):
 //   buoyancy       rho g V_sub, upward, at the centre of buoyancy (hydrostatics.hpp), so a
 //                  heeled floe feels the right righting moment;
 //   form drag      on every wetted face advancing into the water, -1/2 rho C_d A (v_r.n)^2 n,
-//                  at the face centroid (physics-targets.md section 5: 1/2 rho C_d L d v^2
+//                  at the face centroid (docs/model/validation_targets.md §5: 1/2 rho C_d L d v^2
 //                  for a floe moving edge-first);
 //   skin friction  on every wetted face, -1/2 rho C_f A |v_t| v_t, v_t the tangential part
 //                  of the relative velocity, at the face centroid;
 //   damping        heave -c_h v_y and roll/pitch -c_rp (omega_x, 0, omega_z), a stand-in for
-//                  the radiation damping of a floe (physics-targets.md section 1), scaled by
+//                  the radiation damping of a floe (docs/model/validation_targets.md §1), scaled by
 //                  the submerged fraction so a body out of the water is not damped.
 // Gravity is not included (the physics engine applies it). The relative velocity is that
 // of the body at the face centroid minus the water velocity there (flow_field.hpp). Each
@@ -31,13 +31,13 @@ struct WaterParams {
   double water_density = 1000.0;  // kg/m^3, fresh water of the NMRI tank (seed paper)
   double gravity = 9.81;          // m/s^2
   // -, form drag C_d on wetted faces facing the relative flow: 1.0 for a bluff edge,
-  // within the 0.5-1.0 range of physics-targets.md section 5 [U: an assumption]
+  // within the 0.5-1.0 range of docs/model/validation_targets.md §5 [U: an assumption]
   double drag_coefficient = 1.0;
   // -, skin friction C_f on wetted faces: laminar Blasius flat plate 1.328/sqrt(Re) = 0.0092
-  // at Re = v L / nu = 0.07 * 0.3 / 1e-6 = 2.1e4 (physics-targets.md section 5)
+  // at Re = v L / nu = 0.07 * 0.3 / 1e-6 = 2.1e4 (docs/model/validation_targets.md §5)
   double skin_friction_coefficient = 0.0092;
   // -, fraction of critical damping in heave. An assumption [U]: the radiation damping of a
-  // floe is large at its natural frequency (omega^2 a / g ~ 1.7, physics-targets.md
+  // floe is large at its natural frequency (omega^2 a / g ~ 1.7, docs/model/validation_targets.md
   // section 1), so free decay looks close to critically damped; 0.5 is a middle value
   double heave_damping_ratio = 0.5;
   // -, fraction of critical damping in roll and pitch; same argument and assumption as heave

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A single-node Slurm cluster on this machine, for testing the sweep's Slurm path
-# for real (../shared/reference/slurm-notes.md): Debian's slurm-wlm and munge,
+# for real (docs/user/slurm.md): Debian's slurm-wlm and munge,
 # run as root without systemd, all state under DIR.
 #
 #   scripts/slurm_local.sh start DIR    install (if needed), configure, start; prints SLURM_CONF

@@ -4,7 +4,7 @@ grid combination, over its seeds):
 - mean over seeds of the mean surge load and of the max surge load, each with a
   95 % confidence interval (Student's t with n - 1 degrees of freedom; none for
   one seed);
-- a Gumbel (type I) fit of the seed maxima by moments (physics-targets.md 7),
+- a Gumbel (type I) fit of the seed maxima by moments (docs/model/validation_targets.md §7),
   for extrapolating the max to longer records, and their coefficient of variation;
 - the mean peak interval of the load (icedem's summary), and the spectral peak:
   the frequency of the largest power of the ensemble spectrum (the Welch spectra
@@ -87,7 +87,7 @@ def ensemble_spectrum(spectra):
 
 
 def gumbel_fit(maxima):
-    """Moment fit of a Gumbel type I distribution to sample maxima (physics-targets.md 7):
+    """Moment fit of a Gumbel type I distribution to sample maxima (docs/model/validation_targets.md §7):
     beta = sqrt(6) s / pi, u = mean - 0.5772 beta. (nan, nan) for fewer than 2."""
     x = np.asarray(maxima, dtype=float)
     if len(x) < 2:
@@ -215,7 +215,7 @@ def aggregate(groups):
         maxima = _finite(r["max_fx_N"] for r in records)
         row["max_fx_gumbel_u_N"], row["max_fx_gumbel_beta_N"] = gumbel_fit(maxima)
         # coefficient of variation of the seed maxima: seeds for a +-eps mean of maxima at 95 %
-        # are (1.96 CoV / eps)^2 (physics-targets.md 7)
+        # are (1.96 CoV / eps)^2 (docs/model/validation_targets.md §7)
         row["max_fx_cov"] = (float(np.std(maxima, ddof=1) / np.mean(maxima))
                              if len(maxima) >= 2 and np.mean(maxima) > 0 else float("nan"))
         pi = _finite(r["peak_interval_s"] for r in records)

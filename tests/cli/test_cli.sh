@@ -43,7 +43,7 @@ echo keep > keep.h5
   && grep -q "^cfm = " cal.toml && "$icedem" check cal.toml >/dev/null 2>&1 \
   && ok "calibrate writes a valid calibrated scenario" || fail "calibrate"
 
-# 4. a short run: summary JSON keys of DESIGN.md and the HDF5 layout
+# 4. a short run: summary JSON keys of docs/user/output.md and the HDF5 layout
 "$icedem" run "$src/scenarios/examples/short_tow.toml" -o run.h5 --summary-json run.json -q \
   --set time.duration=20 >/dev/null 2>&1 && ok "short run exits 0" || fail "short run failed"
 $py - <<'PY' && ok "summary JSON and HDF5 layout" || fail "summary JSON or HDF5 layout"

@@ -58,8 +58,8 @@ TEST(Breakable, FloeBecomesALatticeOfElementsAndJoints) {
 }
 
 TEST(Breakable, CantileverRootJointCarriesShearAndMoment) {
-  // a 4 x 1 strip of 0.15 m elements with a fixed root element, in air (physics-targets 3:
-  // feedback shear exact, root moment 0.7 % low from the sag geometry in bullet-notes.md)
+  // a 4 x 1 strip of 0.15 m elements with a fixed root element, in air (docs/model/validation_targets.md §3:
+  // feedback shear exact, root moment 0.7 % low from the sag geometry in docs/model/bullet.md)
   const Scene scene = bench({"solver.iterations=200", "fracture.cfm=0"});
   State state = initial_state(scene, {strip(0.6, 0.15)});
   lift(*state.world);
@@ -114,8 +114,8 @@ TEST(Breakable, PiecesCollideOnceBrokenApart) {
 TEST(Breakable, PlateDeflectionMatchesHertzWithinFivePercent) {
   // scenarios/validation/plate_deflection_27_015.toml: a 2.7 m plate of 0.15 m elements at
   // the calibrated CFM (0.0059 at 100 joint iterations), 10 N at the centre; reference
-  // Hertz x finite-plate factor = 0.092 mm/N (physics-targets 2).
-  // 5 %: the tolerance physics-targets.md accepts (E then within 10 %)
+  // Hertz x finite-plate factor = 0.092 mm/N (docs/model/validation_targets.md §2).
+  // 5 %: the tolerance docs/model/validation_targets.md accepts (E then within 10 %)
   const Scene scene =
       load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/plate_deflection_27_015.toml");
   const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/plate.h5", false, ""});
@@ -126,7 +126,7 @@ TEST(Breakable, PlateDeflectionMatchesHertzWithinFivePercent) {
 }
 
 TEST(Validation, FinitePlateFactorFollowsTheTable) {
-  // physics-targets.md 2: 2.70 at a/l_c = 1, 1.038 at 4, 1.000 at 8 and beyond
+  // docs/model/validation_targets.md §2: 2.70 at a/l_c = 1, 1.038 at 4, 1.000 at 8 and beyond
   EXPECT_DOUBLE_EQ(finite_plate_factor(1.0), 2.70);
   EXPECT_DOUBLE_EQ(finite_plate_factor(4.0), 1.038);
   EXPECT_DOUBLE_EQ(finite_plate_factor(20.0), 1.0);

@@ -1,6 +1,6 @@
 // A floating floe in the real Bullet world with the water stage: Archimedes
 // draft, reserve buoyancy, righting, terminal drift speed, and a still field.
-// References: physics-targets.md section 1 (draft 30.69 mm, reserve buoyancy
+// References: docs/model/validation_targets.md §1 (draft 30.69 mm, reserve buoyancy
 // 2.04 N for a 0.3 m floe) and the drag law of dem/water_forces.hpp.
 #include <gtest/gtest.h>
 
@@ -77,7 +77,7 @@ TEST(Floating, TiltedFloeRightsItself) {
   body.setWorldTransform(t);
   ASSERT_NEAR(roll_pitch_deg(body), 15.0, 1e-6);
   run_for(scene, state, 10.0);
-  // GM = 0.243 m > 0 (physics-targets.md 1): the heel decays; after 10 s (~28 natural
+  // GM = 0.243 m > 0 (docs/model/validation_targets.md §1): the heel decays; after 10 s (~28 natural
   // periods, damping ratio 0.5) anything above 0.1 degree means it did not right itself
   EXPECT_LT(roll_pitch_deg(body), 0.1);
 }
@@ -99,7 +99,7 @@ TEST(Floating, FloeFieldInStillWaterStaysAtRest) {
   }
   // floes start at their exact equilibrium draft with gaps between them: any force
   // imbalance would show as drift. 1 micrometre and 1 micrometre/s leave room only
-  // for round-off (bullet-notes.md measured 3e-17 m/s in double)
+  // for round-off (docs/model/bullet.md measured 3e-17 m/s in double)
   EXPECT_LT(max_shift, 1e-6);
   EXPECT_LT(max_speed, 1e-6);
 }

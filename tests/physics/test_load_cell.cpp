@@ -1,5 +1,5 @@
 // The load cell reads contact impulses on the kinematic structure: a box
-// resting on a kinematic plate must weigh -m g (bullet-notes.md: exact), with
+// resting on a kinematic plate must weigh -m g (docs/model/bullet.md: exact), with
 // the moment of that weight about the plate's reference point; and reserve
 // buoyancy measured by pushing a floe under with the structure is 2.04 N.
 #include <gtest/gtest.h>
@@ -87,7 +87,7 @@ TEST_P(LoadCellRestingBox, ReadsMinusMgAndItsMoment) {
   hold_plate(state, scene, plate, 2.0);  // settle
   Eigen::Vector3d F, M;
   hold_plate(state, scene, plate, 1.0, &F, &M);
-  // at rest the contact impulses carry the weight exactly (bullet-notes.md); 1e-6
+  // at rest the contact impulses carry the weight exactly (docs/model/bullet.md); 1e-6
   // relative leaves room for the solver's convergence in the first settled steps
   EXPECT_NEAR(F.y(), -m * scene.water.gravity, 1e-6 * m * scene.water.gravity);
   // no sideways force, to the same 1e-6 of the weight: the warm-started friction of the
@@ -122,7 +122,7 @@ TEST(LoadCell, PushingAFloeUnderTakesItsReserveBuoyancy) {
   const long hold = std::lround(3.0 / scene.time.dt);
   for (long i = 0; i < hold; ++i) F += step_plate_and_water(state, scene, {start.x(), y_end, start.z()});
   F /= hold;
-  // (rho_w - rho_i) g L^2 h = 2.04 N (physics-targets.md 1); 2 % (issue 2) covers the
+  // (rho_w - rho_i) g L^2 h = 2.04 N (docs/model/validation_targets.md §1); 2 % (issue 2) covers the
   // 1 mm the plate's collision margin and the contact slop may leave the floe high
   const double ref = (scene.water.density - scene.ice.density) * scene.water.gravity * L * L * h;
   EXPECT_NEAR(ref, 2.04, 0.005);

@@ -41,7 +41,7 @@ TEST(ShortTow, LoadIsFiniteNonZeroAndPlausible) {
   EXPECT_LT(s.first_contact_s, 10.0);
   // plausible range: ice resists towing (mean > 0.5 N: floes are being pushed and
   // submerged), and stays far below the level-ice load on this cone, 130-270 N
-  // (physics-targets.md 4a), which managed ice must not exceed
+  // (docs/model/validation_targets.md §4a), which managed ice must not exceed
   EXPECT_TRUE(std::isfinite(s.surge.mean));
   EXPECT_GT(s.surge.mean, 0.5);
   EXPECT_LT(s.surge.mean, 100.0);
@@ -51,7 +51,7 @@ TEST(ShortTow, LoadIsFiniteNonZeroAndPlausible) {
   // the heave load depends on how the ice rides down the hull: finite, sign not asserted
   EXPECT_TRUE(std::isfinite(s.mean_fy_N));
 
-  // the file: layout of DESIGN.md, one row per step
+  // the file: layout of docs/user/output.md, one row per step
   H5::H5File f(out, H5F_ACC_RDONLY);
   const hsize_t n = static_cast<hsize_t>(s.steps);
   EXPECT_EQ(shape_of(f, "/load/time"), (std::vector<hsize_t>{n}));

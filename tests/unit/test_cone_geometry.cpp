@@ -25,7 +25,7 @@ TEST(ConeGeometry, DefaultProfileHasTable2Dimensions) {
   EXPECT_NEAR(2 * kTable2.back().radius, 1.472, 1e-12);
   EXPECT_NEAR(-kTable2.front().y, 0.443, 1e-12);
   EXPECT_NEAR(kTable2.back().y - kTable2.front().y, 0.565, 1e-12);
-  // 45 degrees from the horizontal above the waterline (physics-targets.md 4a)
+  // 45 degrees from the horizontal above the waterline (docs/model/validation_targets.md §4a)
   const double slope = (kTable2[2].radius - kTable2[1].radius) / (kTable2[2].y - kTable2[1].y);
   EXPECT_NEAR(std::atan(slope) * 180 / kPi, 45.0, 1e-9);
 }

@@ -16,7 +16,7 @@
 namespace icedem {
 namespace {
 
-// the design channel: x in [6, 30] m, z in [-2.4, 2.4] m (DESIGN.md, seed paper Figure 4)
+// the design channel: x in [6, 30] m, z in [-2.4, 2.4] m (docs/model/architecture.md, seed paper Figure 4)
 const Channel kChannel{6.0, 30.0, -2.4, 2.4};
 
 LayoutParams params(double floe_size, double concentration, uint64_t seed = 1) {

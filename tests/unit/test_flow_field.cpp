@@ -1,5 +1,5 @@
 // Water velocity models: still and uniform water, and the strip-wise cylinder potential
-// flow around the towed structure (physics-targets.md section 5).
+// flow around the towed structure (docs/model/validation_targets.md §5).
 #include "dem/constants.hpp"
 #include "dem/flow_field.hpp"
 
@@ -15,7 +15,7 @@ namespace {
 constexpr double kTow = 0.07;  // m/s, towing speed of the NMRI tests
 
 // a straight 45-degree cone: radius 0.614 m at the waterline (Dw = 1.228 m), 0.171 m at the
-// keel 0.443 m below, 0.736 m at the deck 0.122 m above (physics-targets.md header)
+// keel 0.443 m below, 0.736 m at the deck 0.122 m above (docs/model/validation_targets.md, inputs)
 ConePotentialFlow nmri_cone() {
   return ConePotentialFlow({{-0.443, 0.171}, {0.0, 0.614}, {0.122, 0.736}});
 }

@@ -1,5 +1,5 @@
 // A numerical blow-up stops with a message naming the step, the body and the
-// quantity (DESIGN.md, "Exit codes").
+// quantity (docs/user/commands.md, exit codes).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // Hydrostatics of convex bodies: exact volumes and centroids against closed forms, symmetry
 // and an independent column integration; equilibrium draft and righting moment of a floe
-// against physics-targets.md section 1.
+// against docs/model/validation_targets.md §1.
 #include "dem/constants.hpp"
 #include "dem/hydrostatics.hpp"
 
@@ -14,7 +14,7 @@
 namespace icedem {
 namespace {
 
-// the NMRI small floe (physics-targets.md section 1)
+// the NMRI small floe (docs/model/validation_targets.md §1)
 constexpr double kL = 0.3;        // m, side
 constexpr double kH = 0.033;      // m, thickness
 constexpr double kRhoIce = 930.0; // kg/m^3
@@ -240,7 +240,7 @@ TEST(Hydrostatics, TiltedBoxVolumeAndCentroidMatchColumnIntegration) {
 }
 
 TEST(Hydrostatics, FloeFloatsAtDraftOfDensityRatioTimesThickness) {
-  // physics-targets.md section 1: d = rho_i h / rho_w = 30.69 mm
+  // docs/model/validation_targets.md §1: d = rho_i h / rho_w = 30.69 mm
   const ConvexPolyhedron floe = make_prism(rectangle(kL, kL), kH);
   const double level = equilibrium_water_level(floe, kRhoIce * kL * kL * kH / kRhoW);
   const double draft = level + kH / 2;
@@ -266,7 +266,7 @@ TEST(Hydrostatics, WaterplaneOfAFloatingRectangleHasItsAreaAndSecondMoments) {
 }
 
 TEST(Hydrostatics, HeeledFloeRightingMomentIsRhoGVGMSinPhi) {
-  // physics-targets.md section 1: GM = L^2/(12 d) + d/2 - h/2 = 0.243 m for the 0.3 m floe
+  // docs/model/validation_targets.md §1: GM = L^2/(12 d) + d/2 - h/2 = 0.243 m for the 0.3 m floe
   const ConvexPolyhedron floe = make_prism(rectangle(kL, kL), kH);
   const double d = kRhoIce / kRhoW * kH;
   const double gm = kL * kL / (12 * d) + d / 2 - kH / 2;

@@ -16,7 +16,7 @@ const JointCapacity kPaper = paper_joint_capacity(0.15, 0.033, 145.6e3, 72.8e3, 
 }  // namespace
 
 TEST(JointCapacity, MatchesThePaperThresholds) {
-  // physics-targets.md 3: compression 720.7 N, shear 360.4 N, bending 0.991 N m (L_e 0.15)
+  // docs/model/validation_targets.md §3: compression 720.7 N, shear 360.4 N, bending 0.991 N m (L_e 0.15)
   EXPECT_NEAR(kPaper.compression, 720.7, 0.05);
   EXPECT_NEAR(kPaper.shear, 360.4, 0.05);
   EXPECT_NEAR(kPaper.bending, 0.991, 0.0005);

@@ -106,7 +106,7 @@ TEST(Polygon, DegeneratePolygonsAreNotConvex) {
 }
 
 TEST(Polygon, PositiveYawTurnsXTowardsMinusZ) {
-  // DESIGN.md: x' = x cos t + z sin t, z' = -x sin t + z cos t
+  // docs/model/architecture.md: x' = x cos t + z sin t, z' = -x sin t + z cos t
   const Eigen::Vector2d p = rotate({1.0, 0.0}, kPi / 2.0);
   EXPECT_NEAR(p.x(), 0.0, kTol);
   EXPECT_NEAR(p.y(), -1.0, kTol);

@@ -1,5 +1,5 @@
 // Scenario parsing and validation: every error names file:line, the key, the
-// value and what was expected (DESIGN.md; style-examples.md item 6).
+// value and what was expected (docs/user/scenarios.md).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -40,7 +40,7 @@ TEST(Scenario, EmptyFileGivesThePaperDefaults) {
 }
 
 TEST(Scenario, EveryStableKeyOfTheDesignExists) {
-  // DESIGN.md "Stable scenario keys": sweeps and scripts rely on these paths
+  // docs/model/architecture.md, "Interfaces": sweeps and scripts rely on these paths
   for (const char* key : {"seed", "time.dt", "time.duration", "solver.iterations", "structure.speed",
                           "structure.start_x", "channel.length", "channel.width", "ice.floe_size",
                           "ice.thickness", "ice.concentration", "ice.density", "ice.elastic_modulus",

@@ -1,5 +1,5 @@
 // Load statistics: analytic mean/std/extremes of synthetic signals, the zero-phase low-pass,
-// peak detection at the floe encounter period (physics-targets.md section 7) and the window.
+// peak detection at the floe encounter period (docs/model/validation_targets.md §7) and the window.
 #include "dem/statistics.hpp"
 
 #include "dem/constants.hpp"
@@ -181,7 +181,7 @@ TEST(Lowpass, CutoffAtOrAboveNyquistIsAnInputError) {
   }
 }
 
-// 0.3 m floes towed at 0.07 m/s: a peak every L/v = 4.29 s (0.233 Hz), physics-targets.md
+// 0.3 m floes towed at 0.07 m/s: a peak every L/v = 4.29 s (0.233 Hz), docs/model/validation_targets.md
 // section 7; F = 40 N + 10 N (sin + white noise of `noise` in units of the 10 N amplitude)
 std::vector<double> noisy_encounter_load(const std::vector<double>& t, double noise) {
   std::mt19937 rng(20240501);  // fixed seed: the test is deterministic

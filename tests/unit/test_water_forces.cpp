@@ -1,6 +1,6 @@
 // Water wrench on a floe: buoyancy (reserve buoyancy, equilibrium, righting moment), form
 // drag and skin friction with their torque arms, damping, and the damping coefficients,
-// against physics-targets.md sections 1 and 5 and hand-computed per-face sums.
+// against docs/model/validation_targets.md §1 and §5 and hand-computed per-face sums.
 #include "dem/constants.hpp"
 #include "dem/water_forces.hpp"
 
@@ -11,7 +11,7 @@
 namespace icedem {
 namespace {
 
-// the NMRI small floe (physics-targets.md section 1)
+// the NMRI small floe (docs/model/validation_targets.md §1)
 constexpr double kL = 0.3;         // m, side
 constexpr double kH = 0.033;       // m, thickness
 constexpr double kRhoIce = 930.0;  // kg/m^3
@@ -40,7 +40,7 @@ BodyMotion at_rest(const Eigen::Vector3d& com, const Eigen::Matrix3d& rot = Eige
 }
 
 TEST(WaterForces, HoldingAFloeUnderwaterTakesItsReserveBuoyancy) {
-  // physics-targets.md section 1: (rho_w - rho_i) g L^2 h = 2.04 N for the 0.3 m floe
+  // docs/model/validation_targets.md §1: (rho_w - rho_i) g L^2 h = 2.04 N for the 0.3 m floe
   const Floe floe;
   const WaterParams p;
   const DampingCoefficients d = damping_coefficients(floe.body, floe.mass, floe.inertia, p);
@@ -64,7 +64,7 @@ TEST(WaterForces, FloeAtItsDraftIsInEquilibrium) {
 }
 
 TEST(WaterForces, HeeledFloeFeelsTheRightingMomentOfBuoyancy) {
-  // physics-targets.md section 1: moment rho g V GM sin(phi), GM = L^2/(12 d) + d/2 - h/2
+  // docs/model/validation_targets.md §1: moment rho g V GM sin(phi), GM = L^2/(12 d) + d/2 - h/2
   const Floe floe;
   const WaterParams p;
   const DampingCoefficients d = damping_coefficients(floe.body, floe.mass, floe.inertia, p);
@@ -96,7 +96,7 @@ TEST(WaterForces, FloeTowedEdgeFirstFeelsFormDragPlusSkinFriction) {
   EXPECT_NEAR(w.force.x(), -expected, 1e-12 * expected);  // round-off
   EXPECT_NEAR(w.force.z(), 0.0, 1e-15);
   EXPECT_NEAR(w.force.y(), floe.mass * p.gravity, 1e-12 * floe.mass * p.gravity);
-  // physics-targets.md section 5: form drag ~23 mN (22.6) and Blasius friction ~2.0 mN
+  // docs/model/validation_targets.md §5: form drag ~23 mN (22.6) and Blasius friction ~2.0 mN
   EXPECT_NEAR(f_form, 0.023, 0.0005);    // the sheet's rounding
   EXPECT_NEAR(f_bottom, 0.0020, 0.00005);
 
@@ -229,7 +229,7 @@ TEST(WaterForces, DampingCoefficientsFollowFromMassAndWaterplane) {
   const double rho_g = p.water_density * p.gravity;
   // round-off of the waterplane section
   EXPECT_NEAR(d.heave, 2 * 0.5 * std::sqrt(floe.mass * rho_g * kL * kL), 1e-12);
-  EXPECT_NEAR(d.heave, 49.4, 0.05);  // 2.762 kg on 883 N/m (physics-targets.md section 1)
+  EXPECT_NEAR(d.heave, 49.4, 0.05);  // 2.762 kg on 883 N/m (docs/model/validation_targets.md §1)
   EXPECT_NEAR(d.roll_pitch, 2 * 0.3 * std::sqrt(floe.inertia * rho_g * std::pow(kL, 4) / 12), 1e-12);
   EXPECT_NEAR(d.displaced_volume, floe.mass / p.water_density, 1e-18);
 
