@@ -6,12 +6,14 @@
 // `key.path=value` (the CLI's --set) are applied after the file.
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "dem/scenario_keys.hpp"
 #include "dem/scene.hpp"
+#include "dem/scene_builder.hpp"  // make_scene, load_scene
 
 namespace icedem {
 
@@ -40,10 +42,15 @@ Scenario read_scenario(const std::string& path, const std::vector<std::string>& 
 Scenario parse_scenario(const std::string& toml_text, const std::string& display_name,
                         const std::string& base_dir, const std::vector<std::string>& overrides = {});
 
-/// Check the keys against each other and build the Scene. Throws InputError.
-Scene make_scene(const Scenario& scenario);
+/// Throws InputError naming where `path` was set (file:line, --set, or the scenario file for
+/// a default), its value and `problem`.
+[[noreturn]] void fail_key(const Scenario& scenario, const std::string& path, const std::string& problem);
 
-/// read_scenario + make_scene.
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+/// `text` cut to a length a message can quote, saying how long it was.
+std::string excerpt(const std::string& text);
+
+/// Why `path` is not a readable regular file ("" if it is): missing, a directory or a device,
+/// or what the system says (a path too long, a symlink loop); never throws.
+std::string not_a_file(const std::filesystem::path& path);
 
 }  // namespace icedem
