@@ -4,15 +4,12 @@
 
 #include <H5Cpp.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <cstdio>
-#include <ctime>
 #include <exception>
 #include <filesystem>
 #include <stdexcept>
-#include <utility>
 
 #include <sys/statvfs.h>
 
@@ -20,71 +17,16 @@
 
 #include "dem/errors.hpp"
 #include "dem/hdf5_io.hpp"
+#include "dem/output_layout.hpp"
 #include "dem/output_schema.hpp"
 
 namespace icedem {
 
 namespace {
 
-// rows per chunk of the per-step series: 1024 doubles = 8 KiB, a few seconds of a run
-constexpr hsize_t kSeriesChunkRows = 1024;
-
-// target chunk size of the snapshot arrays, bytes (HDF5 advice: 10 KiB to 1 MiB)
-constexpr std::size_t kSnapshotChunkBytes = std::size_t(256) << 10;
-
 // set when a file could not be closed: HDF5 keeps it open and crashes when the process ends
 // (HDF5 1.10's exit-time cleanup); Recorder::left_a_file_open() tells the program to skip it
 bool g_file_left_open = false;
-
-std::string utc_now_iso8601() {
-  std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
-// fracture events: the in-memory layout is FractureEvent itself, the file layout is packed;
-// both are built from the schema's one list of fields
-const H5::PredType& event_mem_type(Element e) { return e == Element::i4 ? H5::PredType::NATIVE_INT : H5::PredType::NATIVE_DOUBLE; }
-const H5::PredType& event_file_type(Element e) { return e == Element::i4 ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE; }
-
-H5::CompType fracture_mem_type() {
-  H5::CompType type(sizeof(FractureEvent));
-  for (const EventField& f : event_fields()) type.insertMember(f.name, f.offset, event_mem_type(f.element));
-  return type;
-}
-
-H5::CompType fracture_file_type() {
-  std::size_t size = 0;
-  for (const EventField& f : event_fields()) size += event_file_type(f.element).getSize();
-  H5::CompType type(size);
-  std::size_t offset = 0;
-  for (const EventField& f : event_fields()) {
-    type.insertMember(f.name, offset, event_file_type(f.element));
-    offset += event_file_type(f.element).getSize();
-  }
-  return type;
-}
-
-// "time: s, floe: 1, ...": the units attribute of /fracture/events
-std::string event_units() {
-  std::string out;
-  for (const EventField& f : event_fields()) out += fmt::format("{}{}: {}", out.empty() ? "" : ", ", f.name, f.unit);
-  return out;
-}
-
-// the file type of a per-step series' element
-const H5::PredType& series_file_type(Element e) {
-  return e == Element::i4 ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE;
-}
-
-// the group and the name of a dataset path: "/load/force" -> "/load", "force"
-std::pair<std::string, std::string> split_path(const std::string& path) {
-  const std::size_t slash = path.rfind('/');
-  return {path.substr(0, slash), path.substr(slash + 1)};
-}
 
 }  // namespace
 
@@ -97,13 +39,8 @@ struct Recorder::Impl {
   std::size_t bodies = 0;
   std::size_t appended_rows = 0;
 
-  // per-step series, in series_columns() order
-  std::vector<Series> series = std::vector<Series>(series_columns().size());
-  // snapshots
-  Series snap_time, snap_position, snap_orientation, snap_awake;
-  // fracture events
-  Series events;
-  H5::CompType event_mem_type = fracture_mem_type();
+  OutputDatasets data;  // the growing datasets (dem/output_layout.hpp)
+  H5::CompType event_mem_type = fracture_event_mem_type();
 
   // buffers of rows not yet written
   std::vector<LoadSample> load_buffer;
@@ -165,16 +102,16 @@ struct Recorder::Impl {
     // gather the buffered samples column by column, as the schema reads them
     std::vector<double> values;
     std::vector<int> integers;
-    for (std::size_t c = 0; c < series.size(); ++c) {
+    for (std::size_t c = 0; c < data.series.size(); ++c) {
       const SeriesColumn& col = series_columns()[c];
       values.resize(n * col.width);
       for (std::size_t i = 0; i < n; ++i)
         for (int k = 0; k < col.width; ++k) values[col.width * i + k] = col.value(load_buffer[i], k);
       if (col.element == Element::i4) {
         integers.assign(values.begin(), values.end());
-        series[c].write(integers.data(), n, H5::PredType::NATIVE_INT);
+        data.series[c].write(integers.data(), n, H5::PredType::NATIVE_INT);
       } else {
-        series[c].write(values.data(), n, H5::PredType::NATIVE_DOUBLE);
+        data.series[c].write(values.data(), n, H5::PredType::NATIVE_DOUBLE);
       }
     }
     load_buffer.clear();
@@ -184,10 +121,10 @@ struct Recorder::Impl {
     const std::size_t k = snap_time_buffer.size();
     if (k == 0) return;
     require_space(buffered_bytes());
-    snap_time.write(snap_time_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
-    snap_position.write(snap_position_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
-    snap_orientation.write(snap_orientation_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
-    snap_awake.write(snap_awake_buffer.data(), k, H5::PredType::NATIVE_UINT8);
+    data.snap_time.write(snap_time_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
+    data.snap_position.write(snap_position_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
+    data.snap_orientation.write(snap_orientation_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
+    data.snap_awake.write(snap_awake_buffer.data(), k, H5::PredType::NATIVE_UINT8);
     snap_time_buffer.clear();
     snap_position_buffer.clear();
     snap_orientation_buffer.clear();
@@ -197,7 +134,7 @@ struct Recorder::Impl {
   void write_event_block() {
     if (event_buffer.empty()) return;
     require_space(buffered_bytes());
-    events.write(event_buffer.data(), event_buffer.size(), event_mem_type);
+    data.events.write(event_buffer.data(), event_buffer.size(), event_mem_type);
     event_buffer.clear();
   }
 
@@ -241,95 +178,9 @@ struct Recorder::Impl {
     }
   }
 
-  // the group a dataset path lives in, created on first use
-  H5::Group parent_group(const std::string& path) {
-    const std::string group = split_path(path).first;
-    return file->nameExists(group) ? file->openGroup(group) : file->createGroup(group);
-  }
-
-  // a growing dataset of one of the schema's other datasets (units and description from it)
-  Series schema_series(const std::string& path, const H5::DataType& type, const std::vector<hsize_t>& row_shape,
-                       hsize_t chunk_rows, const std::string& units) {
-    const DatasetEntry& e = dataset_entry(path);
-    return create_series(parent_group(path), split_path(path).second, type, row_shape, chunk_rows, units,
-                         e.description);
-  }
-  Series schema_series(const std::string& path, const H5::DataType& type, const std::vector<hsize_t>& row_shape,
-                       hsize_t chunk_rows) {
-    return schema_series(path, type, row_shape, chunk_rows, dataset_entry(path).unit);
-  }
-
-  // a fixed dataset of the schema, written in one go
-  void schema_fixed(const std::string& path, const H5::DataType& file_type, const H5::DataType& mem_type,
-                    const std::vector<hsize_t>& dims, const void* data) {
-    const DatasetEntry& e = dataset_entry(path);
-    write_fixed(parent_group(path), split_path(path).second, file_type, mem_type, dims, data, e.unit, e.description);
-  }
-
-  void create_layout(const RunMeta& run, const std::vector<BodyOutline>& outlines) {
-    // metadata first: a file killed at any later point says what run it belongs to
-    meta = std::make_unique<H5::Group>(file->createGroup("/meta"));
-    const H5::Group& m = *meta;
-    write_attr(m, "format_version", kOutputFormatVersion);
-    write_attr(m, "scenario", run.scenario_text);
-    write_attr(m, "scenario_path", run.scenario_path);
-    write_attr(m, "command_line", run.command_line);
-    write_attr(m, "version", run.version);
-    write_attr(m, "bullet_version", run.bullet_version);
-    write_attr(m, "precision", run.precision);
-    write_attr(m, "seed", run.seed);
-    write_attr(m, "started_utc", utc_now_iso8601());
-    write_attr(m, "status", std::string("running"));
-    write_attr(m, "message", std::string(""));
-    write_attr(m, "wall_time_s", 0.0);
-
-    // per-step series: load, structure, diagnostics
-    for (std::size_t c = 0; c < series.size(); ++c) {
-      const SeriesColumn& col = series_columns()[c];
-      const std::vector<hsize_t> row_shape = col.width == 1 ? std::vector<hsize_t>{} : std::vector<hsize_t>{hsize_t(col.width)};
-      series[c] = create_series(parent_group(col.path), split_path(col.path).second, series_file_type(col.element),
-                                row_shape, kSeriesChunkRows, col.unit, col.description);
-    }
-
-    const H5::DataType& f8 = H5::PredType::IEEE_F64LE;
-
-    // body outlines: a flat vertex list indexed by offsets (CSR), since outlines differ in size
-    bodies = outlines.size();
-    std::vector<int> floe_id(bodies);
-    std::vector<double> thickness(bodies), vertices;
-    std::vector<int64_t> offset(bodies + 1, 0);
-    for (std::size_t i = 0; i < bodies; ++i) {
-      floe_id[i] = outlines[i].floe_id;
-      thickness[i] = outlines[i].thickness;
-      for (const Eigen::Vector2d& v : outlines[i].outline) {
-        vertices.push_back(v.x());
-        vertices.push_back(v.y());
-      }
-      offset[i + 1] = offset[i] + static_cast<int64_t>(outlines[i].outline.size());
-    }
-    const hsize_t nb = bodies, nv = vertices.size() / 2;
-    schema_fixed("/bodies/floe_id", H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT, {nb}, floe_id.data());
-    schema_fixed("/bodies/thickness", f8, H5::PredType::NATIVE_DOUBLE, {nb}, thickness.data());
-    schema_fixed("/bodies/vertex_offset", H5::PredType::STD_I64LE, H5::PredType::NATIVE_INT64, {nb + 1}, offset.data());
-    schema_fixed("/bodies/vertices", f8, H5::PredType::NATIVE_DOUBLE, {nv, 2}, vertices.data());
-
-    // snapshots: chunks of whole snapshots, sized so that a chunk stays near kSnapshotChunkBytes
-    const std::size_t snapshot_bytes = std::max<std::size_t>(bodies, 1) * 4 * sizeof(double);
-    const hsize_t snap_rows = std::clamp<hsize_t>(kSnapshotChunkBytes / snapshot_bytes, 1, 256);
-    snap_time = schema_series("/snapshots/time", f8, {}, 256);
-    snap_position = schema_series("/snapshots/position", f8, {nb, 3}, snap_rows);
-    snap_orientation = schema_series("/snapshots/orientation", f8, {nb, 4}, snap_rows);
-    snap_awake = schema_series("/snapshots/awake", H5::PredType::STD_U8LE, {nb}, snap_rows);
-
-    // fracture events (/fracture/floe_* are written at the end, by write_floe_margins)
-    events = schema_series("/fracture/events", fracture_file_type(), {}, 256, event_units());
-    flush_file();
-  }
-
   // every object must be closed for the file to close: HDF5 keeps it open while any is
   void close() {
-    for (Series* s : {&snap_time, &snap_position, &snap_orientation, &snap_awake, &events}) s->dataset.reset();
-    for (Series& s : series) s.dataset.reset();
+    data.close();
     meta.reset();
     file->close();
     finished = true;
@@ -369,7 +220,9 @@ Recorder::Recorder(const std::string& path, const RunMeta& meta,
   }
   // lay it out
   try {
-    impl_->create_layout(meta, bodies);
+    impl_->data = create_output_layout(*impl_->file, meta, bodies);
+    impl_->meta = std::make_unique<H5::Group>(impl_->file->openGroup("/meta"));
+    impl_->bodies = bodies.size();
   } catch (const H5::Exception& e) {
     std::string reason = hdf5_reason(e);
     try {
@@ -446,11 +299,7 @@ void Recorder::write_floe_margins(const std::vector<double>& max_ratio,
     throw std::invalid_argument("Recorder::write_floe_margins: one ratio and one distance per floe");
   QuietHdf5 quiet;
   try {
-    const hsize_t n = max_ratio.size();
-    impl_->schema_fixed("/fracture/floe_max_ratio", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
-                        max_ratio.data());
-    impl_->schema_fixed("/fracture/floe_min_distance", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
-                        min_distance.data());
+    write_floe_margin_datasets(*impl_->file, max_ratio, min_distance);
     impl_->flush_file();
   } catch (const H5::Exception& e) {
     throw OutputError("cannot write floe margins to '" + impl_->path + "': " + hdf5_reason(e));

@@ -1,0 +1,177 @@
+// Lays out a new output file from the schema (dem/output_layout.hpp).
+#include "dem/output_layout.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <ctime>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "dem/output_schema.hpp"
+
+namespace icedem {
+
+namespace {
+
+// rows per chunk of the per-step series: 1024 doubles = 8 KiB, a few seconds of a run
+constexpr hsize_t kSeriesChunkRows = 1024;
+
+// target chunk size of the snapshot arrays, bytes (HDF5 advice: 10 KiB to 1 MiB)
+constexpr std::size_t kSnapshotChunkBytes = std::size_t(256) << 10;
+
+// fracture events: the in-memory layout is FractureEvent itself, the file layout is packed;
+// both are built from the schema's one list of fields
+const H5::PredType& event_mem_type(Element e) { return e == Element::i4 ? H5::PredType::NATIVE_INT : H5::PredType::NATIVE_DOUBLE; }
+const H5::PredType& event_file_type(Element e) { return e == Element::i4 ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE; }
+
+H5::CompType fracture_file_type() {
+  std::size_t size = 0;
+  for (const EventField& f : event_fields()) size += event_file_type(f.element).getSize();
+  H5::CompType type(size);
+  std::size_t offset = 0;
+  for (const EventField& f : event_fields()) {
+    type.insertMember(f.name, offset, event_file_type(f.element));
+    offset += event_file_type(f.element).getSize();
+  }
+  return type;
+}
+
+// "time: s, floe: 1, ...": the units attribute of /fracture/events
+std::string event_units() {
+  std::string out;
+  for (const EventField& f : event_fields()) out += fmt::format("{}{}: {}", out.empty() ? "" : ", ", f.name, f.unit);
+  return out;
+}
+
+// the file type of a per-step series' element
+const H5::PredType& series_file_type(Element e) {
+  return e == Element::i4 ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE;
+}
+
+// the group and the name of a dataset path: "/load/force" -> "/load", "force"
+std::pair<std::string, std::string> split_path(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  return {path.substr(0, slash), path.substr(slash + 1)};
+}
+
+// the group a dataset path lives in, created on first use
+H5::Group parent_group(H5::H5File& file, const std::string& path) {
+  const std::string group = split_path(path).first;
+  return file.nameExists(group) ? file.openGroup(group) : file.createGroup(group);
+}
+
+// a growing dataset of one of the schema's other datasets (units and description from it)
+Series schema_series(H5::H5File& file, const std::string& path, const H5::DataType& type, const std::vector<hsize_t>& row_shape,
+                     hsize_t chunk_rows, const std::string& units) {
+  const DatasetEntry& e = dataset_entry(path);
+  return create_series(parent_group(file, path), split_path(path).second, type, row_shape, chunk_rows, units,
+                       e.description);
+}
+Series schema_series(H5::H5File& file, const std::string& path, const H5::DataType& type, const std::vector<hsize_t>& row_shape,
+                     hsize_t chunk_rows) {
+  return schema_series(file, path, type, row_shape, chunk_rows, dataset_entry(path).unit);
+}
+
+// a fixed dataset of the schema, written in one go
+void schema_fixed(H5::H5File& file, const std::string& path, const H5::DataType& file_type, const H5::DataType& mem_type,
+                  const std::vector<hsize_t>& dims, const void* data) {
+  const DatasetEntry& e = dataset_entry(path);
+  write_fixed(parent_group(file, path), split_path(path).second, file_type, mem_type, dims, data, e.unit, e.description);
+}
+
+}  // namespace
+
+std::string utc_now_iso8601() {
+  std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+H5::CompType fracture_event_mem_type() {
+  H5::CompType type(sizeof(FractureEvent));
+  for (const EventField& f : event_fields()) type.insertMember(f.name, f.offset, event_mem_type(f.element));
+  return type;
+}
+
+OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const std::vector<BodyOutline>& outlines) {
+  OutputDatasets d;
+  d.series.resize(series_columns().size());
+  // metadata first: a file killed at any later point says what run it belongs to
+  const H5::Group m = file.createGroup("/meta");
+  write_attr(m, "format_version", kOutputFormatVersion);
+  write_attr(m, "scenario", run.scenario_text);
+  write_attr(m, "scenario_path", run.scenario_path);
+  write_attr(m, "command_line", run.command_line);
+  write_attr(m, "version", run.version);
+  write_attr(m, "bullet_version", run.bullet_version);
+  write_attr(m, "precision", run.precision);
+  write_attr(m, "seed", run.seed);
+  write_attr(m, "started_utc", utc_now_iso8601());
+  write_attr(m, "status", std::string("running"));
+  write_attr(m, "message", std::string(""));
+  write_attr(m, "wall_time_s", 0.0);
+
+  // per-step series: load, structure, diagnostics
+  for (std::size_t c = 0; c < d.series.size(); ++c) {
+    const SeriesColumn& col = series_columns()[c];
+    const std::vector<hsize_t> row_shape = col.width == 1 ? std::vector<hsize_t>{} : std::vector<hsize_t>{hsize_t(col.width)};
+    d.series[c] = create_series(parent_group(file, col.path), split_path(col.path).second, series_file_type(col.element),
+                              row_shape, kSeriesChunkRows, col.unit, col.description);
+  }
+
+  const H5::DataType& f8 = H5::PredType::IEEE_F64LE;
+
+  // body outlines: a flat vertex list indexed by offsets (CSR), since outlines differ in size
+  const std::size_t bodies = outlines.size();
+  std::vector<int> floe_id(bodies);
+  std::vector<double> thickness(bodies), vertices;
+  std::vector<int64_t> offset(bodies + 1, 0);
+  for (std::size_t i = 0; i < bodies; ++i) {
+    floe_id[i] = outlines[i].floe_id;
+    thickness[i] = outlines[i].thickness;
+    for (const Eigen::Vector2d& v : outlines[i].outline) {
+      vertices.push_back(v.x());
+      vertices.push_back(v.y());
+    }
+    offset[i + 1] = offset[i] + static_cast<int64_t>(outlines[i].outline.size());
+  }
+  const hsize_t nb = bodies, nv = vertices.size() / 2;
+  schema_fixed(file, "/bodies/floe_id", H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT, {nb}, floe_id.data());
+  schema_fixed(file, "/bodies/thickness", f8, H5::PredType::NATIVE_DOUBLE, {nb}, thickness.data());
+  schema_fixed(file, "/bodies/vertex_offset", H5::PredType::STD_I64LE, H5::PredType::NATIVE_INT64, {nb + 1}, offset.data());
+  schema_fixed(file, "/bodies/vertices", f8, H5::PredType::NATIVE_DOUBLE, {nv, 2}, vertices.data());
+
+  // snapshots: chunks of whole snapshots, sized so that a chunk stays near kSnapshotChunkBytes
+  const std::size_t snapshot_bytes = std::max<std::size_t>(bodies, 1) * 4 * sizeof(double);
+  const hsize_t snap_rows = std::clamp<hsize_t>(kSnapshotChunkBytes / snapshot_bytes, 1, 256);
+  d.snap_time = schema_series(file, "/snapshots/time", f8, {}, 256);
+  d.snap_position = schema_series(file, "/snapshots/position", f8, {nb, 3}, snap_rows);
+  d.snap_orientation = schema_series(file, "/snapshots/orientation", f8, {nb, 4}, snap_rows);
+  d.snap_awake = schema_series(file, "/snapshots/awake", H5::PredType::STD_U8LE, {nb}, snap_rows);
+
+  // fracture events (/fracture/floe_* are written at the end, by write_floe_margins)
+  d.events = schema_series(file, "/fracture/events", fracture_file_type(), {}, 256, event_units());
+  file.flush(H5F_SCOPE_GLOBAL);
+  return d;
+}
+
+void write_floe_margin_datasets(H5::H5File& file, const std::vector<double>& max_ratio,
+                                const std::vector<double>& min_distance) {
+  const hsize_t n = max_ratio.size();
+  schema_fixed(file, "/fracture/floe_max_ratio", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
+               max_ratio.data());
+  schema_fixed(file, "/fracture/floe_min_distance", H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, {n},
+               min_distance.data());
+}
+
+void OutputDatasets::close() {
+  for (Series* s : {&snap_time, &snap_position, &snap_orientation, &snap_awake, &events}) s->dataset.reset();
+  for (Series& s : series) s.dataset.reset();
+}
+
+}  // namespace icedem
