@@ -5,25 +5,17 @@
 #include <fmt/format.h>
 
 #include "dem/errors.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/step.hpp"
-#include "dem/validation.hpp"
+#include "dem/validation/case.hpp"
+#include "dem/validation/plate_theory.hpp"
 
 namespace icedem {
 
 double measure_plate_compliance(const Scene& scene) {
   if (scene.validation.kind != ValidationCase::kPlateDeflection)
     throw InputError(fmt::format("{}: calibration needs validation.case = \"plate_deflection\"", scene.source_path));
-  const Layout layout = scene_layout(scene);
-  State state = initial_state(scene, layout.floes);
-  Validation validation(scene, state);
-  const long steps = std::lround(scene.time.duration / scene.time.dt);
-  for (long i = 0; i < steps; ++i) {
-    step(scene, state);
-    validation.after_step(scene, state);
-  }
-  const nlohmann::json r = validation.result(scene);
-  return r["value"].get<double>() / 1e3;  // mm/N -> m/N
+  const ValidationResult r = run_validation_case(scene);
+  if (!r.value) throw InputError(fmt::format("{}: the plate gave no deflection: {}", scene.source_path, r.note));
+  return *r.value / 1e3;  // mm/N -> m/N
 }
 
 CalibrationResult calibrate_cfm(const Scene& plate_scene, double target, double tolerance, double cfm_min,

@@ -19,7 +19,7 @@
 #include "dem/statistics.hpp"
 #include "dem/step.hpp"
 #include "dem/step_size_advice.hpp"
-#include "dem/validation.hpp"
+#include "dem/validation/case.hpp"
 
 namespace icedem {
 namespace {
@@ -209,7 +209,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       scene.output.snapshot_interval > 0 ? std::max(1L, std::lround(scene.output.snapshot_interval / scene.time.dt)) : 0;
   if (snapshot_every) recorder.append_snapshot(0.0, body_poses(*state.world));
 
-  Validation validation(scene, state);
+  const std::unique_ptr<ValidationCaseRun> validation = make_validation_case(scene, state);
   LoadHistory history;
   history.time.reserve(total_steps);
   history.surge.reserve(total_steps);
@@ -232,8 +232,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
         summary.message = fmt::format("interrupted at t = {:.2f} s; the file holds the run so far", state.time);
         break;
       }
-      step(scene, state);
-      validation.after_step(scene, state);
+      advance(scene, state, validation.get());
 
       // record
       const LoadReading& load = state.load;
@@ -288,7 +287,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   for (int n : state.breaks_by_mode) summary.breaks += n;
   compute_statistics(scene, history, summary);
   summary.solver = solver_summary(scene, history, summary);
-  summary.validation = validation.result(scene);
+  if (validation) summary.validation = validation->result(scene).to_json();
   summary.wall_time_s = wall();
   summary.cpu_time_s = process_cpu_time();
   write_statistics(recorder, summary);

@@ -44,9 +44,6 @@ struct State {
 
   LoadReading load;    // ice load of the last step; written by read_load_cell
 
-  // external point loads (validation cases): (body index into world->floes(), force N, tank
-  // frame at the body's centre of mass), applied in every Bullet step
-  std::vector<std::pair<int, Eigen::Vector3d>> point_loads;
   int awake_floes = 0;     // floes simulated in the last step
   int contact_points = 0;  // contact points in the world after the last step
   StepDiagnostics diagnostics;   // health of the last step (speeds, energy, mass, gaps); check_health

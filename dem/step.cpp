@@ -62,15 +62,6 @@ void apply_water_forces(const Scene& scene, State& state) {
 
 namespace {
 
-// prescribed point loads of validation cases (Bullet clears forces after each step)
-void apply_point_loads(State& state) {
-  for (const auto& [body, f] : state.point_loads) {
-    btRigidBody& b = *state.world->floes()[body].body;
-    b.activate(true);
-    b.applyCentralForce(btVector3(f.x(), f.y(), f.z()));
-  }
-}
-
 // Bullet: collide, solve contacts with PGS, integrate (one internal step of h)
 void advance_bullet(State& state, double h) { state.world->dynamics().stepSimulation(h, 0); }
 
@@ -93,7 +84,7 @@ Eigen::Vector3d structure_position_at(const Scene& scene, double t) {
   return {scene.structure.start_x + scene.structure.speed * t, 0.0, scene.structure.start_z};
 }
 
-void step(const Scene& scene, State& state) {
+void step(const Scene& scene, State& state, const PointLoads* loads) {
   const double h = scene.time.dt / scene.time.substeps;
   const double t0 = state.time;
   StageTimes& times = state.stage_times;
@@ -106,7 +97,7 @@ void step(const Scene& scene, State& state) {
     const double t_next = t0 + k * h;
     { StageTimer t(times.structure); move_structure(scene, state, t_next); }
     { StageTimer t(times.water); apply_water_forces(scene, state); }
-    apply_point_loads(state);
+    if (loads) loads->apply(*state.world);
     { StageTimer t(times.bullet); advance_bullet(state, h); }
     { StageTimer t(times.load_cell); read_load_cell(state, cell); }
     state.time = t_next;

@@ -1,6 +1,7 @@
 // One time step of the simulation, as a list of stages.
 #pragma once
 
+#include "dem/point_loads.hpp"
 #include "dem/scene.hpp"
 #include "dem/state.hpp"
 
@@ -11,9 +12,10 @@ namespace icedem {
 /// partner when one is due (coupling.mode = "probe"); per Bullet substep, move the
 /// structure, apply water forces, let Bullet collide/solve/integrate, read the
 /// load cell and check the joints for fracture; then average the load over the
-/// step, update sleeping/freezing and check for blow-ups.
+/// step, update sleeping/freezing and check for blow-ups. `loads` (a validation case's, a
+/// test's) are applied before every Bullet step, in the point-load stage.
 /// Throws NumericalError on a blow-up, CouplingError if the partner fails.
-void step(const Scene& scene, State& state);
+void step(const Scene& scene, State& state, const PointLoads* loads = nullptr);
 
 /// The water stage: buoyancy, drag and damping on every awake floe (Bullet
 /// clears applied forces after each of its steps, so call it before each).

@@ -1,0 +1,52 @@
+// Validation cases: the result block, the factory, advance() and a case run to its end
+// (dem/validation/case.hpp).
+#include "dem/validation/case.hpp"
+
+#include <cmath>
+
+#include "dem/initial_state.hpp"
+#include "dem/step.hpp"
+#include "dem/validation/cantilever.hpp"
+#include "dem/validation/plate_deflection.hpp"
+
+namespace icedem {
+
+nlohmann::json ValidationResult::to_json() const {
+  nlohmann::json j = details;
+  j["case"] = case_name;
+  j["metric"] = metric;
+  j["value"] = value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+  j["reference"] = reference;
+  j["rel_error"] = rel_error ? nlohmann::json(*rel_error) : nlohmann::json(nullptr);
+  j["tolerance"] = tolerance;
+  j["passed"] = passed;
+  if (!note.empty()) j["note"] = note;
+  return j;
+}
+
+std::unique_ptr<ValidationCaseRun> make_validation_case(const Scene& scene, State& state) {
+  switch (scene.validation.kind) {
+    case ValidationCase::kNone: return nullptr;
+    case ValidationCase::kPlateDeflection: return std::make_unique<PlateDeflection>(scene, state);
+    case ValidationCase::kCantilever:
+      if (scene.validation.tip_speed > 0) return std::make_unique<FloatingCantilever>(scene, state);
+      return std::make_unique<CantileverInAir>(scene, state);
+  }
+  return nullptr;
+}
+
+void advance(const Scene& scene, State& state, ValidationCaseRun* validation) {
+  step(scene, state, validation ? &validation->loads() : nullptr);
+  if (validation) validation->after_step(scene, state);
+}
+
+ValidationResult run_validation_case(const Scene& scene) {
+  State state = initial_state(scene, scene_layout(scene).floes);
+  const std::unique_ptr<ValidationCaseRun> validation = make_validation_case(scene, state);
+  if (!validation) return {};
+  const long steps = std::lround(scene.time.duration / scene.time.dt);
+  while (state.step < steps) advance(scene, state, validation.get());
+  return validation->result(scene);
+}
+
+}  // namespace icedem
