@@ -16,9 +16,6 @@ std::unique_ptr<FlowField> make_coupled_flow(const Scene& scene) {
   return std::make_unique<GridFlowField>(solved_flow_grid(scene, std::cerr));
 }
 
-void register_coupled_flow() {
-  coupled_flow_factory() = make_coupled_flow;
-  drag_exchange_factory() = make_drag_exchange;
-}
+FlowCoupling openfoam_coupling() { return FlowCoupling{make_coupled_flow, make_drag_exchange}; }
 
 }  // namespace icedem

@@ -5,6 +5,7 @@
 
 #include <memory>
 
+#include "dem/flow_coupling.hpp"
 #include "dem/flow_field.hpp"
 #include "dem/scene.hpp"
 
@@ -14,7 +15,8 @@ namespace icedem {
 /// the cache (progress on stderr). Throws CouplingError if OpenFOAM fails.
 std::unique_ptr<FlowField> make_coupled_flow(const Scene& scene);
 
-/// Makes make_coupled_flow the factory of flow.model = "coupled" (dem/initial_state.hpp).
-void register_coupled_flow();
+/// The OpenFOAM coupling for a run: make_coupled_flow and the probe-mode drag exchange
+/// (dem/flow_coupling.hpp).
+FlowCoupling openfoam_coupling();
 
 }  // namespace icedem

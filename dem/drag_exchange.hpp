@@ -35,9 +35,6 @@ class DragExchange {
   virtual void finish(bool succeeded) noexcept = 0;
 };
 
-/// Makes the exchange of a scene, or nullptr if the scene has none. The coupling
-/// library (coupling/) sets it, as for the coupled flow (dem/initial_state.hpp).
-using DragExchangeFactory = std::function<std::unique_ptr<DragExchange>(const Scene&)>;
-DragExchangeFactory& drag_exchange_factory();
+// A run gets its exchange from the FlowCoupling it is given (dem/flow_coupling.hpp).
 
 }  // namespace icedem

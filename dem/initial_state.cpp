@@ -70,7 +70,7 @@ Layout scene_layout(const Scene& scene) {
   }
 }
 
-std::unique_ptr<FlowField> make_flow(const Scene& scene) {
+std::unique_ptr<FlowField> make_flow(const Scene& scene, const FlowCoupling& coupling) {
   switch (scene.flow.model) {
     case FlowModel::kStill: return std::make_unique<StillWater>();
     case FlowModel::kUniform: return std::make_unique<UniformFlow>(scene.flow.velocity);
@@ -80,29 +80,19 @@ std::unique_ptr<FlowField> make_flow(const Scene& scene) {
       return std::make_unique<ConePotentialFlow>(stations);
     }
     case FlowModel::kCoupled:
-      if (coupled_flow_factory()) return coupled_flow_factory()(scene);
+      if (coupling.flow) return coupling.flow(scene);
       throw InputError("flow.model = \"coupled\": this program was built without the OpenFOAM coupling "
                        "(coupling/); the icedem command has it");
   }
   throw std::logic_error("make_flow: unknown flow model");
 }
 
-DragExchangeFactory& drag_exchange_factory() {
-  static DragExchangeFactory factory;
-  return factory;
-}
-
-CoupledFlowFactory& coupled_flow_factory() {
-  static CoupledFlowFactory factory;
-  return factory;
-}
-
-State initial_state(const Scene& scene, const std::vector<Floe>& floes) {
+State initial_state(const Scene& scene, const std::vector<Floe>& floes, const FlowCoupling& coupling) {
   State state;
   state.world = build_world(scene, floes);
   install_activation(scene, *state.world);
-  state.flow = make_flow(scene);
-  if (drag_exchange_factory()) state.drag_exchange = drag_exchange_factory()(scene);
+  state.flow = make_flow(scene, coupling);
+  if (coupling.drag_exchange) state.drag_exchange = coupling.drag_exchange(scene);
   state.structure_position = structure_position_at(scene, 0.0);
   state.structure_velocity = Eigen::Vector3d(scene.structure.speed, 0.0, 0.0);
   state.flow->set_structure(state.structure_position, state.structure_velocity);

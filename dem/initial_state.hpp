@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "dem/floe_layout.hpp"
+#include "dem/flow_coupling.hpp"
 #include "dem/flow_field.hpp"
 #include "dem/scene.hpp"
 #include "dem/state.hpp"
@@ -18,17 +19,11 @@ Channel scene_channel(const Scene& scene);
 /// The floes: read from layout.file, or generated at ice.concentration.
 Layout scene_layout(const Scene& scene);
 
-/// The water velocity model of flow.model.
-std::unique_ptr<FlowField> make_flow(const Scene& scene);
+/// The water velocity model of flow.model ("coupled" from `coupling`).
+std::unique_ptr<FlowField> make_flow(const Scene& scene, const FlowCoupling& coupling = {});
 
-/// Makes the flow of flow.model = "coupled". The OpenFOAM coupling lives in
-/// coupling/, which depends on dem/ and not the reverse: a program that links it
-/// sets this factory once at start (the icedem command does); unset, a coupled
-/// scene is an InputError.
-using CoupledFlowFactory = std::function<std::unique_ptr<FlowField>(const Scene&)>;
-CoupledFlowFactory& coupled_flow_factory();
-
-/// World, flow and structure at t = 0 with the given floes.
-State initial_state(const Scene& scene, const std::vector<Floe>& floes);
+/// World, flow and structure at t = 0 with the given floes (a coupled flow and the drag
+/// exchange from `coupling`).
+State initial_state(const Scene& scene, const std::vector<Floe>& floes, const FlowCoupling& coupling = {});
 
 }  // namespace icedem

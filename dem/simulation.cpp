@@ -191,7 +191,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
 
   // initial conditions
   const Layout layout = scene_layout(scene);
-  State state = initial_state(scene, layout.floes);
+  State state = initial_state(scene, layout.floes, options.coupling);
   summary.floes = static_cast<int>(layout.floes.size());
   summary.achieved_concentration = layout.achieved_concentration;
 

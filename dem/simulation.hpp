@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "dem/flow_coupling.hpp"
 #include "dem/scene.hpp"
 #include "dem/summary.hpp"
 
@@ -14,6 +15,7 @@ struct RunOptions {
   std::string output = "out.h5";  // HDF5 file to write
   bool progress = true;           // progress line on stderr
   std::string command_line;       // recorded in /meta
+  FlowCoupling coupling;          // the OpenFOAM coupling, if the program links it (dem/flow_coupling.hpp)
 };
 
 /// Run the scene to the end (or until interrupted). Throws NumericalError after

@@ -92,7 +92,7 @@ int run_command(const std::string& scenario_path, std::string output, const std:
   refuse_input_as_output(output, {scenario_path, scene.layout.file});
   if (!summary_path.empty()) require_writable(summary_path, "--summary-json");
   const OutputLock lock(output);  // one run per output file
-  RunOptions options{output, !quiet, command_line};
+  RunOptions options{output, !quiet, command_line, openfoam_coupling()};
   const RunSummary summary = run_simulation(scene, options);
   std::cout << summary_table(summary) << std::flush;
   if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
@@ -149,7 +149,7 @@ int foam_solve_command(const std::string& scenario_path, const std::vector<std::
 // z, ux, uy, uz), tank frame, m and m/s.
 int flow_command(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& output) {
   const Scene scene = load_scene(scenario_path, sets);
-  const std::unique_ptr<FlowField> flow = make_flow(scene);
+  const std::unique_ptr<FlowField> flow = make_flow(scene, openfoam_coupling());
   const Eigen::Vector3d axis(scene.structure.start_x, 0.0, scene.structure.start_z);
   flow->set_structure(axis, Eigen::Vector3d(scene.structure.speed, 0.0, 0.0));
   std::ofstream out(output);
@@ -202,7 +202,6 @@ int calibrate_command(const std::string& scenario_path, const std::vector<std::s
 }  // namespace
 
 int main(int argc, char** argv) {
-  register_coupled_flow();
   CLI::App app{"icedem: a conical structure towed through managed ice floes (non-smooth DEM on Bullet)"};
   app.require_subcommand(1);
   std::string scenario, output, summary_path;
