@@ -67,9 +67,10 @@ PY
 # 4b. nothing written is lost or mixed: a second run on the same -o is refused while the
 # first runs (the first completes); -o onto the scenario is refused; an unwritable
 # --summary-json is refused before the run
-"$icedem" run "$src/scenarios/examples/short_tow.toml" -o same.h5 -q >first.log 2>&1 &
+# (the first run is long enough, 200 s simulated, to be still running on a loaded machine)
+"$icedem" run "$src/scenarios/examples/short_tow.toml" -o same.h5 -q --set time.duration=200 >first.log 2>&1 &
 first=$!
-for _ in $(seq 50); do [ -s same.h5 ] && break; sleep 0.1; done
+for _ in $(seq 300); do [ -s same.h5 ] && break; sleep 0.1; done
 msg=$("$icedem" run "$src/scenarios/examples/short_tow.toml" -o same.h5 -q 2>&1); code=$?
 wait $first; first_code=$?
 [ $code -eq 2 ] && echo "$msg" | grep -q "another icedem run is writing" && [ $first_code -eq 0 ] \
@@ -104,7 +105,11 @@ fi
 # 5. Ctrl-C: exit 130, the file is readable and marked interrupted
 "$icedem" run "$src/scenarios/paper/small_floes.toml" -o int.h5 -q --set time.duration=100000 >/dev/null 2>&1 &
 pid=$!
-sleep 3
+# interrupt once the file holds some steps (polled: set-up takes longer on a loaded machine)
+for _ in $(seq 120); do
+  sleep 0.5
+  $py -c "import h5py, sys; sys.exit(0 if h5py.File('int.h5', 'r')['/load/time'].shape[0] > 10 else 1)" 2>/dev/null && break
+done
 kill -INT $pid
 wait $pid; code=$?
 [ $code -eq 130 ] && ok "Ctrl-C exits 130" || fail "Ctrl-C exit code $code"
