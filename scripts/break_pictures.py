@@ -7,7 +7,7 @@ ice around the structure just before a joint breaks, the broken floe in red.
 The paper shows two pictures: at f_ii = 0.3 an approaching floe presses a
 submerged floe against the cone and breaks it; at f_ii = 0.7 floes break while
 sliding on the slope. For every breakable scenario of the sweep this picks,
-from the kept records (sweeplib/aggregate.py), the first break (lowest seed,
+from the kept records (tools/icedem_tools/aggregate.py), the first break (lowest seed,
 then lowest f_is) of the class "pressed under" at f_ii 0.3 and of "on the slope"
 at 0.7 (dem/break_context.hpp); with none of that class, the first break at that
 f_ii, and the title says so. The run is repeated with snapshots every 0.2 s up
@@ -30,8 +30,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 from scipy.spatial import ConvexHull  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweeplib import aggregate as agg, execute, spec  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+from icedem_tools import aggregate as agg, execute, spec  # noqa: E402
 from xdmf_snapshots import quat_to_matrix  # noqa: E402
 
 FII, FIS = "friction.ice_ice", "friction.ice_structure"

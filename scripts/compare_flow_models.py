@@ -17,7 +17,6 @@ is first solved into a fresh cache to time the set-up. It writes to OUT
 """
 import argparse
 import csv
-import json
 import os
 import subprocess
 import sys
@@ -29,6 +28,8 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from icedem_tools import runner  # noqa: E402
 
 
 def run(cmd, env=None):
@@ -75,11 +76,13 @@ def main():
     results = {}
     for name, sets in models.items():
         tag = name.split(",")[-1].strip().replace(" ", "_")
-        h5, js, fl = (os.path.join(work, f"{tag}.{e}") for e in ("h5", "json", "csv"))
-        args = [x for s in common + sets for x in ("--set", s)]
-        wall, cpu = run([a.icedem, "run", a.scenario, "-q", "-o", h5, "--summary-json", js] + args, env)
-        run([a.icedem, "flow", a.scenario, "-o", fl] + [x for s in sets for x in ("--set", s)], env)
-        results[name] = {"summary": json.load(open(js)), "h5": h5, "flow": read_flow(fl), "wall": wall, "cpu": cpu}
+        r = runner.execute(a.scenario, os.path.join(work, tag), common + sets, icedem=a.icedem, env=env)
+        if not r.ok:
+            sys.exit(f"compare_flow_models: {' '.join(r.command)} failed ({r.returncode}): {r.error}")
+        wall, cpu = r.wall_time_s, r.cpu_time_s
+        fl = os.path.join(work, tag, "flow.csv")
+        run([a.icedem, "flow", a.scenario, "-o", fl] + runner.sets_args(sets), env)
+        results[name] = {"summary": r.summary, "h5": r.h5, "flow": read_flow(fl), "wall": wall, "cpu": cpu}
         print(f"{name}: {wall:.1f} s wall, {cpu:.1f} s CPU", file=sys.stderr)
 
     with h5py.File(results["analytic potential"]["h5"]) as f:

@@ -16,10 +16,12 @@ of the same settings without running anything.
 """
 import argparse
 import csv
-import json
 import os
-import subprocess
+import sys
 import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+from icedem_tools import runner  # noqa: E402
 
 import matplotlib
 matplotlib.use("Agg")
@@ -30,14 +32,11 @@ SCENARIO = os.path.join(ROOT, "scenarios", "validation", "plate_deflection_27_01
 
 
 def run(icedem, sets, work):
-    out = os.path.join(work, "plate.h5")
-    summary = os.path.join(work, "plate.json")
-    cmd = [icedem, "run", SCENARIO, "-q", "-o", out, "--summary-json", summary]
-    for s in sets:
-        cmd += ["--set", s]
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    with open(summary) as f:
-        return json.load(f)["validation"]
+    """The plate case's validation block at these settings (one run, tools/icedem_tools/runner.py)."""
+    r = runner.execute(SCENARIO, os.path.join(work, "plate"), sets, icedem=icedem)
+    if not r.ok:
+        sys.exit(f"fig6_modulus_vs_cfm: {' '.join(r.command)} failed: {r.error}")
+    return r.summary["validation"]
 
 
 def main():

@@ -10,10 +10,13 @@ and the steps in which some element turned faster than 15 rad/s (a rocking
 element; /diagnostics/max_angular_speed) with the fastest turn of the run.
 """
 import json
+import os
 import sys
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+from icedem_tools import results  # noqa: E402
 
 
 # rad/s, as kRockingAngularSpeed in dem/constants.hpp: a 0.15 m element turning
@@ -23,20 +26,15 @@ ROCKING_RAD_S = 15.0
 
 
 def summarise(path):
-    with h5py.File(path, "r") as f:
-        events = f["/fracture/events"][:]
-        mode_names = f["/fracture/events"].attrs.get("mode_names", "")
-        t = f["/load/time"][:]
-        pos = f["/structure/position"][:]
-        w = f["/diagnostics/max_angular_speed"][:] if "/diagnostics/max_angular_speed" in f else np.zeros(0)
+    run = results.load_run(path)
+    events, t, pos = run.events, run["/load/time"], run["/structure/position"]
+    w = run["/diagnostics/max_angular_speed"] if "/diagnostics/max_angular_speed" in run else np.zeros(0)
     out = {"breaks": int(len(events))}
     out["rocking_steps"] = int(np.sum(w > ROCKING_RAD_S))
     out["max_angular_speed"] = float(np.max(w)) if len(w) else float("nan")
-    # icedem names its failure modes in the attribute: "0 compression, 1 shear, ..."
-    names = {int(code): name.replace(" ", "_").replace("-", "_")
-             for code, _, name in (part.strip().partition(" ") for part in str(mode_names).split(",")) if code.isdigit()}
-    for code, name in names.items():
-        out[name] = int(np.sum(events["mode"] == code)) if len(events) else 0
+    # by mode, every mode the file names (spaces and hyphens as "_")
+    for name in run.modes.values():
+        out[name.replace(" ", "_").replace("-", "_")] = int(np.sum(events["mode_name"] == name)) if len(events) else 0
     if len(events) == 0:
         out.update(within_1m=0, median_distance_m=float("nan"), max_distance_m=float("nan"))
         return out

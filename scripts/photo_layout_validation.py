@@ -19,8 +19,8 @@ import tempfile
 import numpy as np
 from scipy.spatial import ConvexHull, cKDTree
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import photolayout  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+from icedem_tools import photolayout  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SUPERSAMPLE = 4

@@ -19,7 +19,7 @@
                                 every floe that came within 1 m of the structure, per f_ii
 
 The drawn runs' HDF5 files are needed; a run known only by its kept record
-(sweeplib/spec.py) is run again for them. And, beside the run the top view
+(tools/icedem_tools/spec.py) is run again for them. And, beside the run the top view
 shows, run.xdmf and run_views.h5: its snapshots for ParaView
 (scripts/xdmf_snapshots.py).
 
@@ -39,8 +39,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweeplib import aggregate as agg, execute, spec  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+from icedem_tools import aggregate as agg, execute, spec  # noqa: E402
 
 FII, FIS = "friction.ice_ice", "friction.ice_structure"
 
@@ -211,7 +211,7 @@ def front_view(runs, out, scenario, path):
 
 def spectrum(runs, out, rows, scenario, path):
     """Ensemble spectra of results.h5 at f_ii = 0.5 (or the scenario's), one line per f_is."""
-    from sweeplib import aggregate as agg
+    from icedem_tools import aggregate as agg
     idx = [i for i, r in enumerate(rows) if r["scenario"] == scenario and float(r.get(FII) or 0.5) == 0.5]
     ref = reference_run(runs, out, scenario)
     if not idx or ref is None or not os.path.isfile(os.path.join(out, "results.h5")):

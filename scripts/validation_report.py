@@ -21,8 +21,11 @@ import argparse
 import glob
 import json
 import os
-import subprocess
+import sys
 import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+from icedem_tools import runner  # noqa: E402
 
 import matplotlib
 matplotlib.use("Agg")
@@ -32,12 +35,12 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def run(icedem, scenario, work):
+    """(name, summary) of one validation scenario (tools/icedem_tools/runner.py)."""
     name = os.path.splitext(os.path.basename(scenario))[0]
-    summary = os.path.join(work, name + ".json")
-    subprocess.run([icedem, "run", scenario, "-q", "-o", os.path.join(work, name + ".h5"),
-                    "--summary-json", summary], check=True, stdout=subprocess.DEVNULL)
-    with open(summary) as f:
-        return name, json.load(f)
+    r = runner.execute(scenario, os.path.join(work, name), icedem=icedem)
+    if not r.ok:
+        sys.exit(f"validation_report: {name} failed: {r.error}")
+    return name, r.summary
 
 
 def run_all(icedem):

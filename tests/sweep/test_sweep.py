@@ -11,8 +11,8 @@ import textwrap
 import unittest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from sweeplib import execute, spec  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from icedem_tools import execute, spec  # noqa: E402
 
 ICEDEM = None
 WORK = None
@@ -104,7 +104,7 @@ class Expansion(unittest.TestCase):
 
 class Aggregation(unittest.TestCase):
     def test_confidence_interval_of_three_values(self):
-        from sweeplib import aggregate as agg
+        from icedem_tools import aggregate as agg
         m, half = agg.mean_ci([1.0, 2.0, 3.0])
         # t(0.975, 2) = 4.302653, sample std 1: 4.302653 / sqrt(3)
         self.assertAlmostEqual(m, 2.0, places=12)
@@ -114,7 +114,7 @@ class Aggregation(unittest.TestCase):
         self.assertTrue(half1 != half1)  # nan: no interval from one seed
 
     def test_spectral_peak_of_a_noisy_sine(self):
-        from sweeplib import aggregate as agg
+        from icedem_tools import aggregate as agg
         import numpy as np
         rng = np.random.default_rng(1)
         t = np.arange(0, 300, 0.02)
@@ -123,7 +123,7 @@ class Aggregation(unittest.TestCase):
         self.assertLess(abs(agg.spectral_peak(t, x) - 0.233), 1 / 60)
 
     def test_spectral_peak_ignores_the_slow_drift_of_a_pack(self):
-        from sweeplib import aggregate as agg
+        from icedem_tools import aggregate as agg
         import numpy as np
         rng = np.random.default_rng(2)
         t = np.arange(0, 216, 0.02)
@@ -134,7 +134,7 @@ class Aggregation(unittest.TestCase):
         self.assertLess(abs(agg.peak_frequency(f, p) - 1 / 8.57), 1 / 60)
 
     def test_ensemble_spectrum_finds_a_peak_no_single_seed_shows(self):
-        from sweeplib import aggregate as agg
+        from icedem_tools import aggregate as agg
         import numpy as np
         rng = np.random.default_rng(3)
         t = np.arange(0, 200, 0.02)
@@ -148,7 +148,7 @@ class Aggregation(unittest.TestCase):
         self.assertTrue(np.allclose(p, np.mean([q for _, q in seeds], axis=0)))
 
     def test_gumbel_moment_fit_recovers_its_parameters(self):
-        from sweeplib import aggregate as agg
+        from icedem_tools import aggregate as agg
         import numpy as np
         rng = np.random.default_rng(4)
         x = rng.gumbel(100.0, 15.0, 20000)
@@ -163,7 +163,7 @@ class Aggregation(unittest.TestCase):
         self.assertTrue(np.isnan(agg.gumbel_fit([5.0])[0]))
 
     def test_rows_average_over_seeds_and_sum_breaks(self):
-        from sweeplib import aggregate as agg
+        from icedem_tools import aggregate as agg
         # a summary counts every mode icedem has, also those that never fired (here shear)
         recs = [{"mean_fx_N": m, "max_fx_N": 10 * m, "peak_interval_s": 4.0, "spectral_peak_hz": 0.25,
                  "breaks_by_mode": {"bending": b, "shear": 0, agg.mode_key("in-plane bending"): 1},
@@ -246,6 +246,39 @@ class XdmfExport(unittest.TestCase):
             n0 = topo[1]
             top0 = v["points/0"][topo[2:2 + n0]]
             self.assertLess(np.linalg.norm(top0.mean(axis=0) - (pos0[0] + [0, thick[0] / 2, 0])), 1e-9)
+
+
+class RunnerAndReader(unittest.TestCase):
+    def test_a_run_reads_back_with_units_and_named_breaks_and_a_failure_names_its_error(self):
+        from icedem_tools import results, runner
+        out = os.path.join(WORK, "runner")
+        # joints weak enough to break within the run (the golden breakable case, shortened)
+        sets = ["time.duration=3", "channel.start_x=3.0", "channel.length=3.6", "channel.width=3.0",
+                "ice.concentration=0.6", "structure.start_x=2.2", "structure.speed=0.2",
+                "ice.bending_strength=12e3", "stats.window_start_travel=0.1"]
+        r = runner.execute(os.path.join(ROOT, "scenarios/paper/large_floes_breakable_015.toml"), out, sets,
+                           icedem=ICEDEM)
+        self.assertTrue(r.ok, r.log)
+        self.assertGreater(r.cpu_time_s, 0)
+        run = results.load_run(r.h5)
+        self.assertEqual(run["/load/surge"].unit, "N")
+        self.assertEqual(run["/load/force"].shape, (r.summary["steps"], 3))
+        # the reader's surge is the summary's: the largest value in the window is the summary's max
+        t, surge = run["/load/time"], run["/load/surge"]
+        window = (t >= r.summary["window_start_s"]) & (t <= r.summary["window_end_s"])
+        self.assertAlmostEqual(float(surge[window].max()), r.summary["max_fx_N"], places=9)
+        self.assertEqual(len(run.events), r.summary["breaks"])
+        self.assertGreater(len(run.events), 0)
+        self.assertIn("bending", run.modes.values())
+        self.assertTrue(all(name in run.modes.values() for name in run.events["mode_name"]))
+        self.assertEqual(run.meta["status"], "complete")
+        # a bad key: exit 2, the error line names it, no summary
+        bad = runner.execute(os.path.join(ROOT, "scenarios/examples/short_tow.toml"), os.path.join(out, "bad"),
+                             ["ice.thicknes=0.03"], icedem=ICEDEM)
+        self.assertFalse(bad.ok)
+        self.assertEqual(bad.returncode, 2)
+        self.assertIn("ice.thicknes", bad.error)
+        self.assertIsNone(bad.summary)
 
 
 class Execution(unittest.TestCase):

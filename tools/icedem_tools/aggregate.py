@@ -25,6 +25,8 @@ import h5py
 import numpy as np
 from scipy import signal, stats
 
+from . import results
+
 SEGMENT_S = 60.0
 # The load spectrum of a pack is red: its largest power sits at the lowest bin,
 # the slow build-up and release of the compacted pack over tens of seconds. The
@@ -114,16 +116,6 @@ def break_names(summaries, key):
     return sorted({mode_key(k) for x in summaries for k in (x.get(key) or {})})
 
 
-def _names(attribute):
-    """{code: name} from an attribute like "0 compression, 1 shear"."""
-    out = {}
-    for part in (attribute or "").split(","):
-        code, _, name = part.strip().partition(" ")
-        if code.lstrip("-").isdigit():
-            out[int(code)] = name
-    return out
-
-
 def make_record(run_dir):
     """The record of a finished run, from its directory: its summary, the Welch spectrum of its
     surge load over the analysis window (up to RECORD_MAX_HZ) and its breaks (every field of
@@ -142,8 +134,8 @@ def make_record(run_dir):
             freq, power = f[keep].tolist(), [float(f"{v:.6g}") for v in p[keep]]
         if "/fracture/events" in h:
             ev = h["/fracture/events"]
-            modes = _names(ev.attrs.get("mode_names"))
-            mechanisms = _names(ev.attrs.get("mechanism_names"))
+            modes = results.code_names(ev.attrs.get("mode_names"))
+            mechanisms = results.code_names(ev.attrs.get("mechanism_names"))
             for row in ev[:]:
                 e = {k: (int(row[k]) if np.issubdtype(row.dtype[k], np.integer) else float(f"{row[k]:.9g}"))
                      for k in row.dtype.names}

@@ -20,7 +20,7 @@ readable directory: <scenario>/<key=value,...>/seed<N>, so a rerun finds
 what an earlier one finished whatever the order of the list. The list is
 seed-major (all configurations for the first seed, then the second, ...).
 
-A run's record (sweeplib/aggregate.py) is what the aggregation and the report
+A run's record (aggregate.py) is what the aggregation and the report
 read: its summary, its load spectrum and its breaks. With `records` set, each
 record is also kept as <records>/<run directory>.json, small enough to commit:
 a sweep resumed on another machine counts those runs as finished, so a grid

@@ -1,1 +1,0 @@
-"""Parameter sweeps of icedem runs (issue 5): description, expansion, execution."""

@@ -1,0 +1,96 @@
+"""What a run wrote, read into numpy arrays with their units: the HDF5 file (`load_run`) and the
+summary (`load_summary`). Every path and key is listed in docs/user/output.md, which icedem
+generates from its output schema. For a notebook:
+
+    import sys; sys.path.insert(0, "tools")
+    from icedem_tools import results
+    run = results.load_run("run.h5")
+    t, surge = run["/load/time"], run["/load/surge"]      # arrays, with .unit and .description
+    run.events["mode_name"]                                # breaks, modes by name
+"""
+import dataclasses
+import json
+
+import h5py
+import numpy as np
+
+
+class Quantity(np.ndarray):
+    """A numpy array that carries the unit and description of the dataset it was read from."""
+
+    def __new__(cls, values, unit="", description=""):
+        q = np.asarray(values).view(cls)
+        q.unit, q.description = unit, description
+        return q
+
+    def __array_finalize__(self, obj):
+        self.unit = getattr(obj, "unit", "")
+        self.description = getattr(obj, "description", "")
+
+
+def code_names(attribute):
+    """{code: name} from an attribute like "0 compression, 1 shear" (/fracture/events mode_names
+    and mechanism_names): icedem names its codes in the file, the tools do not repeat them."""
+    out = {}
+    for part in str(attribute or "").split(","):
+        code, _, name = part.strip().partition(" ")
+        if code.lstrip("-").isdigit():
+            out[int(code)] = name
+    return out
+
+
+def _text(value):
+    return value.decode() if isinstance(value, bytes) else value
+
+
+@dataclasses.dataclass
+class RunFile:
+    path: str
+    meta: dict       # /meta attributes: status, scenario (resolved TOML), seed, version, ...
+    stats: dict      # /stats attributes: the summary's statistics
+    layout: dict     # /layout attributes
+    datasets: dict   # path -> Quantity, every dataset read
+    events: np.ndarray  # /fracture/events rows, with mode_name and mechanism_name added
+    modes: dict         # failure mode code -> name, every mode icedem has
+    mechanisms: dict    # break mechanism code -> name
+
+    def __getitem__(self, path):
+        return self.datasets[path]
+
+    def __contains__(self, path):
+        return path in self.datasets
+
+
+def load_run(path, snapshots=False):
+    """Every dataset of the run's HDF5 file as a Quantity (the snapshots only if `snapshots`:
+    they are the large part), its attributes, and its breaks with their names."""
+    datasets = {}
+    with h5py.File(path, "r") as f:
+        def visit(name, obj):
+            if not isinstance(obj, h5py.Dataset) or name == "fracture/events":
+                return
+            if name.startswith("snapshots/") and not snapshots:
+                return
+            datasets["/" + name] = Quantity(obj[()], _text(obj.attrs.get("units", "")),
+                                            _text(obj.attrs.get("description", "")))
+        f.visititems(visit)
+        attrs = {g: {k: _text(v) for k, v in f[g].attrs.items()} if g in f else {} for g in ("/meta", "/stats", "/layout")}
+        events, modes, mechanisms = np.zeros(0), {}, {}
+        if "/fracture/events" in f:
+            ev = f["/fracture/events"]
+            rows = ev[()]
+            modes, mechanisms = code_names(_text(ev.attrs.get("mode_names"))), code_names(_text(ev.attrs.get("mechanism_names")))
+            names = [(n, rows.dtype[n]) for n in rows.dtype.names] + [("mode_name", "U32"), ("mechanism_name", "U32")]
+            events = np.zeros(len(rows), dtype=names)
+            for n in rows.dtype.names:
+                events[n] = rows[n]
+            events["mode_name"] = [modes.get(int(c), "") for c in rows["mode"]] if len(rows) else []
+            if "mechanism" in rows.dtype.names and len(rows):
+                events["mechanism_name"] = [mechanisms.get(int(c), "") for c in rows["mechanism"]]
+    return RunFile(path, attrs["/meta"], attrs["/stats"], attrs["/layout"], datasets, events, modes, mechanisms)
+
+
+def load_summary(path):
+    """The summary JSON of a run (keys in docs/user/output.md; null statistics as None)."""
+    with open(path) as f:
+        return json.load(f)
