@@ -11,7 +11,7 @@
 namespace icedem {
 
 double measure_plate_compliance(const Scene& scene) {
-  if (scene.validation.kind != ValidationCase::kPlateDeflection)
+  if (scene.validation.kind != ValidationKind::kPlateDeflection)
     throw InputError(fmt::format("{}: calibration needs validation.case = \"plate_deflection\"", scene.source_path));
   const ValidationResult r = run_validation_case(scene);
   if (!r.value) throw InputError(fmt::format("{}: the plate gave no deflection: {}", scene.source_path, r.note));

@@ -56,9 +56,9 @@ Layout generated_layout(const Scene& scene) {
 
 Layout scene_layout(const Scene& scene) {
   // validation cases: one rectangular floe at the middle of the channel
-  if (scene.validation.kind == ValidationCase::kPlateDeflection)
+  if (scene.validation.kind == ValidationKind::kPlateDeflection)
     return single_floe_layout(scene, scene.validation.plate_size, scene.validation.plate_size);
-  if (scene.validation.kind == ValidationCase::kCantilever)  // a beam along x, one element wide
+  if (scene.validation.kind == ValidationKind::kCantilever)  // a beam along x, one element wide
     return single_floe_layout(scene, scene.validation.beam_elements * scene.fracture.element_size,
                               scene.fracture.element_size);
   if (!scene.layout.file.empty()) return read_layout_file(scene.layout.file, scene_channel(scene));

@@ -156,9 +156,9 @@ struct StatsSettings {
   double lowpass_hz;           // Hz, 0 = unfiltered
 };
 
-enum class ValidationCase { kNone, kPlateDeflection, kCantilever };
+enum class ValidationKind { kNone, kPlateDeflection, kCantilever };
 struct ValidationSettings {
-  ValidationCase kind;
+  ValidationKind kind;
   double plate_size;  // m
   double load;        // N, downward at the plate centre
   double tolerance;   // -, relative

@@ -68,7 +68,7 @@ void check_limits(const Scenario& sc, const Scene& s) {
     fail_key(sc, blamed(sc, {"time.dt", "time.duration", "time.substeps"}), fmt::format("time.duration = {} s at this step and {} substeps is {:.3g} Bullet steps, more "
                                     "than {:.0e} a run can hold; lengthen the step or shorten the run",
                                     s.time.duration, s.time.substeps, steps, kMaxSteps));
-  if (s.layout.file.empty() && s.validation.kind == ValidationCase::kNone) {
+  if (s.layout.file.empty() && s.validation.kind == ValidationKind::kNone) {
     const double floes = s.ice.concentration * s.channel.length * s.channel.width / (s.ice.floe_size * s.ice.floe_size);
     const bool breakable = s.fracture.mode == FractureMode::kOn ||
                            (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
@@ -224,10 +224,10 @@ Scene make_scene(const Scenario& sc) {
   s.fracture.load_filter_time = real(sc, "fracture.load_filter_time");
   s.fracture.lattice_radius = real(sc, "fracture.lattice_radius");
 
-  s.validation.kind = choice<ValidationCase>(sc, "validation.case",
-                                             {{"none", ValidationCase::kNone},
-                                              {"plate_deflection", ValidationCase::kPlateDeflection},
-                                              {"cantilever", ValidationCase::kCantilever}});
+  s.validation.kind = choice<ValidationKind>(sc, "validation.case",
+                                             {{"none", ValidationKind::kNone},
+                                              {"plate_deflection", ValidationKind::kPlateDeflection},
+                                              {"cantilever", ValidationKind::kCantilever}});
   s.validation.plate_size = real(sc, "validation.plate_size");
   s.validation.load = real(sc, "validation.load");
   s.validation.tolerance = real(sc, "validation.tolerance");
@@ -237,7 +237,7 @@ Scene make_scene(const Scenario& sc) {
 
   const bool breakable = s.fracture.mode == FractureMode::kOn ||
                          (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
-  if (breakable && s.layout.file.empty() && s.validation.kind == ValidationCase::kNone) {
+  if (breakable && s.layout.file.empty() && s.validation.kind == ValidationKind::kNone) {
     // generated square floes must be a whole number of elements across
     const double n = s.ice.floe_size / s.fracture.element_size;
     if (std::abs(n - std::round(n)) > 1e-6)
@@ -271,10 +271,10 @@ Scene make_scene(const Scenario& sc) {
   s.stats.window_end_travel = real(sc, "stats.window_end_travel");
   s.stats.lowpass_hz = real(sc, "stats.lowpass_hz");
 
-  if (s.validation.kind != ValidationCase::kNone && s.fracture.mode != FractureMode::kOn)
+  if (s.validation.kind != ValidationKind::kNone && s.fracture.mode != FractureMode::kOn)
     fail_key(sc, "fracture.mode", fmt::format("the {} case needs ice elements: set fracture.mode = \"on\"",
                                               get<std::string>(sc, "validation.case")));
-  if (s.validation.kind == ValidationCase::kPlateDeflection) {
+  if (s.validation.kind == ValidationKind::kPlateDeflection) {
     const double n = s.validation.plate_size / s.fracture.element_size;
     if (std::abs(n - std::round(n)) > 1e-6)
       fail_key(sc, "validation.plate_size", fmt::format("is not a whole number of elements of fracture.element_size = {} m "

@@ -209,7 +209,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       scene.output.snapshot_interval > 0 ? std::max(1L, std::lround(scene.output.snapshot_interval / scene.time.dt)) : 0;
   if (snapshot_every) recorder.append_snapshot(0.0, body_poses(*state.world));
 
-  const std::unique_ptr<ValidationCaseRun> validation = make_validation_case(scene, state);
+  const std::unique_ptr<ValidationCase> validation = make_validation_case(scene, state);
   LoadHistory history;
   history.time.reserve(total_steps);
   history.surge.reserve(total_steps);

@@ -21,7 +21,7 @@
 namespace icedem {
 
 /// What both cantilevers share: the first break, the histories, and eq. 6.
-class Cantilever : public ValidationCaseRun {
+class Cantilever : public ValidationCase {
  public:
   ValidationResult result(const Scene& scene) const override;
 

@@ -24,25 +24,25 @@ nlohmann::json ValidationResult::to_json() const {
   return j;
 }
 
-std::unique_ptr<ValidationCaseRun> make_validation_case(const Scene& scene, State& state) {
+std::unique_ptr<ValidationCase> make_validation_case(const Scene& scene, State& state) {
   switch (scene.validation.kind) {
-    case ValidationCase::kNone: return nullptr;
-    case ValidationCase::kPlateDeflection: return std::make_unique<PlateDeflection>(scene, state);
-    case ValidationCase::kCantilever:
+    case ValidationKind::kNone: return nullptr;
+    case ValidationKind::kPlateDeflection: return std::make_unique<PlateDeflection>(scene, state);
+    case ValidationKind::kCantilever:
       if (scene.validation.tip_speed > 0) return std::make_unique<FloatingCantilever>(scene, state);
       return std::make_unique<CantileverInAir>(scene, state);
   }
   return nullptr;
 }
 
-void advance(const Scene& scene, State& state, ValidationCaseRun* validation) {
+void advance(const Scene& scene, State& state, ValidationCase* validation) {
   step(scene, state, validation ? &validation->loads() : nullptr);
   if (validation) validation->after_step(scene, state);
 }
 
 ValidationResult run_validation_case(const Scene& scene) {
   State state = initial_state(scene, scene_layout(scene).floes);
-  const std::unique_ptr<ValidationCaseRun> validation = make_validation_case(scene, state);
+  const std::unique_ptr<ValidationCase> validation = make_validation_case(scene, state);
   if (!validation) return {};
   const long steps = std::lround(scene.time.duration / scene.time.dt);
   while (state.step < steps) advance(scene, state, validation.get());

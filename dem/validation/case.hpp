@@ -35,9 +35,9 @@ struct ValidationResult {
 };
 
 /// One validation case.
-class ValidationCaseRun {
+class ValidationCase {
  public:
-  virtual ~ValidationCaseRun() = default;
+  virtual ~ValidationCase() = default;
   /// The forces the case prescribes for the coming step.
   const PointLoads& loads() const { return loads_; }
   /// Measures after a step, and sets the loads of the next.
@@ -50,10 +50,10 @@ class ValidationCaseRun {
 };
 
 /// The case of scene.validation.kind, set up on the initial state (nullptr for "none").
-std::unique_ptr<ValidationCaseRun> make_validation_case(const Scene& scene, State& state);
+std::unique_ptr<ValidationCase> make_validation_case(const Scene& scene, State& state);
 
 /// One step of a run: step() with the case's point loads, then the case's measurement.
-void advance(const Scene& scene, State& state, ValidationCaseRun* validation);
+void advance(const Scene& scene, State& state, ValidationCase* validation);
 
 /// A validation scene run to its end without output: its case's result (calibration, tests).
 ValidationResult run_validation_case(const Scene& scene);

@@ -12,7 +12,7 @@
 
 namespace icedem {
 
-class PlateDeflection : public ValidationCaseRun {
+class PlateDeflection : public ValidationCase {
  public:
   /// Loads the element(s) at the plate's centre: one for an odd count across, four for even.
   PlateDeflection(const Scene& scene, const State& state);
