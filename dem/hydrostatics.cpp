@@ -11,8 +11,10 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "dem/errors.hpp"
+#include "dem/polygon.hpp"
 
 namespace icedem {
 
@@ -261,54 +263,14 @@ WaterplaneSection waterplane_section(const ConvexPolyhedron& body, const Eigen::
     }
   }
 
-  // convex hull, andrew's monotone chain, counter-clockwise in (x, z)
+  // the section is the convex hull of where the faces' edges cross the plane
   WaterplaneSection section;
-  if (points.size() < 3) return section;
-  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  auto turn = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-  };
-  std::vector<Eigen::Vector2d> hull(2 * points.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    while (k >= 2 && turn(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && turn(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k - 1);
-  if (hull.size() < 3) return section;
-
-  // polygon area moments about the first hull point (small numbers), then about the centroid
-  const Eigen::Vector2d o = hull[0];
-  double a2 = 0.0, sx = 0.0, sz = 0.0, sxx = 0.0, szz = 0.0, sxz = 0.0;
-  for (std::size_t i = 0; i < hull.size(); ++i) {
-    const Eigen::Vector2d p = hull[i] - o;
-    const Eigen::Vector2d q = hull[(i + 1) % hull.size()] - o;
-    const double c = p.x() * q.y() - q.x() * p.y();
-    a2 += c;
-    sx += (p.x() + q.x()) * c;
-    sz += (p.y() + q.y()) * c;
-    sxx += (p.x() * p.x() + p.x() * q.x() + q.x() * q.x()) * c;
-    szz += (p.y() * p.y() + p.y() * q.y() + q.y() * q.y()) * c;
-    sxz += (p.x() * q.y() + 2.0 * p.x() * p.y() + 2.0 * q.x() * q.y() + q.x() * p.y()) * c;
-  }
-  const double area = 0.5 * a2;
-  if (!(area > 0.0)) return section;
-  const double cx = sx / (6.0 * area);
-  const double cz = sz / (6.0 * area);
-  // second moments about the centroid (parallel-axis theorem)
-  const double ixx = sxx / 12.0 - area * cx * cx;   // integral of x'^2 dA
-  const double izz = szz / 12.0 - area * cz * cz;   // integral of z'^2 dA
-  const double ixz = sxz / 24.0 - area * cx * cz;   // integral of x' z' dA
-  const double mean = 0.5 * (ixx + izz);
-  const double radius = std::hypot(0.5 * (ixx - izz), ixz);
-  section.area = area;
-  section.centroid = o + Eigen::Vector2d(cx, cz);
+  const CentroidalMoments m = centroidal_moments(convex_hull(std::move(points)));
+  if (!(m.area > 0.0)) return section;
+  const double mean = 0.5 * (m.ixx + m.izz);
+  const double radius = std::hypot(0.5 * (m.ixx - m.izz), m.ixz);
+  section.area = m.area;
+  section.centroid = m.centroid;
   section.second_moment_min = mean - radius;
   section.second_moment_max = mean + radius;
   return section;

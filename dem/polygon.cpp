@@ -120,6 +120,61 @@ AreaMoments area_moments(const Polygon& p) {
   return {s * a, s * sxx, s * szz, s * sxz};
 }
 
+CentroidalMoments centroidal_moments(const Polygon& hull) {
+  CentroidalMoments m;
+  if (hull.size() < 3) return m;
+  // area moments about the first vertex (small numbers), then about the centroid
+  const Eigen::Vector2d o = hull[0];
+  double a2 = 0.0, sx = 0.0, sz = 0.0, sxx = 0.0, szz = 0.0, sxz = 0.0;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Eigen::Vector2d p = hull[i] - o;
+    const Eigen::Vector2d q = hull[(i + 1) % hull.size()] - o;
+    const double c = p.x() * q.y() - q.x() * p.y();
+    a2 += c;
+    sx += (p.x() + q.x()) * c;
+    sz += (p.y() + q.y()) * c;
+    sxx += (p.x() * p.x() + p.x() * q.x() + q.x() * q.x()) * c;
+    szz += (p.y() * p.y() + p.y() * q.y() + q.y() * q.y()) * c;
+    sxz += (p.x() * q.y() + 2.0 * p.x() * p.y() + 2.0 * q.x() * q.y() + q.x() * p.y()) * c;
+  }
+  if (a2 < 0.0) {  // the other vertex order: every sum changes sign (exactly)
+    a2 = -a2, sx = -sx, sz = -sz, sxx = -sxx, szz = -szz, sxz = -sxz;
+  }
+  const double area = 0.5 * a2;
+  if (!(area > 0.0)) return m;
+  const double cx = sx / (6.0 * area);
+  const double cz = sz / (6.0 * area);
+  m.area = area;
+  m.centroid = o + Eigen::Vector2d(cx, cz);
+  // parallel-axis theorem
+  m.ixx = sxx / 12.0 - area * cx * cx;
+  m.izz = szz / 12.0 - area * cz * cz;
+  m.ixz = sxz / 24.0 - area * cx * cz;
+  return m;
+}
+
+Polygon convex_hull(std::vector<Eigen::Vector2d> points) {
+  if (points.size() < 3) return {};
+  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  auto turn = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+  };
+  Polygon hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && turn(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && turn(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
 Eigen::Vector2d centroid(const Polygon& polygon) {
   const size_t n = polygon.size();
   assert(n > 0);

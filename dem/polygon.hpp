@@ -38,6 +38,23 @@ struct AreaMoments {
 };
 AreaMoments area_moments(const Polygon& polygon);
 
+/// Area, centroid and second moments about the centroid of a polygon (either vertex order),
+/// summed relative to its first vertex (small numbers, for polygons far from the origin).
+/// Zero area for fewer than three vertices.
+struct CentroidalMoments {
+  double area = 0;                                     // m^2
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();  // m
+  double ixx = 0;  // m^4, integral of x'^2 dA about the centroid
+  double izz = 0;  // m^4, integral of z'^2 dA
+  double ixz = 0;  // m^4, integral of x' z' dA
+};
+CentroidalMoments centroidal_moments(const Polygon& polygon);
+
+/// The convex hull of `points` (Andrew's monotone chain), its vertices turning from +x towards
+/// +z: clockwise seen from above, signed_area < 0. Fewer than three vertices when the points
+/// do not span an area.
+Polygon convex_hull(std::vector<Eigen::Vector2d> points);
+
 /// Area centroid (x, z) in m. For a polygon of zero area the vertex mean is
 /// returned (it has no area centroid).
 Eigen::Vector2d centroid(const Polygon& polygon);

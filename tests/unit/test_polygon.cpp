@@ -211,5 +211,32 @@ TEST(Overlap, PolygonOrientationDoesNotMatter) {
   EXPECT_TRUE(expected);
 }
 
+TEST(Polygon, ConvexHullDropsInnerAndCollinearPoints) {
+  // a 2 x 1 rectangle's corners, an inner point and a point on an edge, shuffled
+  const Polygon hull = convex_hull({{2, 1}, {1, 0.5}, {0, 0}, {1, 0}, {0, 1}, {2, 0}});
+  ASSERT_EQ(hull.size(), 4u);
+  EXPECT_LT(signed_area(hull), 0.0);  // from +x towards +z: clockwise seen from above
+  EXPECT_DOUBLE_EQ(area(hull), 2.0);
+  EXPECT_TRUE(convex_hull({{0, 0}, {1, 1}}).size() < 3u);  // no area
+}
+
+TEST(Polygon, CentroidalMomentsOfARectangleFarFromTheOriginAreItsOwn) {
+  // a 0.6 x 0.3 rectangle 1 km away: b h^3 / 12 about its centroid, not swamped by the offset
+  const double b = 0.6, h = 0.3, x0 = 1000.0, z0 = -500.0;
+  const CentroidalMoments m =
+      centroidal_moments({{x0, z0}, {x0 + b, z0}, {x0 + b, z0 + h}, {x0, z0 + h}});
+  EXPECT_NEAR(m.area, b * h, 1e-12);
+  EXPECT_NEAR(m.centroid.x(), x0 + b / 2, 1e-9);
+  EXPECT_NEAR(m.centroid.y(), z0 + h / 2, 1e-9);
+  // 1e-9 relative: the sums are taken about the first vertex, so only round-off of O(1) numbers
+  EXPECT_NEAR(m.ixx, h * b * b * b / 12, 1e-9 * h * b * b * b / 12);
+  EXPECT_NEAR(m.izz, b * h * h * h / 12, 1e-9 * b * h * h * h / 12);
+  EXPECT_NEAR(m.ixz, 0.0, 1e-12);
+  // the other vertex order gives the same
+  const CentroidalMoments r = centroidal_moments({{x0, z0 + h}, {x0 + b, z0 + h}, {x0 + b, z0}, {x0, z0}});
+  EXPECT_NEAR(r.area, m.area, 1e-12);
+  EXPECT_NEAR(r.ixx, m.ixx, 1e-9 * m.ixx);
+}
+
 }  // namespace
 }  // namespace icedem
