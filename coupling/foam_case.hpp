@@ -44,8 +44,8 @@ GridAxes foam_grid_axes(const FoamCaseSpec& spec);
 std::string foam_template_dir();
 
 /// Copies the template into case_dir (created if needed), fills in every @TOKEN@
-/// of its *.in files, and writes the STL, the probe list and case.json (the
-/// inputs and their hash). Throws std::runtime_error naming the file on failure.
+/// of its *.in files, and writes the STL, the probe list, case.inputs (the inputs, one per
+/// line) and case.hash (their hash; coupling/foam_partner.py reads both). Throws std::runtime_error naming the file on failure.
 void write_foam_case(const FoamCaseSpec& spec, const std::string& template_dir, const std::string& case_dir);
 
 }  // namespace icedem
