@@ -21,19 +21,20 @@ constexpr hsize_t kSeriesChunkRows = 1024;
 // target chunk size of the snapshot arrays, bytes (HDF5 advice: 10 KiB to 1 MiB)
 constexpr std::size_t kSnapshotChunkBytes = std::size_t(256) << 10;
 
+// the HDF5 types of an i4 or f8 element: in the file (little-endian), and in memory
+const H5::PredType& file_type(Element e) { return e == Element::i4 ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE; }
+const H5::PredType& memory_type(Element e) { return e == Element::i4 ? H5::PredType::NATIVE_INT : H5::PredType::NATIVE_DOUBLE; }
+
 // fracture events: the in-memory layout is FractureEvent itself, the file layout is packed;
 // both are built from the schema's one list of fields
-const H5::PredType& event_mem_type(Element e) { return e == Element::i4 ? H5::PredType::NATIVE_INT : H5::PredType::NATIVE_DOUBLE; }
-const H5::PredType& event_file_type(Element e) { return e == Element::i4 ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE; }
-
 H5::CompType fracture_file_type() {
   std::size_t size = 0;
-  for (const EventField& f : event_fields()) size += event_file_type(f.element).getSize();
+  for (const EventField& f : event_fields()) size += file_type(f.element).getSize();
   H5::CompType type(size);
   std::size_t offset = 0;
   for (const EventField& f : event_fields()) {
-    type.insertMember(f.name, offset, event_file_type(f.element));
-    offset += event_file_type(f.element).getSize();
+    type.insertMember(f.name, offset, file_type(f.element));
+    offset += file_type(f.element).getSize();
   }
   return type;
 }
@@ -43,11 +44,6 @@ std::string event_units() {
   std::string out;
   for (const EventField& f : event_fields()) out += fmt::format("{}{}: {}", out.empty() ? "" : ", ", f.name, f.unit);
   return out;
-}
-
-// the file type of a per-step series' element
-const H5::PredType& series_file_type(Element e) {
-  return e == Element::i4 ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE;
 }
 
 // the group and the name of a dataset path: "/load/force" -> "/load", "force"
@@ -94,7 +90,7 @@ std::string utc_now_iso8601() {
 
 H5::CompType fracture_event_mem_type() {
   H5::CompType type(sizeof(FractureEvent));
-  for (const EventField& f : event_fields()) type.insertMember(f.name, f.offset, event_mem_type(f.element));
+  for (const EventField& f : event_fields()) type.insertMember(f.name, f.offset, memory_type(f.element));
   return type;
 }
 
@@ -120,7 +116,7 @@ OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const 
   for (std::size_t c = 0; c < d.series.size(); ++c) {
     const SeriesColumn& col = series_columns()[c];
     const std::vector<hsize_t> row_shape = col.width == 1 ? std::vector<hsize_t>{} : std::vector<hsize_t>{hsize_t(col.width)};
-    d.series[c] = create_series(parent_group(file, col.path), split_path(col.path).second, series_file_type(col.element),
+    d.series[c] = create_series(parent_group(file, col.path), split_path(col.path).second, file_type(col.element),
                               row_shape, kSeriesChunkRows, col.unit, col.description);
   }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -188,6 +189,16 @@ struct Scene {
   StatsSettings stats;
   ValidationSettings validation;
 };
+
+/// Time steps of a run (each of scene.time.dt).
+inline long step_count(const Scene& s) { return std::lround(s.time.duration / s.time.dt); }
+
+/// Whether generated (square, ice.floe_size) floes are made of breakable elements:
+/// fracture.mode "on", or "auto" with floes at least the characteristic length.
+inline bool generated_floes_breakable(const Scene& s) {
+  return s.fracture.mode == FractureMode::kOn ||
+         (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
+}
 
 /// PGS sweeps the element joints get per step: Bullet solves a constraint
 /// max(its override, solver.iterations) times (fracture.joint_iterations).

@@ -30,6 +30,9 @@ int integer(const Scenario& sc, const std::string& path) {
 }
 
 
+// a count of elements that is a whole number (up to the decimals a scenario is written in)
+bool whole(double n) { return std::abs(n - std::round(n)) <= 1e-6; }
+
 // The value of a choice key as its Scene type. `names` maps every name the key table allows,
 // and no other, to its value: a name added to the table but not here (or the reverse) is a
 // programming error, thrown by the first scene built, never a silent default.
@@ -70,9 +73,7 @@ void check_limits(const Scenario& sc, const Scene& s) {
                                     s.time.duration, s.time.substeps, steps, kMaxSteps));
   if (s.layout.file.empty() && s.validation.kind == ValidationKind::kNone) {
     const double floes = s.ice.concentration * s.channel.length * s.channel.width / (s.ice.floe_size * s.ice.floe_size);
-    const bool breakable = s.fracture.mode == FractureMode::kOn ||
-                           (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
-    const double per_floe = breakable ? std::pow(s.ice.floe_size / s.fracture.element_size, 2) : 1.0;
+    const double per_floe = generated_floes_breakable(s) ? std::pow(s.ice.floe_size / s.fracture.element_size, 2) : 1.0;
     if (floes > kMaxBodies)
       fail_key(sc, blamed(sc, {"ice.floe_size", "channel.length", "channel.width", "ice.concentration"}), fmt::format("{:.3g} floes of this size fill the channel, more than {:.0e}; use larger "
                                             "floes or a smaller channel", floes, kMaxBodies));
@@ -235,12 +236,9 @@ Scene make_scene(const Scenario& sc) {
   s.validation.load_rate = real(sc, "validation.load_rate");
   s.validation.tip_speed = real(sc, "validation.tip_speed");
 
-  const bool breakable = s.fracture.mode == FractureMode::kOn ||
-                         (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
-  if (breakable && s.layout.file.empty() && s.validation.kind == ValidationKind::kNone) {
+  if (generated_floes_breakable(s) && s.layout.file.empty() && s.validation.kind == ValidationKind::kNone) {
     // generated square floes must be a whole number of elements across
-    const double n = s.ice.floe_size / s.fracture.element_size;
-    if (std::abs(n - std::round(n)) > 1e-6)
+    if (const double n = s.ice.floe_size / s.fracture.element_size; !whole(n))
       fail_key(sc, "fracture.element_size",
                fmt::format("ice.floe_size = {} m is not a whole number of elements ({:.3f}); choose an element size "
                            "that divides the floe size", s.ice.floe_size, n));
@@ -275,8 +273,7 @@ Scene make_scene(const Scenario& sc) {
     fail_key(sc, "fracture.mode", fmt::format("the {} case needs ice elements: set fracture.mode = \"on\"",
                                               get<std::string>(sc, "validation.case")));
   if (s.validation.kind == ValidationKind::kPlateDeflection) {
-    const double n = s.validation.plate_size / s.fracture.element_size;
-    if (std::abs(n - std::round(n)) > 1e-6)
+    if (const double n = s.validation.plate_size / s.fracture.element_size; !whole(n))
       fail_key(sc, "validation.plate_size", fmt::format("is not a whole number of elements of fracture.element_size = {} m "
                                                         "({:.3f})", s.fracture.element_size, n));
   }

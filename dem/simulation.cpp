@@ -204,7 +204,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   recorder.set_attribute("/fracture/events", "mechanism_names", code_names(kBreakMechanisms, break_mechanism_name));
   recorder.set_attribute("/layout", "source", scene.layout.file.empty() ? "generated" : scene.layout.file);
 
-  const long total_steps = std::lround(scene.time.duration / scene.time.dt);
+  const long total_steps = step_count(scene);
   const long snapshot_every =
       scene.output.snapshot_interval > 0 ? std::max(1L, std::lround(scene.output.snapshot_interval / scene.time.dt)) : 0;
   if (snapshot_every) recorder.append_snapshot(0.0, body_poses(*state.world));

@@ -44,7 +44,7 @@ ValidationResult run_validation_case(const Scene& scene) {
   State state = initial_state(scene, scene_layout(scene).floes);
   const std::unique_ptr<ValidationCase> validation = make_validation_case(scene, state);
   if (!validation) return {};
-  const long steps = std::lround(scene.time.duration / scene.time.dt);
+  const long steps = step_count(scene);
   while (state.step < steps) advance(scene, state, validation.get());
   return validation->result(scene);
 }
