@@ -34,7 +34,7 @@ def summarise(path):
     out["max_angular_speed"] = float(np.max(w)) if len(w) else float("nan")
     # by mode, every mode the file names (spaces and hyphens as "_")
     for name in run.modes.values():
-        out[name.replace(" ", "_").replace("-", "_")] = int(np.sum(events["mode_name"] == name)) if len(events) else 0
+        out[results.mode_key(name)] = int(np.sum(events["mode_name"] == name)) if len(events) else 0
     if len(events) == 0:
         out.update(within_1m=0, median_distance_m=float("nan"), max_distance_m=float("nan"))
         return out

@@ -26,6 +26,7 @@ import numpy as np
 from scipy import signal, stats
 
 from . import results
+from .results import mode_key
 
 SEGMENT_S = 60.0
 # The load spectrum of a pack is red: its largest power sits at the lowest bin,
@@ -98,11 +99,6 @@ def gumbel_fit(maxima):
     return float(np.mean(x)) - EULER_GAMMA * beta, beta
 
 
-def mode_key(name):
-    """icedem names failure modes like "in-plane bending"; the table's columns use in_plane_bending."""
-    return name.replace("-", "_").replace(" ", "_")
-
-
 # A record keeps the spectrum up to this frequency: the peaks of interest (floe
 # passages at 0.1-0.3 Hz) lie far below it, and the record stays a few kB.
 RECORD_MAX_HZ = 2.0
@@ -123,26 +119,22 @@ def make_record(run_dir):
     with open(os.path.join(run_dir, "summary.json")) as f:
         summary = json.load(f)
     freq, power, events = [], [], []
-    with h5py.File(os.path.join(run_dir, "run.h5"), "r") as h:
-        start, end = summary.get("window_start_s"), summary.get("window_end_s")
-        if start is not None and end is not None:
-            t = h["/load/time"][:]
-            x = h["/load/surge"][:]
-            sel = (t >= start) & (t <= end)
-            f, p = welch_spectrum(t[sel], x[sel])
-            keep = f <= RECORD_MAX_HZ
-            freq, power = f[keep].tolist(), [float(f"{v:.6g}") for v in p[keep]]
-        if "/fracture/events" in h:
-            ev = h["/fracture/events"]
-            modes = results.code_names(ev.attrs.get("mode_names"))
-            mechanisms = results.code_names(ev.attrs.get("mechanism_names"))
-            for row in ev[:]:
-                e = {k: (int(row[k]) if np.issubdtype(row.dtype[k], np.integer) else float(f"{row[k]:.9g}"))
-                     for k in row.dtype.names}
-                e["mode_name"] = modes.get(e["mode"], "")
-                if "mechanism" in e:
-                    e["mechanism_name"] = mechanisms.get(e["mechanism"], "")
-                events.append(e)
+    run = results.load_run(os.path.join(run_dir, "run.h5"))
+    start, end = summary.get("window_start_s"), summary.get("window_end_s")
+    if start is not None and end is not None:
+        t, x = run["/load/time"], run["/load/surge"]
+        sel = (t >= start) & (t <= end)
+        f, p = welch_spectrum(t[sel], x[sel])
+        keep = f <= RECORD_MAX_HZ
+        freq, power = f[keep].tolist(), [float(f"{v:.6g}") for v in p[keep]]
+    ev = run.events
+    fields = [k for k in (ev.dtype.names or ()) if k not in ("mode_name", "mechanism_name")]
+    for row in ev:
+        e = {k: (int(row[k]) if np.issubdtype(ev.dtype[k], np.integer) else float(f"{row[k]:.9g}")) for k in fields}
+        e["mode_name"] = str(row["mode_name"])
+        if "mechanism" in e:
+            e["mechanism_name"] = str(row["mechanism_name"])
+        events.append(e)
     return {"summary": summary, "spectrum": {"frequency_hz": freq, "power_N2_per_hz": power},
             "fracture_events": events}
 

@@ -14,6 +14,7 @@ import shlex
 import subprocess
 from dataclasses import dataclass
 
+from .runner import RUN_FILES, run_args
 from .spec import ROOT
 
 DEFAULT_ICEDEM = os.path.join(ROOT, "build", "dem", "icedem")
@@ -29,11 +30,9 @@ class Status:
 def command(run, out_dir, icedem):
     """The shell command that runs `run` in its directory and records its exit code."""
     d = os.path.join(out_dir, run.path)
-    args = [icedem, "run", run.scenario_file, "-q", "-o", "run.h5", "--summary-json", "summary.json"]
-    for s in run.sets:
-        args += ["--set", s]
-    return (f"mkdir -p {shlex.quote(d)} && cd {shlex.quote(d)} && rm -f exit_code summary.json && "
-            f"{shlex.join(args)} > log.txt 2>&1; code=$?; echo $code > exit_code; exit $code")
+    args = run_args(icedem, run.scenario_file, RUN_FILES["h5"], RUN_FILES["summary"], run.sets)
+    return (f"mkdir -p {shlex.quote(d)} && cd {shlex.quote(d)} && rm -f exit_code {RUN_FILES['summary']} && "
+            f"{shlex.join(args)} > {RUN_FILES['log']} 2>&1; code=$?; echo $code > exit_code; exit $code")
 
 
 def finished_here(run, out_dir):

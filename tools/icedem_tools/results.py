@@ -39,6 +39,12 @@ def code_names(attribute):
     return out
 
 
+def mode_key(name):
+    """icedem names failure modes and mechanisms like "in-plane bending"; tables and keys use
+    in_plane_bending."""
+    return name.replace("-", "_").replace(" ", "_")
+
+
 def _text(value):
     return value.decode() if isinstance(value, bytes) else value
 

@@ -46,6 +46,12 @@ def sets_args(sets):
 RUN_FILES = {"h5": "run.h5", "summary": "summary.json", "log": "log.txt"}
 
 
+def run_args(icedem, scenario, h5, summary, sets=()):
+    """The argv of `icedem run SCENARIO -q -o H5 --summary-json SUMMARY --set ...`: every tool
+    (this runner, a sweep's job list) runs icedem with it."""
+    return [icedem, "run", scenario, "-q", "-o", h5, "--summary-json", summary] + sets_args(sets)
+
+
 def execute(scenario, directory, sets=(), icedem=DEFAULT_ICEDEM, env=None, args=()):
     """Runs `icedem run scenario -q -o DIR/run.h5 --summary-json DIR/summary.json --set ...` (and
     `args`) in `directory`, its output in DIR/log.txt; never raises for a failed run."""
@@ -53,7 +59,7 @@ def execute(scenario, directory, sets=(), icedem=DEFAULT_ICEDEM, env=None, args=
     h5, summary = (os.path.join(directory, RUN_FILES[k]) for k in ("h5", "summary"))
     if os.path.exists(summary):
         os.remove(summary)  # a summary left from an earlier run must not pass for this one's
-    cmd = [icedem, "run", scenario, "-q", "-o", h5, "--summary-json", summary] + sets_args(sets) + list(args)
+    cmd = run_args(icedem, scenario, h5, summary, sets) + list(args)
     log_path = os.path.join(directory, RUN_FILES["log"])
     start = time.monotonic()
     with open(log_path, "w") as log:
