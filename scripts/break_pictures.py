@@ -17,11 +17,8 @@ figures/break_<scenario>_fii<f>.png. Prints the pictures it wrote.
 """
 import argparse
 import os
-import subprocess
 import sys
-import tomllib
 
-import h5py
 import matplotlib
 import numpy as np
 
@@ -31,7 +28,7 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 from scipy.spatial import ConvexHull  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
-from icedem_tools import aggregate as agg, execute, spec  # noqa: E402
+from icedem_tools import aggregate as agg, execute, results, runner, spec  # noqa: E402
 from xdmf_snapshots import quat_to_matrix  # noqa: E402
 
 FII, FIS = "friction.ice_ice", "friction.ice_structure"
@@ -58,30 +55,20 @@ def pick(records, scenario, fii, mechanism):
 def repeat(run, event, out, icedem):
     """Run `run` again into OUT/pictures/... with snapshots up to just after the event; the HDF5 path."""
     d = os.path.join(out, "pictures", run.path)
-    os.makedirs(d, exist_ok=True)
-    h5 = os.path.join(d, "run.h5")
+    h5 = os.path.join(d, runner.RUN_FILES["h5"])
+    if results.status(h5) == "complete":  # a finished repeat is reused
+        return h5
     duration = SNAPSHOT_S * np.ceil((event["time"] + AFTER_S) / SNAPSHOT_S)
-    args = [icedem, "run", run.scenario_file, "-q", "-o", h5]
-    for s in run.sets + (f"output.snapshot_interval={SNAPSHOT_S}", f"time.duration={duration:.2f}"):
-        args += ["--set", s]
-    if not complete(h5):  # a finished repeat is reused
-        subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+    sets = run.sets + (f"output.snapshot_interval={SNAPSHOT_S}", f"time.duration={duration:.2f}")
+    r = runner.execute(run.scenario_file, d, sets, icedem=icedem)
+    if not r.ok:
+        sys.exit(f"break_pictures: the repeat of {run.path} failed: {r.error}")
     return h5
-
-
-def complete(h5):
-    try:
-        with h5py.File(h5, "r") as h:
-            return h["/meta"].attrs["status"] == "complete"
-    except (OSError, KeyError):
-        return False
 
 
 def body_points(h, k):
     """Every output body's prism corners in the tank frame at snapshot k: a list of (n, 3) arrays."""
-    off = h["/bodies/vertex_offset"][:]
-    verts = h["/bodies/vertices"][:]
-    thick = h["/bodies/thickness"][:]
+    off, verts, thick = h["/bodies/vertex_offset"], h["/bodies/vertices"], h["/bodies/thickness"]
     pos = h["/snapshots/position"][k]
     q = h["/snapshots/orientation"][k]
     out = []
@@ -108,17 +95,16 @@ def hull(points2d):
 
 
 def draw(h5, run, event, exact, mechanism, path):
-    with h5py.File(h5, "r") as h:
-        scenario = tomllib.loads(h["/meta"].attrs["scenario"])
-        st = h["/snapshots/time"][:]
-        k = max(int(np.searchsorted(st, event["time"], side="right")) - 1, 0)  # last snapshot before it
-        floe_id = h["/bodies/floe_id"][:]
-        bodies = body_points(h, k)
-        t = h["/load/time"][:]
-        axis = h["/structure/position"][min(int(np.searchsorted(t, st[k])), len(t) - 1)]
-        again = [e for e in h["/fracture/events"][:]
-                 if e["floe"] == event["floe"] and e["joint"] == event["joint"] and abs(e["time"] - event["time"]) < 1e-6]
-    profile = np.array(scenario["structure"]["profile"], dtype=float)  # (y, r) keel to deck
+    h = results.load_run(h5, snapshots=True)
+    st = h["/snapshots/time"]
+    k = max(int(np.searchsorted(st, event["time"], side="right")) - 1, 0)  # last snapshot before it
+    floe_id = h["/bodies/floe_id"]
+    bodies = body_points(h, k)
+    t = h["/load/time"]
+    axis = h["/structure/position"][min(int(np.searchsorted(t, st[k])), len(t) - 1)]
+    again = [e for e in h.events
+             if e["floe"] == event["floe"] and e["joint"] == event["joint"] and abs(e["time"] - event["time"]) < 1e-6]
+    profile = np.array(h.scenario["structure"]["profile"], dtype=float)  # (y, r) keel to deck
     zj = event["z"]
     broken = floe_id == event["floe"]
     fig, (side, top) = plt.subplots(2, 1, figsize=(9, 8.5), gridspec_kw={"height_ratios": [1, 1.4]})

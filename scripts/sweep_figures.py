@@ -31,7 +31,6 @@ import json
 import os
 import sys
 
-import h5py
 import matplotlib
 import numpy as np
 
@@ -40,7 +39,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
-from icedem_tools import aggregate as agg, execute, spec  # noqa: E402
+from icedem_tools import aggregate as agg, execute, results, runner, spec  # noqa: E402
+
+RUN_H5 = runner.RUN_FILES["h5"]
 
 FII, FIS = "friction.ice_ice", "friction.ice_structure"
 
@@ -103,8 +104,8 @@ def history(runs, out, scenario, path):
             summary = json.load(f)
         t0 = summary.get("first_contact_s") or 0.0
         t0 = t0 if t0 > 0 else 0.0  # -1: no contact
-        with h5py.File(os.path.join(out, r.path, "run.h5"), "r") as h:
-            ax.plot(h["/load/time"][:] - t0, h["/load/surge"][:], lw=0.6)
+        h = results.load_run(os.path.join(out, r.path, RUN_H5))
+        ax.plot(h["/load/time"] - t0, h["/load/surge"], lw=0.6)
         if summary.get("window_start_s") is not None:
             ax.axvspan(summary["window_start_s"] - t0, summary["window_end_s"] - t0, color="0.93", zorder=0)
         ax.set_ylabel("surge N")
@@ -123,15 +124,9 @@ def yaw_of(q):
     return np.arctan2(2 * (w * y + x * z), 1 - 2 * (y * y + x * x))
 
 
-def scenario_of(h5):
-    """The resolved scenario of a run, from /meta."""
-    import tomllib
-    return tomllib.loads(h5["/meta"].attrs["scenario"])
-
-
-def waterline_radius(h5):
+def waterline_radius(run):
     """The structure's radius at the waterline, from the resolved scenario in /meta."""
-    profile = scenario_of(h5)["structure"]["profile"]
+    profile = run.scenario["structure"]["profile"]
     ys = [p[0] for p in profile]
     rs = [p[1] for p in profile]
     return float(np.interp(0.0, ys, rs))
@@ -141,41 +136,37 @@ def topview(runs, out, scenario, path):
     r = reference_run(runs, out, scenario)
     if r is None:
         return False
-    with h5py.File(os.path.join(out, r.path, "run.h5"), "r") as h:
-        if "/snapshots/time" not in h or len(h["/snapshots/time"]) == 0:
-            return False
-        st = h["/snapshots/time"][:]
-        off = h["/bodies/vertex_offset"][:]
-        verts = h["/bodies/vertices"][:]
-        t = h["/load/time"][:]
-        spos = h["/structure/position"][:]
-        radius = waterline_radius(h)
-        surge = h["/load/surge"][:]
-        # start, the snapshot nearest the largest load (the paper's Fig. 14 shows the pack
-        # when the load peaks), end
-        t_max = t[int(np.argmax(surge))]
-        picks = [0, int(np.argmin(np.abs(st - t_max))), len(st) - 1]
-        fig, axes = plt.subplots(3, 1, figsize=(11, 8), sharex=True)
-        for ax, k in zip(axes, picks):
-            pos = h["/snapshots/position"][k]
-            yaw = yaw_of(h["/snapshots/orientation"][k])
-            polys = []
-            for b in range(len(off) - 1):
-                v = verts[off[b]:off[b + 1]]
-                c, s = np.cos(yaw[b]), np.sin(yaw[b])
-                # body frame (x, z) -> tank (x, z): rotation by yaw about +y
-                x = pos[b, 0] + c * v[:, 0] + s * v[:, 1]
-                z = pos[b, 2] - s * v[:, 0] + c * v[:, 1]
-                polys.append(np.column_stack([x, z]))
-            ax.add_collection(PolyCollection(polys, facecolor="0.85", edgecolor="0.3", lw=0.3))
-            i = min(np.searchsorted(t, st[k]), len(t) - 1)
-            ax.add_patch(plt.Circle((spos[i, 0], spos[i, 2]), radius, color="tab:red", alpha=0.6))
-            ax.set_aspect("equal")
-            ax.set_ylabel("z, m")
-            ax.set_title(f"{scenario}, t = {st[k]:.0f} s, surge load {int(round(surge[i]))} N"
-                         + (f" (largest {surge.max():.0f} N at {t_max:.0f} s)" if k == picks[1] else ""), fontsize=9)
-            ax.autoscale_view()
-        axes[-1].set_xlabel("x, m (towing direction)")
+    h = results.load_run(os.path.join(out, r.path, RUN_H5), snapshots=True)
+    if h.snapshot_count == 0:
+        return False
+    st, off, verts = h["/snapshots/time"], h["/bodies/vertex_offset"], h["/bodies/vertices"]
+    t, spos, surge = h["/load/time"], h["/structure/position"], h["/load/surge"]
+    radius = waterline_radius(h)
+    # start, the snapshot nearest the largest load (the paper's Fig. 14 shows the pack
+    # when the load peaks), end
+    t_max = t[int(np.argmax(surge))]
+    picks = [0, int(np.argmin(np.abs(st - t_max))), len(st) - 1]
+    fig, axes = plt.subplots(3, 1, figsize=(11, 8), sharex=True)
+    for ax, k in zip(axes, picks):
+        pos = h["/snapshots/position"][k]
+        yaw = yaw_of(h["/snapshots/orientation"][k])
+        polys = []
+        for b in range(len(off) - 1):
+            v = verts[off[b]:off[b + 1]]
+            c, s = np.cos(yaw[b]), np.sin(yaw[b])
+            # body frame (x, z) -> tank (x, z): rotation by yaw about +y
+            x = pos[b, 0] + c * v[:, 0] + s * v[:, 1]
+            z = pos[b, 2] - s * v[:, 0] + c * v[:, 1]
+            polys.append(np.column_stack([x, z]))
+        ax.add_collection(PolyCollection(polys, facecolor="0.85", edgecolor="0.3", lw=0.3))
+        i = min(np.searchsorted(t, st[k]), len(t) - 1)
+        ax.add_patch(plt.Circle((spos[i, 0], spos[i, 2]), radius, color="tab:red", alpha=0.6))
+        ax.set_aspect("equal")
+        ax.set_ylabel("z, m")
+        ax.set_title(f"{scenario}, t = {st[k]:.0f} s, surge load {int(round(surge[i]))} N"
+                     + (f" (largest {surge.max():.0f} N at {t_max:.0f} s)" if k == picks[1] else ""), fontsize=9)
+        ax.autoscale_view()
+    axes[-1].set_xlabel("x, m (towing direction)")
     save(fig, path)
     return True
 
@@ -184,14 +175,11 @@ def front_view(runs, out, scenario, path):
     r = reference_run(runs, out, scenario)
     if r is None:
         return False
-    with h5py.File(os.path.join(out, r.path, "run.h5"), "r") as h:
-        if "/snapshots/time" not in h or len(h["/snapshots/time"]) < 2:
-            return False
-        st = h["/snapshots/time"][:]
-        pos = h["/snapshots/position"][:]
-        t = h["/load/time"][:]
-        spos = h["/structure/position"][:]
-        radius = waterline_radius(h)
+    h = results.load_run(os.path.join(out, r.path, RUN_H5), snapshots=True)
+    if h.snapshot_count < 2:
+        return False
+    st, pos, t, spos = h["/snapshots/time"], h["/snapshots/position"], h["/load/time"], h["/structure/position"]
+    radius = waterline_radius(h)
     axis = spos[np.clip(np.searchsorted(t, st), 0, len(t) - 1)]
     dx = pos[:, :, 0] - axis[:, None, 0]
     near = np.abs(dx) < 1.0
@@ -211,25 +199,23 @@ def front_view(runs, out, scenario, path):
 
 def spectrum(runs, out, rows, scenario, path):
     """Ensemble spectra of results.h5 at f_ii = 0.5 (or the scenario's), one line per f_is."""
-    from icedem_tools import aggregate as agg
     idx = [i for i, r in enumerate(rows) if r["scenario"] == scenario and float(r.get(FII) or 0.5) == 0.5]
     ref = reference_run(runs, out, scenario)
     if not idx or ref is None or not os.path.isfile(os.path.join(out, "results.h5")):
         return False
-    with h5py.File(os.path.join(out, ref.path, "run.h5"), "r") as h:
-        sc = scenario_of(h)
+    sc = results.load_run(os.path.join(out, ref.path, RUN_H5)).scenario
     passage_hz = sc["structure"]["speed"] / sc["ice"]["floe_size"]
     fig, ax = plt.subplots(figsize=(8, 4))
     drawn = False
-    with h5py.File(os.path.join(out, "results.h5"), "r") as h:
-        for i in idx:
-            if f"spectra/{i}" not in h:
-                continue
-            f, p = h[f"spectra/{i}/frequency"][:], h[f"spectra/{i}/power"][:]
-            k = f > 0
-            ax.semilogy(f[k], p[k], lw=1.0, label=f"f_is = {rows[i].get(FIS) or '-'} ({rows[i]['seeds']} seeds), "
-                        f"peak {float(rows[i]['spectral_peak_period_s']):.2f} s")
-            drawn = True
+    spectra = agg.read_spectra(os.path.join(out, "results.h5"))
+    for i in idx:
+        if i not in spectra:
+            continue
+        f, p = spectra[i]
+        k = f > 0
+        ax.semilogy(f[k], p[k], lw=1.0, label=f"f_is = {rows[i].get(FIS) or '-'} ({rows[i]['seeds']} seeds), "
+                    f"peak {float(rows[i]['spectral_peak_period_s']):.2f} s")
+        drawn = True
     if not drawn:
         plt.close(fig)
         return False
@@ -307,10 +293,8 @@ def main():
                 written.append(p)
         ref = reference_run(runs, out, scenario)
         if ref is not None:
-            run_h5 = os.path.join(out, ref.path, "run.h5")
-            with h5py.File(run_h5, "r") as h:
-                has_snapshots = "/snapshots/time" in h and len(h["/snapshots/time"]) > 0
-            if has_snapshots:
+            run_h5 = os.path.join(out, ref.path, RUN_H5)
+            if results.load_run(run_h5).snapshot_count > 0:
                 import xdmf_snapshots
                 xdmf_snapshots.main(run_h5)
     for p in written:

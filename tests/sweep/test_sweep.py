@@ -84,6 +84,41 @@ class Expansion(unittest.TestCase):
         """))
         self.assertEqual([r.path for r in runs], [os.path.join("a", "base", "seed4"), os.path.join("a", "base", "seed9")])
 
+    def test_variants_cross_scenarios_and_a_scenario_adds_its_own(self):
+        # the ladder's and the convergence study's shape: named settings of several keys each
+        _, runs = spec.load(sweep_file("""
+            seeds = 2
+            [[scenario]]
+            name = "rigid"
+            file = "scenarios/examples/short_tow.toml"
+            [scenario.variants]
+            "substeps 2" = ["time.substeps=2"]
+            [[scenario]]
+            name = "other"
+            file = "scenarios/examples/short_tow.toml"
+            [variants]
+            "base" = []
+            "tol 0.1, cap 40" = ["solver.tolerance=0.1", "solver.iterations=40"]
+        """), seeds=1, extra=["time.duration=5"])
+        self.assertEqual(sorted((r.scenario, r.variant) for r in runs),
+                         [("other", "base"), ("other", "tol 0.1, cap 40"),
+                          ("rigid", "base"), ("rigid", "substeps 2"), ("rigid", "tol 0.1, cap 40")])
+        tol = next(r for r in runs if r.scenario == "rigid" and r.variant.startswith("tol"))
+        # the variant's directory is its name made safe; extra sets come after the file's, then the seed
+        self.assertEqual(tol.path, os.path.join("rigid", "tol_0.1__cap_40", "base", "seed1"))
+        self.assertEqual(tol.sets, ("solver.tolerance=0.1", "solver.iterations=40", "time.duration=5", "seed=1"))
+        self.assertEqual(tol.labels, (("variant", "tol 0.1, cap 40"),))
+        # a name used twice, or two names one directory, is an error naming the key
+        for text, needle in {'[variants]\n"a" = []\n[[scenario]]\nname="s"\nfile="scenarios/examples/short_tow.toml"\n'
+                             '[scenario.variants]\n"a" = ["time.dt=0.01"]': "scenario[0].variants",
+                             '[variants]\n"a b" = []\n"a_b" = []\n[[scenario]]\nname="s"\n'
+                             'file="scenarios/examples/short_tow.toml"': "distinct as directory names",
+                             '[variants]\n"a" = "time.dt=0.01"\n[[scenario]]\nname="s"\n'
+                             'file="scenarios/examples/short_tow.toml"': "variants.a"}.items():
+            with self.assertRaises(spec.SweepError, msg=text) as cm:
+                spec.load(sweep_file(text))
+            self.assertIn(needle, str(cm.exception))
+
     def test_bad_files_name_the_key(self):
         cases = {
             'seeds = 0\n[[scenario]]\nname="a"\nfile="scenarios/examples/short_tow.toml"': "'seeds'",

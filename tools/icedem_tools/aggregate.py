@@ -182,14 +182,14 @@ def _finite(values):
 
 
 def aggregate(groups):
-    """groups: {config: (scenario, grid tuple, [run records])} -> (list of row dicts, list of
-    ensemble spectra (f, p), one per row)."""
+    """groups: {config: (scenario, labels: the variant and grid values as ((key, value), ...),
+    [run records])} -> (list of row dicts, list of ensemble spectra (f, p), one per row)."""
     rows, spectra = [], []
     everything = [r for _, _, records in groups.values() for r in records]
     modes, mechanisms = break_names(everything, "breaks_by_mode"), break_names(everything, "breaks_by_mechanism")
-    for config, (scenario, grid, records) in groups.items():
+    for config, (scenario, labels, records) in groups.items():
         row = {"configuration": config, "scenario": scenario}
-        for k, v in grid:
+        for k, v in labels:
             row[k] = v
         row["seeds"] = len(records)
         for key in ("mean_fx_N", "max_fx_N"):
@@ -259,3 +259,9 @@ def write_hdf5(rows, path, spectra=()):
                 g.attrs["configuration"] = rows[i]["configuration"]
                 g.create_dataset("frequency", data=f).attrs["units"] = "Hz"
                 g.create_dataset("power", data=p).attrs["units"] = "N^2/Hz"
+
+
+def read_spectra(path):
+    """{row index: (frequency Hz, power N^2/Hz)} of a results.h5 that write_hdf5 wrote."""
+    with h5py.File(path, "r") as h:
+        return {int(i): (g["frequency"][:], g["power"][:]) for i, g in h.get("spectra", {}).items()}

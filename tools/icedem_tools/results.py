@@ -10,6 +10,7 @@ generates from its output schema. For a notebook:
 """
 import dataclasses
 import json
+import tomllib
 
 import h5py
 import numpy as np
@@ -66,16 +67,27 @@ class RunFile:
     def __contains__(self, path):
         return path in self.datasets
 
+    @property
+    def scenario(self):
+        """The resolved scenario the run was made from (every key with its value), as a dict."""
+        return tomllib.loads(self.meta.get("scenario", ""))
+
+    @property
+    def snapshot_count(self):
+        """How many snapshots the file holds."""
+        return len(self.datasets.get("/snapshots/time", ()))
+
 
 def load_run(path, snapshots=False):
-    """Every dataset of the run's HDF5 file as a Quantity (the snapshots only if `snapshots`:
-    they are the large part), its attributes, and its breaks with their names."""
+    """Every dataset of the run's HDF5 file as a Quantity (the snapshots' positions and
+    orientations only if `snapshots`: they are the large part; their times always), its
+    attributes, and its breaks with their names."""
     datasets = {}
     with h5py.File(path, "r") as f:
         def visit(name, obj):
             if not isinstance(obj, h5py.Dataset) or name == "fracture/events":
                 return
-            if name.startswith("snapshots/") and not snapshots:
+            if name.startswith("snapshots/") and name != "snapshots/time" and not snapshots:
                 return
             datasets["/" + name] = Quantity(obj[()], _text(obj.attrs.get("units", "")),
                                             _text(obj.attrs.get("description", "")))
@@ -94,6 +106,16 @@ def load_run(path, snapshots=False):
             if "mechanism" in rows.dtype.names and len(rows):
                 events["mechanism_name"] = [mechanisms.get(int(c), "") for c in rows["mechanism"]]
     return RunFile(path, attrs["/meta"], attrs["/stats"], attrs["/layout"], datasets, events, modes, mechanisms)
+
+
+def status(path):
+    """The run's /meta status ("complete", "running", "failed", ...), or None when the file is
+    missing or unreadable: cheap, it reads no dataset."""
+    try:
+        with h5py.File(path, "r") as f:
+            return _text(f["/meta"].attrs["status"])
+    except (OSError, KeyError):
+        return None
 
 
 def load_summary(path):

@@ -14,11 +14,25 @@
     "friction.ice_ice" = [0.3, 0.5, 0.7]
     "friction.ice_structure" = [0.1, 0.2, 0.3]
 
-Runs = scenarios x grid combinations x seeds. A configuration is a scenario
-with one grid combination; its seeds are its runs. Each run has a stable,
-readable directory: <scenario>/<key=value,...>/seed<N>, so a rerun finds
-what an earlier one finished whatever the order of the list. The list is
-seed-major (all configurations for the first seed, then the second, ...).
+    [variants]                      # named sets of overrides, for every scenario (optional)
+    "dt 0.01" = ["time.dt=0.01"]
+    "converged" = ["solver.tolerance=0.001", "solver.iterations=160"]
+
+    [study]                         # free data for the study script that reports on the
+    mean_tolerance = 0.05           # sweep (scripts/ladder, scripts/convergence); not read here
+
+A [[scenario]] may have variants of its own ([scenario.variants] after it), run
+besides the common ones; a sweep with variants runs only them (list "base" = []
+to run the scenario as it is too). Variants are for settings that change
+several keys together, where a grid would cross values that do not belong
+together: the rungs of a ladder, the candidate settings of a convergence study.
+
+Runs = scenarios x variants x grid combinations x seeds. A configuration is a
+scenario with one variant and one grid combination; its seeds are its runs.
+Each run has a stable, readable directory:
+<scenario>/[<variant>/]<key=value,...>/seed<N>, so a rerun finds what an
+earlier one finished whatever the order of the list. The list is seed-major
+(all configurations for the first seed, then the second, ...).
 
 A run's record (aggregate.py) is what the aggregation and the report
 read: its summary, its load spectrum and its breaks. With `records` set, each
@@ -44,14 +58,22 @@ class Run:
     scenario_file: str         # absolute path
     grid: tuple                # ((key, value), ...) of this configuration, in the sweep's key order
     seed: int
-    sets: tuple = field(default=())  # every --set, grid and seed included, in order
+    sets: tuple = field(default=())  # every --set, variant, grid and seed included, in order
     records: str = ""          # absolute directory of the sweep's kept records, "" if none
+    variant: str = ""          # the variant's name, "" in a sweep without variants
 
     @property
     def config(self):
         """Directory of the configuration (all seeds)."""
         label = ",".join(f"{k}={fmt(v)}" for k, v in self.grid) or "base"
+        if self.variant:
+            return os.path.join(self.scenario, slug(self.variant), label)
         return os.path.join(self.scenario, label)
+
+    @property
+    def labels(self):
+        """What tells this configuration from the sweep's others: the variant, then the grid."""
+        return ((("variant", self.variant),) if self.variant else ()) + self.grid
 
     @property
     def path(self):
@@ -62,6 +84,11 @@ class Run:
     def record_file(self):
         """The kept record of this run ("" when the sweep keeps none)."""
         return os.path.join(self.records, self.path + ".json") if self.records else ""
+
+
+def slug(text):
+    """A variant's name as a directory name: letters, digits, '.', '-' and '+'; the rest '_'."""
+    return "".join(c if c.isalnum() or c in ".-+" else "_" for c in text).strip("_")
 
 
 def fmt(value):
@@ -86,8 +113,20 @@ def _string_list(path, key, value):
     return list(value)
 
 
-def load(path):
-    """Parse a sweep file; returns (name, runs). Raises SweepError naming file and key."""
+def _variants(path, key, table):
+    if not isinstance(table, dict):
+        _fail(path, key, 'a table of name = ["key=value", ...]', table)
+    for name, sets in table.items():
+        if not slug(name):
+            _fail(path, f"{key}.{name}", "a name with a letter or digit")
+        _string_list(path, f"{key}.{name}", sets)
+    return {name: list(sets) for name, sets in table.items()}
+
+
+def load(path, seeds=None, extra=()):
+    """Parse a sweep file; returns (name, runs). Raises SweepError naming file and key.
+    `seeds` (a count) replaces the file's seeds; `extra` sets are added to every run's after
+    the file's own, so they win (a study run shorter, or with a physics variant)."""
     try:
         with open(path, "rb") as f:
             doc = tomllib.load(f)
@@ -95,7 +134,7 @@ def load(path):
         raise SweepError(f"{path}: no such sweep file")
     except tomllib.TOMLDecodeError as e:
         raise SweepError(f"{path}: {e}")
-    known = {"name", "seeds", "set", "scenario", "grid", "records"}
+    known = {"name", "seeds", "set", "scenario", "grid", "records", "variants", "study"}
     for key in doc:
         if key not in known:
             _fail(path, key, "one of " + ", ".join(sorted(known)) + " (unknown key)")
@@ -103,7 +142,7 @@ def load(path):
     if not isinstance(name, str) or not name:
         _fail(path, "name", "a non-empty string", name)
 
-    seeds = doc.get("seeds", [1])
+    seeds = doc.get("seeds", [1]) if seeds is None else seeds
     if isinstance(seeds, int) and not isinstance(seeds, bool):
         if seeds < 1:
             _fail(path, "seeds", "a count of at least 1 or a list of seeds", seeds)
@@ -114,6 +153,10 @@ def load(path):
     if len(set(seeds)) != len(seeds):
         _fail(path, "seeds", "distinct seeds", seeds)
     common = _string_list(path, "set", doc.get("set", []))
+    extra = _string_list(path, "extra sets", list(extra))
+    variants = _variants(path, "variants", doc.get("variants", {}))
+    if not isinstance(doc.get("study", {}), dict):
+        _fail(path, "study", "a table", doc.get("study"))
     records = doc.get("records", "")
     if not isinstance(records, str):
         _fail(path, "records", "a directory path relative to the repository", records)
@@ -130,8 +173,8 @@ def load(path):
         if not isinstance(sc, dict):
             _fail(path, where, "a table")
         for key in sc:
-            if key not in ("name", "file", "set"):
-                _fail(path, f"{where}.{key}", "one of name, file, set (unknown key)")
+            if key not in ("name", "file", "set", "variants"):
+                _fail(path, f"{where}.{key}", "one of name, file, set, variants (unknown key)")
         sc_name = sc.get("name")
         if not isinstance(sc_name, str) or not sc_name or "/" in sc_name:
             _fail(path, f"{where}.name", "a non-empty name without '/'", sc_name)
@@ -144,7 +187,16 @@ def load(path):
         full = file if os.path.isabs(file) else os.path.join(ROOT, file)
         if not os.path.isfile(full):
             _fail(path, f"{where}.file", "an existing scenario file", file)
-        parsed.append((sc_name, full, _string_list(path, f"{where}.set", sc.get("set", []))))
+        own = _variants(path, f"{where}.variants", sc.get("variants", {}))
+        clash = set(own) & set(variants)
+        if clash:
+            _fail(path, f"{where}.variants", "names other than the common variants'", sorted(clash))
+        sc_variants = {**variants, **own}
+        slugs = [slug(v) for v in sc_variants]
+        if len(set(slugs)) != len(slugs):
+            _fail(path, f"{where}.variants", "names that stay distinct as directory names", list(sc_variants))
+        parsed.append((sc_name, full, _string_list(path, f"{where}.set", sc.get("set", [])),
+                       sc_variants or {"": []}))
 
     grid = doc.get("grid", {})
     if not isinstance(grid, dict):
@@ -162,8 +214,10 @@ def load(path):
     combos = [tuple(zip(keys, c)) for c in itertools.product(*(grid[k] for k in keys))]
     runs = []
     for seed in seeds:
-        for sc_name, full, sc_sets in parsed:
-            for g in combos:
-                sets = tuple(common + sc_sets + [f"{k}={fmt(v)}" for k, v in g] + [f"seed={seed}"])
-                runs.append(Run(sc_name, full, g, seed, sets, records))
+        for sc_name, full, sc_sets, sc_variants in parsed:
+            for variant, v_sets in sc_variants.items():
+                for g in combos:
+                    sets = tuple(common + sc_sets + v_sets + [f"{k}={fmt(v)}" for k, v in g] + extra
+                                 + [f"seed={seed}"])
+                    runs.append(Run(sc_name, full, g, seed, sets, records, variant))
     return name, runs
