@@ -70,11 +70,12 @@ for v in "${variants[@]}"; do
   [ -n "$sets" ] && args+=(--set "$sets")
   log "bench: $name"
   "$bin" "${args[@]}" >/dev/null
-  row=$(/usr/bin/python3 - "$work/run.json" "$work/run.h5" "${base_wall:-0}" "$name" <<'PY'
-import json, sys, h5py
+  row=$(ICEDEM_ROOT="$ICEDEM_ROOT" /usr/bin/python3 - "$work/run.json" "$work/run.h5" "${base_wall:-0}" "$name" <<'PY'
+import json, os, sys
+sys.path.insert(0, os.path.join(os.environ["ICEDEM_ROOT"], "tools"))
+from icedem_tools import results
 s = json.load(open(sys.argv[1])); base = float(sys.argv[3])
-with h5py.File(sys.argv[2], "r") as f:
-    pts = f["/diagnostics/contact_points"][:].mean()
+pts = results.load_run(sys.argv[2])["/diagnostics/contact_points"].mean()
 ratio = s["wall_time_s"] / base if base > 0 else 1.0
 fmt = lambda v: "n/a" if v is None else f"{v:.2f}"
 print(f"| {sys.argv[4]} | {s['wall_time_s']:.1f} | {s['steps_per_second']:.0f} | {s['realtime_factor']:.1f} | "

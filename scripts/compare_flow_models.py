@@ -22,14 +22,13 @@ import subprocess
 import sys
 import tempfile
 import time
-import tomllib
 
-import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from icedem_tools import runner  # noqa: E402
+from icedem_tools.results import load_run  # noqa: E402
 
 
 def run(cmd, env=None):
@@ -85,8 +84,7 @@ def main():
         results[name] = {"summary": r.summary, "h5": r.h5, "flow": read_flow(fl), "wall": wall, "cpu": cpu}
         print(f"{name}: {wall:.1f} s wall, {cpu:.1f} s CPU", file=sys.stderr)
 
-    with h5py.File(results["analytic potential"]["h5"]) as f:
-        V = tomllib.loads(f["meta"].attrs["scenario"])["structure"]["speed"]  # m/s
+    V = load_run(results["analytic potential"]["h5"]).scenario["structure"]["speed"]  # m/s
     write_report(a, results, setup, V)
     plots(a, results, V)
     print(f"wrote {a.out}/flow_models.md and the plots", file=sys.stderr)
@@ -168,8 +166,8 @@ def plots(a, results, V):
 
     fig, ax = plt.subplots(figsize=(11, 4))
     for name, r in results.items():
-        with h5py.File(r["h5"]) as f:
-            ax.plot(f["load/time"][:], f["load/surge"][:], lw=0.6, label=name)
+        f = load_run(r["h5"])
+        ax.plot(f["/load/time"], f["/load/surge"], lw=0.6, label=name)
     ax.set_xlabel("time (s)")
     ax.set_ylabel("surge load (N)")
     ax.legend(fontsize=7)
@@ -178,9 +176,9 @@ def plots(a, results, V):
 
     fig, axes = plt.subplots(1, len(results), figsize=(4 * len(results), 4), sharey=True)
     for ax, (name, r) in zip(np.atleast_1d(axes), results.items()):
-        with h5py.File(r["h5"]) as f:
-            t, P = f["snapshots/time"][:], f["snapshots/position"][:]
-            lt, S = f["load/time"][:], f["structure/position"][:]
+        f = load_run(r["h5"], snapshots=True)
+        t, P = f["/snapshots/time"], f["/snapshots/position"]
+        lt, S = f["/load/time"], f["/structure/position"]
         sx = np.interp(t, lt, S[:, 0])
         rel = P[:, :, 0] - sx[:, None]
         near = np.where((np.abs(rel) < 1.2).any(axis=0) & (np.abs(P[:, :, 2]) < 1.2).any(axis=0))[0]

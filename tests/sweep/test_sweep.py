@@ -105,7 +105,7 @@ class Expansion(unittest.TestCase):
                           ("rigid", "base"), ("rigid", "substeps 2"), ("rigid", "tol 0.1, cap 40")])
         tol = next(r for r in runs if r.scenario == "rigid" and r.variant.startswith("tol"))
         # the variant's directory is its name made safe; extra sets come after the file's, then the seed
-        self.assertEqual(tol.path, os.path.join("rigid", "tol_0.1__cap_40", "base", "seed1"))
+        self.assertEqual(tol.path, os.path.join("rigid", "tol_0.1_cap_40", "base", "seed1"))
         self.assertEqual(tol.sets, ("solver.tolerance=0.1", "solver.iterations=40", "time.duration=5", "seed=1"))
         self.assertEqual(tol.labels, (("variant", "tol 0.1, cap 40"),))
         # a name used twice, or two names one directory, is an error naming the key

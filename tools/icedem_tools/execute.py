@@ -25,6 +25,7 @@ class Status:
     run: object   # spec.Run
     state: str    # "done", "failed" or "pending"
     error: str = ""
+    exit_code: object = None  # icedem's exit code when its run directory holds one, else None
 
 
 def command(run, out_dir, icedem):
@@ -47,7 +48,7 @@ def finished_here(run, out_dir):
 
 def status(run, out_dir):
     if finished_here(run, out_dir) or (run.record_file and os.path.isfile(run.record_file)):
-        return Status(run, "done")
+        return Status(run, "done", exit_code=0 if finished_here(run, out_dir) else None)
     d = os.path.join(out_dir, run.path)
     try:
         with open(os.path.join(d, "exit_code")) as f:
@@ -63,7 +64,7 @@ def status(run, out_dir):
             error += ": " + (errors[-1] if errors else lines[-1])
     except FileNotFoundError:
         pass
-    return Status(run, "failed", error)
+    return Status(run, "failed", error, int(code) if code.lstrip("-").isdigit() else None)
 
 
 def run_here(runs, out_dir, icedem, jobs=0):

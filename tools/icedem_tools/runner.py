@@ -1,6 +1,7 @@
-"""The one way the tools run icedem: `execute` runs it once in a directory and says what
-happened (exit code, log, summary, CPU and wall time); `run` is the same, timed in CPU seconds
-and reused when already finished with the same command (the ladder and the convergence study).
+"""The one way the tools run icedem: `run_args` is its command line, `execute` runs it once in
+a directory and says what happened (exit code, log, summary, CPU and wall time). Many runs go
+through a sweep (execute.py: GNU parallel or Slurm over the same command line); the ladder, the
+convergence study and the stress suite are sweeps too (sweeps/studies/).
 
 CPU time, not wall time, is what the benchmarks compare: on a shared machine the wall time of
 one setting drifted by 2x within an hour, the CPU time of a single-threaded run much less. It is
@@ -74,27 +75,3 @@ def execute(scenario, directory, sets=(), icedem=DEFAULT_ICEDEM, env=None, args=
         with open(summary) as f:
             data = json.load(f)
     return Run(cmd, proc.returncode, text, usage.ru_utime + usage.ru_stime, wall, data, h5)
-
-
-def run(icedem, scenario, sets, seed, directory):
-    """Run `icedem run scenario --set ... --set seed=N` in `directory` (RUN_FILES, cpu_time_s,
-    command), reused if finished with the same command. Returns the summary with cpu_time_s and
-    run_dir added, or {"status": "failed", "message": ...}."""
-    os.makedirs(directory, exist_ok=True)
-    sets = list(sets) + [f"seed={seed}"]
-    summary, cpu_file, stamp = (os.path.join(directory, f) for f in (RUN_FILES["summary"], "cpu_time_s", "command"))
-    command = " ".join([icedem, "run", scenario] + sets_args(sets))
-    if all(map(os.path.exists, (summary, stamp, cpu_file))) and open(stamp).read() == command:
-        with open(summary) as f, open(cpu_file) as c:
-            return dict(json.load(f), cpu_time_s=float(c.read()), run_dir=directory)
-    for stale in (stamp, cpu_file):
-        if os.path.exists(stale):
-            os.remove(stale)
-    r = execute(scenario, directory, sets, icedem=icedem)
-    if not r.ok:
-        return {"status": "failed", "message": r.error}
-    with open(cpu_file, "w") as f:
-        f.write(f"{r.cpu_time_s:.3f}")
-    with open(stamp, "w") as f:
-        f.write(command)
-    return dict(r.summary, cpu_time_s=r.cpu_time_s, run_dir=directory)

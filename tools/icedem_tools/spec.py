@@ -42,6 +42,7 @@ of many CPU hours can be run in parts and its report rebuilt from the records.
 """
 import itertools
 import os
+import re
 import tomllib
 from dataclasses import dataclass, field
 
@@ -87,8 +88,9 @@ class Run:
 
 
 def slug(text):
-    """A variant's name as a directory name: letters, digits, '.', '-' and '+'; the rest '_'."""
-    return "".join(c if c.isalnum() or c in ".-+" else "_" for c in text).strip("_")
+    """A variant's name as a directory name: letters, digits, '.', '-' and '+'; every run of
+    other characters one '_'."""
+    return re.sub(r"[^0-9A-Za-z.+-]+", "_", text).strip("_")
 
 
 def fmt(value):
