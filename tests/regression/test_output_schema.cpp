@@ -117,6 +117,9 @@ TEST(OutputSchema, ABreakableRunWritesExactlyTheDeclaredDatasetsAndAttributes) {
     EXPECT_EQ(value, summary[f.key].get<double>()) << f.key;
   }
   // and the summary JSON holds every declared key (validation only in validation cases)
-  for (const SummaryField& f : summary_fields())
-    if (!f.omit_if_null) EXPECT_TRUE(summary.contains(f.key)) << f.key;
+  for (const SummaryField& f : summary_fields()) {
+    if (!f.omit_if_null) {
+      EXPECT_TRUE(summary.contains(f.key)) << f.key;
+    }
+  }
 }
