@@ -65,7 +65,11 @@ TEST(OutputSchema, ABreakableRunWritesExactlyTheDeclaredDatasetsAndAttributes) {
       {"time.duration=3", "channel.start_x=3.0", "channel.length=3.6", "channel.width=3.0", "ice.concentration=0.6",
        "structure.start_x=2.2", "structure.speed=0.2", "ice.bending_strength=12e3", "stats.window_start_travel=0.1"});
   const std::string out = std::string(ICEDEM_TEST_TMP) + "/output_schema.h5";
-  const RunSummary s = run_simulation(scene, RunOptions{out, false, "test"});
+  RunOptions options;
+  options.output = out;
+  options.progress = false;
+  options.command_line = "test";
+  const RunSummary s = run_simulation(scene, options);
   ASSERT_EQ(s.status, "complete");
   ASSERT_GT(s.breaks, 0) << "the case must break joints, so that /fracture/events has rows";
 
@@ -86,7 +90,9 @@ TEST(OutputSchema, ABreakableRunWritesExactlyTheDeclaredDatasetsAndAttributes) {
     declared.insert(e.path);
     ASSERT_TRUE(found.count(e.path)) << e.path << " is declared but not written";
     const Found& f = found.at(e.path);
-    if (e.element != Element::compound) EXPECT_EQ(f.units, e.unit) << e.path;
+    if (e.element != Element::compound) {
+      EXPECT_EQ(f.units, e.unit) << e.path;
+    }
     EXPECT_EQ(f.rank, rank_of(e.shape)) << e.path;
     expect_element(e.path, f, e.element);
   }
