@@ -220,6 +220,15 @@ class Aggregation(unittest.TestCase):
         self.assertEqual(r["breaks_shear"], 0)
         self.assertAlmostEqual(r["run_wall_time_s"], 14.0)
 
+        # a variant is a column of its own, text in results.h5
+        rows, spectra = agg.aggregate({"s/dt_0.01/a=1": ("s", (("variant", "dt 0.01"), ("a", 1)), recs)})
+        self.assertEqual((rows[0]["variant"], rows[0]["a"], rows[0]["seeds"]), ("dt 0.01", 1, 2))
+        path = os.path.join(WORK, "variant_results.h5")
+        agg.write_hdf5(rows, path, spectra)
+        import h5py
+        with h5py.File(path, "r") as h:
+            self.assertEqual(h["configurations"]["variant"][0].decode(), "dt 0.01")
+
     def test_a_cause_cites_its_supplements_ratios(self):
         # scripts/report has no .py suffix: load it as a module
         import importlib.machinery
