@@ -9,6 +9,7 @@ summary.json exists, or when the sweep keeps records and its record exists
 is not 0 (its error is the last "error" line of log.txt); pending otherwise
 (never started, or killed).
 """
+import json
 import os
 import shlex
 import subprocess
@@ -65,6 +66,18 @@ def status(run, out_dir):
     except FileNotFoundError:
         pass
     return Status(run, "failed", error, int(code) if code.lstrip("-").isdigit() else None)
+
+
+def summary(run, out_dir):
+    """The summary of a run finished in its directory, with run_dir (its directory) added; else
+    {"status": "failed" or "pending", "message": why}."""
+    st = status(run, out_dir)
+    if not finished_here(run, out_dir):
+        return {"status": "pending" if st.state in ("pending", "done") else "failed",
+                "message": st.error or "not run here yet"}
+    d = os.path.join(out_dir, run.path)
+    with open(os.path.join(d, RUN_FILES["summary"])) as f:
+        return dict(json.load(f), run_dir=d)
 
 
 def run_here(runs, out_dir, icedem, jobs=0):
