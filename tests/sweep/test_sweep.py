@@ -230,12 +230,7 @@ class Aggregation(unittest.TestCase):
             self.assertEqual(h["configurations"]["variant"][0].decode(), "dt 0.01")
 
     def test_a_cause_cites_its_supplements_ratios(self):
-        # scripts/report has no .py suffix: load it as a module
-        import importlib.machinery
-        import importlib.util
-        loader = importlib.machinery.SourceFileLoader("report", os.path.join(ROOT, "scripts", "report"))
-        report = importlib.util.module_from_spec(importlib.util.spec_from_loader("report", loader))
-        loader.exec_module(report)
+        from icedem_tools import report
         rows = [{"configuration": "a/base", "mean_fx_N": "10", "max_fx_N": "40"},
                 {"configuration": "b/base", "mean_fx_N": "12", "max_fx_N": "60"},
                 {"configuration": "c/base", "mean_fx_N": "5", "max_fx_N": "nan"}]

@@ -1,0 +1,202 @@
+"""Run time against error: a ladder of solver settings and of the skips, each
+run over several seeds on the reference scenarios of scenarios/bench/, against
+a high-resolution reference (the smallest step with the most iterations).
+
+    scripts/ladder [--quick] [--seeds N] [--jobs N] [--icedem PATH]
+                   [--float-icedem PATH] [--out DIR] [--report-only] [REFERENCE ...]
+
+The ladder is a sweep file, sweeps/studies/ladder.toml: the references are its
+scenarios, the rungs its variants, the tolerances its [study] table. This script
+runs it like `scripts/sweep run` (GNU parallel, one directory per run, finished
+runs reused) and reports; the runs can as well be made by `scripts/sweep run` or
+`scripts/sweep slurm` on that file and reported here with --report-only.
+
+For every rung and reference it reports, over the seeds: the ensemble mean of
+the mean surge load and of the max surge load, the mean break count, and their
+errors relative to the reference ensemble; the CPU time and the realtime
+factor of one run (icedem's own cpu_time_s), and the CPU time relative to the
+default rung (CPU, not wall time: on a shared machine the wall time drifts by
+2x within an hour). The reference's own seed scatter (standard error of its
+ensemble mean) is printed beside, so an error below it is noise. Skip rungs
+turn one skip off (or, for the activation region, on) and one rung turns every
+skip off. With a float-precision build (scripts/bench.sh makes one) the default
+rung also runs with it.
+
+A rung is accurate when its mean error is within 5 % and its max error within
+10 % (issue 6's targets); the recommendation is the fastest accurate rung. The
+Pareto front (error against CPU time, per reference) goes to a PNG.
+
+Writes bench/results/ladder-<date>.{md,png} (or DIR/ladder.{md,png}); runs are
+kept in DIR/runs, or in sweeps/ladder (where `scripts/sweep run` puts them).
+--quick (CI): the first reference, one seed, 25 s of tow, four rungs (the
+[study] table's quick_*), its runs in DIR/runs or a temporary directory.
+"""
+import argparse
+import datetime
+import os
+import sys
+import tempfile
+import tomllib
+
+import numpy as np
+
+from . import execute, spec
+from .spec import ROOT
+
+STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "ladder.toml")
+with open(STUDY_FILE, "rb") as _f:
+    STUDY = tomllib.load(_f)["study"]
+REFERENCE, DEFAULT = STUDY["reference"], STUDY["default"]
+FLOAT = "float precision"
+MEAN_TOLERANCE, MAX_TOLERANCE = STUDY["mean_tolerance"], STUDY["max_tolerance"]
+
+
+def ensemble(summaries):
+    ok = [s for s in summaries if s.get("status") == "complete" and s.get("mean_fx_N") is not None]
+    if len(ok) < len(summaries):
+        bad = [s for s in summaries if s not in ok]
+        return {"failed": len(bad), "message": str(bad[0].get("message", ""))}
+    mean = np.array([s["mean_fx_N"] for s in ok])
+    return {"mean": mean.mean(), "mean_se": mean.std(ddof=1) / np.sqrt(len(ok)) if len(ok) > 1 else float("nan"),
+            "max": np.mean([s["max_fx_N"] for s in ok]), "breaks": np.mean([s["breaks"] for s in ok]),
+            "cpu": np.mean([s["cpu_time_s"] for s in ok]),
+            "rtf": np.mean([s["sim_time_s"] / s["cpu_time_s"] for s in ok])}
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("references", nargs="*", help="reference scenarios (default: all; --quick: the first)")
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--seeds", type=int, help="seeds per rung (default: the sweep file's)")
+    ap.add_argument("--jobs", type=int, default=1, help="parallel runs (CPU times stay comparable)")
+    ap.add_argument("--icedem", default=execute.DEFAULT_ICEDEM)
+    ap.add_argument("--float-icedem", default=os.path.join(ROOT, "build-float", "dem", "icedem"),
+                    help="a float-precision build (scripts/bench.sh makes one); skipped if absent")
+    ap.add_argument("--out")
+    ap.add_argument("--report-only", action="store_true", help="report on finished runs, start none")
+    a = ap.parse_args(argv)
+    try:
+        name, runs = spec.load(STUDY_FILE, seeds=1 if a.quick else a.seeds,
+                               extra=STUDY["quick_set"] if a.quick else ())
+    except spec.SweepError as e:
+        sys.exit(f"scripts/ladder: {e}")
+    known = list(dict.fromkeys(r.scenario for r in runs))
+    a.references = a.references or (STUDY["quick_scenarios"] if a.quick else known)
+    unknown = [r for r in a.references if r not in known]
+    if unknown:
+        sys.exit(f"scripts/ladder: unknown reference {', '.join(unknown)}; known: {', '.join(known)}")
+    runs = [r for r in runs if r.scenario in a.references
+            and (not a.quick or r.variant in STUDY["quick_variants"] + [REFERENCE])]
+    if not a.report_only and not os.access(a.icedem, os.X_OK):
+        sys.exit(f"scripts/ladder: no icedem executable at {a.icedem} (build it: scripts/setup.sh)")
+    runs_dir = (os.path.join(a.out, "runs") if a.out else tempfile.mkdtemp(prefix="icedem-ladder-") if a.quick
+                else os.path.join(ROOT, "sweeps", name))
+    float_dir = os.path.join(runs_dir, "float")
+    float_runs = [r for r in runs if r.variant == DEFAULT] if not a.quick and os.access(a.float_icedem, os.X_OK) else []
+    seeds = sorted({r.seed for r in runs})
+    start = datetime.datetime.now(datetime.timezone.utc)
+    if not a.report_only:
+        execute.run_parallel(runs, runs_dir, os.path.abspath(a.icedem), a.jobs)
+        execute.run_parallel(float_runs, float_dir, os.path.abspath(a.float_icedem), a.jobs)
+    wall = (datetime.datetime.now(datetime.timezone.utc) - start).total_seconds()
+    results = {(r.scenario, r.variant, r.seed): execute.summary(r, runs_dir) for r in runs}
+    results.update({(r.scenario, FLOAT, r.seed): execute.summary(r, float_dir) for r in float_runs})
+    sets = {(r.scenario, r.variant): r.sets[:-1] for r in runs}
+    files = {r.scenario: os.path.relpath(r.scenario_file, ROOT) for r in runs}
+
+    lines, pareto, failures = [], {}, 0
+    for ref in a.references:
+        names = list(dict.fromkeys(n for (r, n, _) in results if r == ref))
+        ens = {n: ensemble([results[(ref, n, s)] for s in seeds]) for n in names}
+        r0, d0 = ens[REFERENCE], ens.get(DEFAULT)
+        if "failed" in r0 or d0 is None or "failed" in d0:
+            lines += [f"## {ref}", "", f"reference or default failed: {r0.get('message', '')} {d0}", ""]
+            failures += 1
+            continue
+        lines += [f"## {ref} ({files[ref]}, {len(seeds)} seed{'s' * (len(seeds) > 1)})", "",
+                  f"Reference ({', '.join(sets[(ref, REFERENCE)]) or 'as the file is'}): mean surge {r0['mean']:.2f} N "
+                  f"(seed scatter: standard error {100 * r0['mean_se'] / r0['mean']:.1f} %), max "
+                  f"{r0['max']:.2f} N, breaks {r0['breaks']:.1f}, {r0['cpu']:.1f} s CPU per run.", "",
+                  "| rung | mean N | err mean | max N | err max | breaks | CPU s/run | x real time (CPU) | time / default | accurate |",
+                  "|---|---|---|---|---|---|---|---|---|---|"]
+        pareto[ref] = []
+        for n in names:
+            e = ens[n]
+            if "failed" in e:
+                lines.append(f"| {n} | failed ({e['failed']} of {len(seeds)}): {e['message'][:120]} |||||||||")
+                continue
+            em, ex = (e["mean"] - r0["mean"]) / r0["mean"], (e["max"] - r0["max"]) / r0["max"]
+            ok = abs(em) <= MEAN_TOLERANCE and abs(ex) <= MAX_TOLERANCE
+            lines.append(f"| {n} | {e['mean']:.2f} | {100 * em:+.1f} % | {e['max']:.2f} | {100 * ex:+.1f} % | "
+                         f"{e['breaks']:.1f} | {e['cpu']:.1f} | {e['rtf']:.1f} | {e['cpu'] / d0['cpu']:.2f} | "
+                         f"{'yes' if ok else 'no'} |")
+            if n != REFERENCE:
+                pareto[ref].append((n, e["cpu"] / d0["cpu"], abs(em), abs(ex), ok, e["rtf"]))
+        accurate = sorted([p for p in pareto[ref] if p[4] and not p[0].startswith(("skip off", "every"))],
+                          key=lambda p: p[1])
+        lines.append("")
+        if accurate:
+            best = accurate[0]
+            lines.append(f"Recommended (fastest rung within {100 * MEAN_TOLERANCE:.0f} % mean and "
+                         f"{100 * MAX_TOLERANCE:.0f} % max): **{best[0]}**, {best[1]:.2f} of the default's "
+                         f"time, {best[5]:.1f}x real time on this short scenario.")
+        else:
+            lines.append("No rung is within the tolerances.")
+        every = next((p for p in pareto[ref] if p[0] == "every skip off"), None)
+        if every:
+            lines.append(f"All skips together: {every[1]:.2f} times the default's run time with them off "
+                         f"(the default is {every[1]:.1f}x faster); errors with them off: mean "
+                         f"{100 * every[2]:.1f} %, max {100 * every[3]:.1f} %.")
+        lines.append("")
+
+    cpu_total = sum(r.get("cpu_time_s", 0.0) for r in results.values())
+    header = [f"# Run time against error, {start:%Y-%m-%d %H:%M} UTC", "",
+              f"Command: `scripts/ladder{' --quick' if a.quick else ''}"
+              f"{'' if a.quick or a.seeds is None else f' --seeds {a.seeds}'}{' --out DIR' if a.out else ''} "
+              f"{' '.join(a.references)}`: {len(results)} runs, {cpu_total / 3600:.2f} CPU hours in all (this "
+              f"invocation {wall:.0f} s wall; finished runs are reused). Errors are "
+              f"relative to the reference ensemble; 'accurate' is within {100 * MEAN_TOLERANCE:.0f} % (mean) and "
+              f"{100 * MAX_TOLERANCE:.0f} % (max).", ""]
+    text = "\n".join(header + lines)
+    print(text)
+    out_dir = a.out or (runs_dir if a.quick else os.path.join(ROOT, "bench", "results"))
+    os.makedirs(out_dir, exist_ok=True)
+    stem = "ladder" if a.out or a.quick else f"ladder-{start:%Y%m%d}"
+    with open(os.path.join(out_dir, stem + ".md"), "w") as f:
+        f.write(text + f"\n\n![Pareto front]({stem}.png)\n")
+    plot(pareto, os.path.join(out_dir, stem + ".png"))
+    print(f"wrote {os.path.join(out_dir, stem + '.md')} and .png")
+    return 1 if failures else 0
+
+
+def plot(pareto, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, max(1, len(pareto)), figsize=(6.5 * max(1, len(pareto)), 5), squeeze=False)
+    for ax, (ref, points) in zip(axes[0], pareto.items()):
+        for n, t, em, ex, ok, _ in points:
+            err = max(em / MEAN_TOLERANCE, ex / MAX_TOLERANCE)  # 1 = at the tolerance
+            ax.scatter(t, err, c="tab:green" if ok else "tab:red", s=25)
+            ax.annotate(n, (t, err), fontsize=6, xytext=(3, 2), textcoords="offset points")
+        # Pareto front: no other rung both faster and more accurate
+        pts = sorted((t, max(em / MEAN_TOLERANCE, ex / MAX_TOLERANCE)) for _, t, em, ex, _, _ in points)
+        front, best = [], float("inf")
+        for t, e in pts:
+            if e < best:
+                front.append((t, e))
+                best = e
+        if front:
+            ax.plot(*zip(*front), "k--", lw=0.8, label="Pareto front")
+        ax.axhline(1.0, color="grey", lw=0.8, label="tolerance (5 % mean, 10 % max)")
+        ax.set_xscale("log")
+        ax.set_xlabel("CPU time / default")
+        ax.set_ylabel("error / tolerance (worse of mean and max)")
+        ax.set_title(ref)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
