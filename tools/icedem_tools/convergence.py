@@ -33,17 +33,14 @@ every run (give it its own --out). Writes DIR/convergence.md and .png (with
 """
 import argparse
 import datetime
-import math
 import os
 import sys
 import tomllib
 
 import numpy as np
 
-from . import execute, results, runner, spec
+from . import aggregate as agg, execute, results, runner, spec
 from .spec import ROOT
-
-EULER_GAMMA = 0.5772156649
 
 STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "convergence.toml")
 with open(STUDY_FILE, "rb") as _f:
@@ -66,11 +63,7 @@ def window_loads(summary, t_end=None):
 
 def half_width(values):
     """Half-width of the 95 % confidence interval of the mean (Student's t)."""
-    from scipy import stats
-    n = len(values)
-    if n < 2:
-        return float("nan")
-    return float(stats.t.ppf(0.975, n - 1) * np.std(values, ddof=1) / math.sqrt(n))
+    return agg.mean_ci(values)[1]
 
 
 def ensemble(summaries, t_end=None):
@@ -80,12 +73,11 @@ def ensemble(summaries, t_end=None):
     loads = np.array([window_loads(s, t_end) for s in ok])
     mean, p99, peak = loads[:, 0], loads[:, 1], loads[:, 2]
     breaks = np.array([s["breaks"] for s in ok], dtype=float)
-    beta = math.sqrt(6) * np.std(peak, ddof=1) / math.pi if len(ok) > 1 else float("nan")
     return {"n": len(ok), "failed": len(summaries) - len(ok),
             "message": next((str(s.get("message", "")) for s in summaries if s not in ok), ""),
             "mean": mean.mean(), "mean_hw": half_width(mean),
             "p99": p99.mean(), "max": peak.mean(), "max_hw": half_width(peak),
-            "gumbel_u": peak.mean() - EULER_GAMMA * beta, "breaks": breaks.mean(),
+            "gumbel_u": agg.gumbel_fit(peak)[0], "breaks": breaks.mean(),
             "breaks_hw": half_width(breaks) if breaks.any() else 0.0,
             "cpu": np.mean([s["cpu_time_s"] for s in ok]),
             "rtf": np.mean([s["sim_time_s"] / s["cpu_time_s"] for s in ok]),
