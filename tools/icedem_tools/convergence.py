@@ -40,6 +40,7 @@ import tomllib
 import numpy as np
 
 from . import aggregate as agg, execute, results, runner, spec
+from . import pareto as pareto_plot
 from .spec import ROOT
 
 STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "convergence.toml")
@@ -205,30 +206,12 @@ def report(a, runs, found, out, start, wall):
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, stem + ".md"), "w") as f:
         f.write(text + f"\n\n![Pareto front]({stem}.png)\n")
-    plot(pareto, os.path.join(out, stem + ".png"))
+    pareto_plot.plot({m: [(n, t, max(abs(err["mean"]) / MEAN_TOLERANCE, abs(err["p99"]) / PEAK_TOLERANCE,
+                                      abs(err["max"]) / PEAK_TOLERANCE), ok) for n, t, err, ok in points]
+                      for m, points in pareto.items()}, os.path.join(out, stem + ".png"),
+                     "CPU time / paper setting", "error / tolerance (worst of mean, p99, max)",
+                     cost_line=(2.0, "2x the paper's cost"))
     print(f"wrote {os.path.join(out, stem + '.md')} and .png")
-
-
-def plot(pareto, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, max(1, len(pareto)), figsize=(5.5 * max(1, len(pareto)), 4.8), squeeze=False)
-    for ax, (m, points) in zip(axes[0], pareto.items()):
-        for n, t, err, ok in points:
-            e = max(abs(err["mean"]) / MEAN_TOLERANCE, abs(err["p99"]) / PEAK_TOLERANCE,
-                    abs(err["max"]) / PEAK_TOLERANCE)
-            ax.scatter(t, e, c="tab:green" if ok else "tab:red", s=25)
-            ax.annotate(n, (t, e), fontsize=6, xytext=(3, 2), textcoords="offset points")
-        ax.axhline(1.0, color="grey", lw=0.8, label="tolerance")
-        ax.axvline(2.0, color="grey", lw=0.8, ls=":", label="2x the paper's cost")
-        ax.set_xscale("log")
-        ax.set_xlabel("CPU time / paper setting")
-        ax.set_ylabel("error / tolerance (worst of mean, p99, max)")
-        ax.set_title(m)
-        ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=130)
 
 
 if __name__ == "__main__":

@@ -41,6 +41,7 @@ import tomllib
 import numpy as np
 
 from . import execute, spec
+from . import pareto as pareto_plot
 from .spec import ROOT
 
 STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "ladder.toml")
@@ -164,38 +165,12 @@ def main(argv=None):
     stem = "ladder" if a.out or a.quick else f"ladder-{start:%Y%m%d}"
     with open(os.path.join(out_dir, stem + ".md"), "w") as f:
         f.write(text + f"\n\n![Pareto front]({stem}.png)\n")
-    plot(pareto, os.path.join(out_dir, stem + ".png"))
+    pareto_plot.plot({ref: [(n, t, max(em / MEAN_TOLERANCE, ex / MAX_TOLERANCE), ok) for n, t, em, ex, ok, _ in points]
+                      for ref, points in pareto.items()}, os.path.join(out_dir, stem + ".png"),
+                     "CPU time / default", "error / tolerance (worse of mean and max)",
+                     f"tolerance ({100 * MEAN_TOLERANCE:.0f} % mean, {100 * MAX_TOLERANCE:.0f} % max)")
     print(f"wrote {os.path.join(out_dir, stem + '.md')} and .png")
     return 1 if failures else 0
-
-
-def plot(pareto, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, max(1, len(pareto)), figsize=(6.5 * max(1, len(pareto)), 5), squeeze=False)
-    for ax, (ref, points) in zip(axes[0], pareto.items()):
-        for n, t, em, ex, ok, _ in points:
-            err = max(em / MEAN_TOLERANCE, ex / MAX_TOLERANCE)  # 1 = at the tolerance
-            ax.scatter(t, err, c="tab:green" if ok else "tab:red", s=25)
-            ax.annotate(n, (t, err), fontsize=6, xytext=(3, 2), textcoords="offset points")
-        # Pareto front: no other rung both faster and more accurate
-        pts = sorted((t, max(em / MEAN_TOLERANCE, ex / MAX_TOLERANCE)) for _, t, em, ex, _, _ in points)
-        front, best = [], float("inf")
-        for t, e in pts:
-            if e < best:
-                front.append((t, e))
-                best = e
-        if front:
-            ax.plot(*zip(*front), "k--", lw=0.8, label="Pareto front")
-        ax.axhline(1.0, color="grey", lw=0.8, label="tolerance (5 % mean, 10 % max)")
-        ax.set_xscale("log")
-        ax.set_xlabel("CPU time / default")
-        ax.set_ylabel("error / tolerance (worse of mean and max)")
-        ax.set_title(ref)
-        ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=130)
 
 
 if __name__ == "__main__":
