@@ -210,7 +210,7 @@ def main(argv=None):
             fh.write(f"# Stress suite, {start:%Y-%m-%d %H:%M} UTC\n\nCommand: `scripts/stress"
                      f"{' --quick' if a.quick else ''}{' ' + ' '.join(a.names) if a.names else ''}`"
                      f" ({wall:.0f} s wall, {a.jobs or os.cpu_count()} jobs). Bounds and their reasons: the"
-                     f" docstring of scripts/stress.\n\n{text}\n")
+                     f" docstring of tools/icedem_tools/stress.py.\n\n{text}\n")
         print(f"wrote {os.path.join(out, name)}")
     return 1 if unexpected else 0
 
