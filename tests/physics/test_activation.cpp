@@ -1,7 +1,7 @@
-// Sleeping: floes at rest cost nothing, and a disturbance wakes only the floes
-// it touches. Bullet builds sleeping islands from overlapping bounding boxes,
-// which joins a whole 75 % field into one island (docs/model/bullet.md); the contact
-// island manager (dem/contact_islands.hpp) joins only touching floes.
+// Sleeping and freezing (dem/activation, dem/contact_islands): floes at rest cost nothing,
+// and a disturbance wakes only the floes it touches. Bullet builds sleeping islands from
+// overlapping bounding boxes, which joins a whole 75 % field into one island
+// (docs/model/bullet.md); the contact island manager joins only touching floes.
 #include <gtest/gtest.h>
 
 #include "dem/initial_state.hpp"
