@@ -230,19 +230,19 @@ class Aggregation(unittest.TestCase):
             self.assertEqual(h["configurations"]["variant"][0].decode(), "dt 0.01")
 
     def test_a_cause_cites_its_supplements_ratios(self):
-        from icedem_tools import report
+        from icedem_tools import paper_findings
         rows = [{"configuration": "a/base", "mean_fx_N": "10", "max_fx_N": "40"},
                 {"configuration": "b/base", "mean_fx_N": "12", "max_fx_N": "60"},
                 {"configuration": "c/base", "mean_fx_N": "5", "max_fx_N": "nan"}]
-        self.assertEqual(report.supplement_ratios(rows),
+        self.assertEqual(paper_findings.supplement_ratios(rows),
                          " (mean / max against `a`: `b` 1.20 / 1.50, `c` 0.50 / n/a)")
         # a configuration without runs is left out; without the first one there is nothing to cite
         empty = {"configuration": "d/base", "mean_fx_N": "", "max_fx_N": ""}
-        self.assertEqual(report.supplement_ratios(rows + [empty]), report.supplement_ratios(rows))
-        self.assertEqual(report.supplement_ratios([empty] + rows), "")
+        self.assertEqual(paper_findings.supplement_ratios(rows + [empty]), paper_findings.supplement_ratios(rows))
+        self.assertEqual(paper_findings.supplement_ratios([empty] + rows), "")
         # without supplements every placeholder is left empty, none printed raw
-        causes = report.filled_causes([])
-        self.assertEqual(set(causes), set(report.CAUSES))
+        causes = paper_findings.filled_causes([])
+        self.assertEqual(set(causes), set(paper_findings.CAUSES))
         self.assertFalse(any("{" in c or "}" in c for c in causes.values()))
 
 

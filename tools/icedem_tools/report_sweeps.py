@@ -1,0 +1,155 @@
+"""The report's sections on other sweeps beside the grid: the flow models over seeds, the
+convergence of the grid's loads, supplements, and the same grid run with an earlier build
+(tools/icedem_tools/report.py)."""
+import collections
+import math
+import os
+
+from . import aggregate as agg, execute, spec
+from .report_tables import FII, FIS, ci, fmt, num, pick, ratio_to_first, read_rows, supplement_rows, sweep_about
+
+def supplement_section(sweep_file, name, runs, out, rows):
+    """The configurations of another aggregated sweep (its supplement_rows), with their max
+    against the first one's."""
+    if rows is None:
+        return [f"## Supplement: sweep `{name}`", "", f"Not aggregated yet (`scripts/sweep aggregate {sweep_file}`).", ""]
+    done = sum(1 for r in runs if execute.status(r, out).state == "done")
+    L = [f"## Supplement: sweep `{name}`", "", sweep_about(sweep_file), "",
+         f"{done} of {len(runs)} runs finished. Ratios: against the first configuration.", "",
+         "| configuration | seeds | mean N | max N | mean ratio | max ratio | run time per run s |",
+         "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        per = num(r, "run_wall_time_s")
+        n = int(float(r["seeds"])) if r.get("seeds") else 0
+        L.append(f"| {r['configuration']} | {r['seeds']} | {ci(r, 'mean_fx_N')} | {ci(r, 'max_fx_N')} | "
+                 f"{ratio_to_first(rows, r, 'mean_fx_N')} | {ratio_to_first(rows, r, 'max_fx_N')} | "
+                 f"{fmt(per / n if per is not None and n else None, '', 0)} |")
+    return L + [""]
+
+def before_section(rows, before_out, note):
+    """Every configuration against the same sweep run with an earlier build (its output
+    directory): mean and max load before and now, their ratio, and whether the change is
+    within the seeds' scatter (the two 95 % half-widths combined)."""
+    if not os.path.isfile(os.path.join(before_out, "results.csv")):
+        return ["## Against an earlier build", "", f"No results.csv in `{before_out}`.", ""]
+    before = {r["configuration"]: r for r in read_rows(before_out)}
+    L = ["## Against an earlier build", "", note, "",
+         f"The earlier runs: `{os.path.relpath(before_out, spec.ROOT)}`. A change is within the seed "
+         "scatter when it is smaller than the two 95 % half-widths combined (root of the sum of squares).", "",
+         "| configuration | seeds before / now | mean N before → now | ratio | within scatter | "
+         "max N before → now | ratio | within scatter |", "|---|---|---|---|---|---|---|---|"]
+    ratios = {}
+
+    def change(a, b, key):
+        """(table cells "before → now | ratio | within scatter", the ratio or None)"""
+        x, y = num(a, key), num(b, key)
+        if x is None or y is None or x == 0:
+            return "n/a | n/a | n/a", None
+        h = math.hypot(num(a, key + "_ci95") or 0.0, num(b, key + "_ci95") or 0.0)
+        return f"{x:.1f} → {y:.1f} | {y / x:.2f} | {'yes' if abs(y - x) <= h else '**no**'}", y / x
+
+    for r in rows:
+        b = before.get(r["configuration"])
+        if b is None:
+            continue
+        cells = []
+        for key, column in (("mean", "mean_fx_N"), ("max", "max_fx_N")):
+            text, ratio = change(b, r, column)
+            cells.append(text)
+            if ratio is not None:
+                ratios.setdefault((r["scenario"], key), []).append(ratio)
+        L.append(f"| {r['configuration']} | {b['seeds']} / {r['seeds']} | {cells[0]} | {cells[1]} |")
+    L.append("")
+    for scen in dict.fromkeys(r["scenario"] for r in rows):
+        parts = [f"{key} {sum(v) / len(v):.2f}" for key in ("mean", "max")
+                 if (v := ratios.get((scen, key)))]
+        if parts:
+            L.append(f"- {scen}: now / before, averaged over its configurations: " + ", ".join(parts) + ".")
+    return L + [""]
+
+def flow_section(flow_sweep, rows):
+    """The flow models over seeds (a sweep of the small floes under other flow models) against the
+    grid's own small-floe runs at f_ii 0.5, f_is 0.2 (the analytic potential flow, the default):
+    whether a model moves the mean or the max beyond the seeds' scatter."""
+    name, runs, out, frows = supplement_rows(flow_sweep)
+    L = ["## Flow models over seeds", "", sweep_about(flow_sweep), ""]
+    if frows is None:
+        return L + [f"Not aggregated yet (`scripts/sweep aggregate {os.path.relpath(flow_sweep, spec.ROOT)}`).", ""]
+    ref = pick(rows, "small_rigid")
+    table = ([("analytic potential (the grid's small_rigid runs)", ref)] if ref else []) + \
+            [(r["configuration"].split("/")[0], r) for r in frows]
+    L += ["| flow model | seeds | mean N | max N | mean − potential N | beyond scatter? | max − potential N | "
+          "beyond scatter? | CPU per run s |", "|---|---|---|---|---|---|---|---|---|"]
+
+    def diff(r, key):
+        if ref is None or r is ref:
+            return "", ""
+        a, b = num(r, key), num(ref, key)
+        if a is None or b is None:
+            return "n/a", "n/a"
+        h = math.hypot(num(r, key + "_ci95") or 0.0, num(ref, key + "_ci95") or 0.0)
+        return f"{a - b:+.1f} (± {h:.1f})", ("**yes**" if abs(a - b) > h else "no")
+    for label, r in table:
+        dm, bm = diff(r, "mean_fx_N")
+        dx, bx = diff(r, "max_fx_N")
+        n = num(r, "seeds") or 0
+        cpu = num(r, "run_cpu_time_s")
+        L.append(f"| {label} | {r['seeds']} | {ci(r, 'mean_fx_N')} | {ci(r, 'max_fx_N')} | {dm} | {bm} | {dx} | {bx} | "
+                 f"{fmt(cpu / n if cpu is not None and n else None, '', 0)} |")
+    return L + ["", "± are 95 % confidence half-widths over the seeds; a difference is beyond the scatter when "
+                "it exceeds the root sum of squares of the two half-widths.", ""]
+
+def convergence_section(conv_sweep, records):
+    """The grid's numbers against a halved step and a tighter solve (a sweep whose scenarios are
+    <model>+<numerics>, e.g. sweeps/paper_convergence.toml), compared seed by seed, and whether
+    its default runs repeat the grid's runs of the same seeds."""
+    name, runs, out, _ = supplement_rows(conv_sweep)
+    L = ["## Convergence of the grid's loads", "", sweep_about(conv_sweep), ""]
+    got = collections.defaultdict(dict)  # (model, numerics) -> {seed: summary}
+    for r in runs:
+        if execute.status(r, out).state == "done":
+            model, _, numerics = r.scenario.partition("+")
+            got[(model, numerics)][r.seed] = agg.load_record(r, out)["summary"]
+    if not got:
+        return L + [f"No finished runs yet (`scripts/sweep run {os.path.relpath(conv_sweep, spec.ROOT)}`).", ""]
+    L += ["| model | numerics | seeds | mean: ratio to default | max: ratio to default | breaks per run | "
+          "sweeps per step | CPU per run s |", "|---|---|---|---|---|---|---|---|"]
+
+    def spread(values):
+        return f"{sum(values) / len(values):.2f} ({min(values):.2f}-{max(values):.2f})" if values else "n/a"
+    models = list(dict.fromkeys(m for m, _ in got))
+    for model in models:
+        base = got.get((model, "default"), {})
+        for numerics in [n for m, n in got if m == model]:
+            runs_ = got[(model, numerics)]
+            seeds = sorted(set(runs_) & set(base))
+            ratios = {k: [runs_[sd][k] / base[sd][k] for sd in seeds if runs_[sd].get(k) and base[sd].get(k)]
+                      for k in ("mean_fx_N", "max_fx_N")}
+            br = [x.get("breaks", 0) for x in runs_.values()]
+            sw = [(x.get("solver") or {}).get("iterations_mean") for x in runs_.values()]
+            sw = [v for v in sw if v is not None]
+            cpu = [x.get("cpu_time_s") for x in runs_.values() if x.get("cpu_time_s")]
+            L.append(f"| {model} | {numerics} | {len(runs_)} | "
+                     f"{spread(ratios['mean_fx_N']) if numerics != 'default' else '1'} | "
+                     f"{spread(ratios['max_fx_N']) if numerics != 'default' else '1'} | "
+                     f"{sum(br) / len(br):.1f} | {fmt(sum(sw) / len(sw) if sw else None)} | "
+                     f"{fmt(sum(cpu) / len(cpu) if cpu else None, '', 0)} |")
+    L += ["", "Ratios: the mean over seeds of each seed's value against the same seed's default run, with "
+          "the range over seeds in brackets."]
+    # the default runs are the grid's runs of the same seeds at f_ii 0.5, f_is 0.2: they must agree
+    same, differ = 0, []
+    for (model, numerics), by_seed in got.items():
+        if numerics != "default":
+            continue
+        for r, rec in records.get(model, []):
+            g = dict(r.grid)
+            if g.get(FII) == 0.5 and g.get(FIS) == 0.2 and r.seed in by_seed:
+                a, b = rec["summary"].get("max_fx_N"), by_seed[r.seed].get("max_fx_N")
+                if a == b:
+                    same += 1
+                else:
+                    differ.append(f"{model} seed {r.seed}: {a} against {b} N")
+    if same or differ:
+        L += ["", f"The default runs repeat the grid's: {same} of {same + len(differ)} runs give the same max load "
+              "to the last digit" + (" (**not**: " + "; ".join(differ) + ")" if differ else "") + "."]
+    return L + [""]
