@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Study of the iteration dependence of joint breaks (issue 3, item 4): the
+# Study of the iteration dependence of joint breaks : the
 # large-floe breakable scenario (0.15 m elements) with the joint solve and the
 # load filter varied, each at the joint softness the plate-deflection test
 # calibrates for its joint iterations (60 MPa). Prints, per variant: breaks by

@@ -66,7 +66,7 @@ TEST(FoamCase, ConeMeshHoldsTheWaterAroundTheHull) {
   const double hull = kPi * h / 3 * (r1 * r1 + r1 * r2 + r2 * r2);
   const double water = s.length * s.width * s.depth - hull;
   const double meshed = meshed_volume(scene);
-  // the 0.1 % of the water volume, and, stricter, 1 % of the hull's own
+  // the target of 0.1 % of the water volume, and, stricter, 1 % of the hull's own
   // submerged volume (snappyHexMesh snaps to the faceted STL, whose equal-area
   // sections keep the frustum's volume; measured: 0.12 %)
   EXPECT_NEAR(meshed, water, 0.001 * water);

@@ -40,7 +40,7 @@ TEST(Floating, FloeSettlesAtArchimedesDraft) {
   body.setWorldTransform(t);
   run_for(scene, state, 10.0);
   const double draft = scene.ice.thickness / 2 - body.getCenterOfMassPosition().y();
-  // reference rho_i h / rho_w = 30.69 mm; 1 % (issue 2), the equilibrium is exact
+  // reference rho_i h / rho_w = 30.69 mm; 1 % (docs/model/validation_targets.md §1), the equilibrium is exact
   // up to the residual of the damped heave oscillation after 10 s
   EXPECT_NEAR(draft, 0.03069, 0.01 * 0.03069);
   EXPECT_NEAR(draft, 0.033 * 930.0 / 1000.0, 1e-6);  // settled to a micrometre

@@ -122,7 +122,7 @@ TEST(LoadCell, PushingAFloeUnderTakesItsReserveBuoyancy) {
   const long hold = std::lround(3.0 / scene.time.dt);
   for (long i = 0; i < hold; ++i) F += step_plate_and_water(state, scene, {start.x(), y_end, start.z()});
   F /= hold;
-  // (rho_w - rho_i) g L^2 h = 2.04 N (docs/model/validation_targets.md §1); 2 % (issue 2) covers the
+  // (rho_w - rho_i) g L^2 h = 2.04 N (docs/model/validation_targets.md §1); 2 % covers the
   // 1 mm the plate's collision margin and the contact slop may leave the floe high
   const double ref = (scene.water.density - scene.ice.density) * scene.water.gravity * L * L * h;
   EXPECT_NEAR(ref, 2.04, 0.005);

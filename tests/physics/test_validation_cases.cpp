@@ -44,7 +44,7 @@ TEST(Validation, FinitePlateFactorFollowsTheTable) {
 
 TEST(Breakable, CantileverBreaksInBendingAtTheRootAtTheBendingStrength) {
   // scenarios/validation/cantilever_015.toml (seed paper Fig. 7, eq. 6): 10 % is the
-  // issue's tolerance; the tip load grows by 0.2 N/s x 0.02 s = 4 mN per step, 0.15 %
+  // validation target's tolerance (docs/model/validation_targets.md); the tip load grows by 0.2 N/s x 0.02 s = 4 mN per step, 0.15 %
   // of the 2.64 N failure load, so the load resolution is not what limits it
   const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/cantilever_015.toml");
   const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/cantilever.h5", false, ""});
@@ -63,7 +63,7 @@ TEST(Breakable, CantileverBreaksInBendingAtTheRootAtTheBendingStrength) {
 
 TEST(Breakable, FloatingCantileverPushedDownBreaksAtTheBendingStrengthByEquationSix) {
   // scenarios/validation/cantilever_floating_015.toml, the paper's test: the tip pushed down
-  // at 5 mm/s; 10 % is the tolerance on sigma' = 6 (P_c - P_b) l / (L_e T_e^2)
+  // at 5 mm/s; 10 % is the validation target's tolerance on sigma' = 6 (P_c - P_b) l / (L_e T_e^2)
   const Scene scene =
       load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/cantilever_floating_015.toml");
   const RunSummary s =

@@ -23,7 +23,7 @@ skip off. With a float-precision build (scripts/bench.sh makes one) the default
 rung also runs with it.
 
 A rung is accurate when its mean error is within 5 % and its max error within
-10 % (issue 6's targets); the recommendation is the fastest accurate rung. The
+10 % (the targets of sweeps/studies/ladder.toml); the recommendation is the fastest accurate rung. The
 Pareto front (error against CPU time, per reference) goes to a PNG.
 
 Writes bench/results/ladder-<date>.{md,png} (or DIR/ladder.{md,png}); runs are

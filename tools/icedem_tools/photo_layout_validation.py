@@ -4,7 +4,7 @@ two colour schemes, and one photo taken at an angle.
 
     scripts/photo_layout_validation.py [--out DIR] [--cases NAME ...] [--seed S]
 
-Targets (the issue's): floe count within 3 %, concentration within 1 percentage
+Targets: floe count within 3 %, concentration within 1 percentage
 point, median centroid error under 2 pixels. Writes OUT/validation.md and, per
 case, the tool's overlay of its outlines on the photo (default docs/photo_layout). Exit 1 if a case
 misses a target.

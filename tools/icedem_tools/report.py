@@ -1,4 +1,4 @@
-"""The paper-comparison report of a friction sweep (issue 5): a Markdown file
+"""The paper-comparison report of a friction sweep: a Markdown file
 that sets the sweep's results beside the seed paper's findings, says where they
 disagree, and shows the figures of scripts/sweep_figures.py. Run
 `scripts/sweep aggregate` and `scripts/sweep_figures.py` first (or
