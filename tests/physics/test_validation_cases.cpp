@@ -27,7 +27,7 @@ TEST(Breakable, PlateDeflectionMatchesHertzWithinFivePercent) {
   // 5 %: the tolerance docs/model/validation_targets.md accepts (E then within 10 %)
   const Scene scene =
       load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/plate_deflection_27_015.toml");
-  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/plate.h5", false, ""});
+  const RunSummary s = run_simulation(scene, test_run("plate.h5"));
   ASSERT_FALSE(s.validation.is_null());
   EXPECT_NEAR(s.validation["reference"].get<double>(), 0.0922, 0.0005);
   EXPECT_LT(std::abs(s.validation["rel_error"].get<double>()), 0.05) << s.validation.dump();
@@ -47,7 +47,7 @@ TEST(Breakable, CantileverBreaksInBendingAtTheRootAtTheBendingStrength) {
   // validation target's tolerance (docs/model/validation_targets.md); the tip load grows by 0.2 N/s x 0.02 s = 4 mN per step, 0.15 %
   // of the 2.64 N failure load, so the load resolution is not what limits it
   const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/cantilever_015.toml");
-  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/cantilever.h5", false, ""});
+  const RunSummary s = run_simulation(scene, test_run("cantilever.h5"));
   ASSERT_FALSE(s.validation.is_null());
   EXPECT_EQ(s.validation["failure_mode"], "bending") << s.validation.dump();
   EXPECT_TRUE(s.validation["at_root"].get<bool>());
@@ -67,7 +67,7 @@ TEST(Breakable, FloatingCantileverPushedDownBreaksAtTheBendingStrengthByEquation
   const Scene scene =
       load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/cantilever_floating_015.toml");
   const RunSummary s =
-      run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/cantilever_floating.h5", false, ""});
+      run_simulation(scene, test_run("cantilever_floating.h5"));
   ASSERT_FALSE(s.validation.is_null());
   const auto& v = s.validation;
   EXPECT_TRUE(v["floating"].get<bool>());

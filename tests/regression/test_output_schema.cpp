@@ -13,6 +13,7 @@
 #include "dem/output_schema.hpp"
 #include "dem/scenario.hpp"
 #include "dem/simulation.hpp"
+#include "tests/support/scenes.hpp"
 
 using namespace icedem;
 
@@ -65,11 +66,7 @@ TEST(OutputSchema, ABreakableRunWritesExactlyTheDeclaredDatasetsAndAttributes) {
       {"time.duration=3", "channel.start_x=3.0", "channel.length=3.6", "channel.width=3.0", "ice.concentration=0.6",
        "structure.start_x=2.2", "structure.speed=0.2", "ice.bending_strength=12e3", "stats.window_start_travel=0.1"});
   const std::string out = std::string(ICEDEM_TEST_TMP) + "/output_schema.h5";
-  RunOptions options;
-  options.output = out;
-  options.progress = false;
-  options.command_line = "test";
-  const RunSummary s = run_simulation(scene, options);
+  const RunSummary s = run_simulation(scene, icedem::testing::test_run("output_schema.h5", "test"));
   ASSERT_EQ(s.status, "complete");
   ASSERT_GT(s.breaks, 0) << "the case must break joints, so that /fracture/events has rows";
 

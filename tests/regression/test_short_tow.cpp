@@ -8,6 +8,7 @@
 
 #include "dem/scenario.hpp"
 #include "dem/simulation.hpp"
+#include "tests/support/scenes.hpp"
 
 using namespace icedem;
 
@@ -32,7 +33,7 @@ std::string string_attribute(const H5::H5File& f, const std::string& group, cons
 TEST(ShortTow, LoadIsFiniteNonZeroAndPlausible) {
   const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml");
   const std::string out = std::string(ICEDEM_TEST_TMP) + "/short_tow.h5";
-  const RunSummary s = run_simulation(scene, RunOptions{out, false, "test"});
+  const RunSummary s = run_simulation(scene, icedem::testing::test_run("short_tow.h5", "test"));
 
   ASSERT_EQ(s.status, "complete");
   ASSERT_TRUE(s.has_statistics) << s.statistics_note;
@@ -73,7 +74,7 @@ TEST(ShortTow, SolverReportsItsSweepsAndStopsEarlyWithATolerance) {
   Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml",
                            {"solver.tolerance=0.01", "solver.iterations=60", "solver.warm_start=1",
                             "solver.friction_warm_start=true"});
-  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/tolerance.h5", false, ""});
+  const RunSummary s = run_simulation(scene, icedem::testing::test_run("tolerance.h5"));
   ASSERT_EQ(s.status, "complete");
   // islands stop when converged: the mean sweep count is well below the cap, and some
   // step (the pack against the cone) needs more than the paper's 10
@@ -88,7 +89,7 @@ TEST(ShortTow, SolverReportsItsSweepsAndStopsEarlyWithATolerance) {
   // the paper profile runs the cap (10) wherever there are contacts
   const Scene paper =
       load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml", {"solver.profile=paper"});
-  const RunSummary p = run_simulation(paper, RunOptions{std::string(ICEDEM_TEST_TMP) + "/paper.h5", false, ""});
+  const RunSummary p = run_simulation(paper, icedem::testing::test_run("paper.h5"));
   EXPECT_EQ(p.solver.iterations_max, 10);
   EXPECT_GT(p.solver.capped_steps, 0);
 }
@@ -97,8 +98,8 @@ TEST(ShortTow, SameSeedSameLoads) {
   // determinism: one process, same scene -> bitwise the same load history
   const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml",
                                  {"time.duration=20"});
-  const RunSummary a = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/det_a.h5", false, ""});
-  const RunSummary b = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/det_b.h5", false, ""});
+  const RunSummary a = run_simulation(scene, icedem::testing::test_run("det_a.h5"));
+  const RunSummary b = run_simulation(scene, icedem::testing::test_run("det_b.h5"));
   ASSERT_TRUE(a.has_statistics && b.has_statistics);
   EXPECT_EQ(a.surge.mean, b.surge.mean);
   EXPECT_EQ(a.surge.max, b.surge.max);
@@ -109,7 +110,7 @@ TEST(ShortTow, AFieldFarFromTheOriginRunsWithoutAFalseBlowUp) {
   // at step 1 as a "numerical blow-up" (a fixed 1000 m bound from the origin)
   const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml",
                                  {"channel.start_x=1500", "structure.start_x=1499", "time.duration=3"});
-  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/far_tow.h5", false, "test"});
+  const RunSummary s = run_simulation(scene, icedem::testing::test_run("far_tow.h5", "test"));
   EXPECT_EQ(s.status, "complete");
   EXPECT_EQ(s.steps, 150);
 }

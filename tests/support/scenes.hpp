@@ -6,12 +6,22 @@
 
 #include "dem/floe_layout.hpp"
 #include "dem/scenario.hpp"
+#include "dem/simulation.hpp"
 
 namespace icedem::testing {
 
 /// A Scene from TOML text (defaults fill the rest); `overrides` as for --set.
 inline Scene scene_from(const std::string& toml, const std::vector<std::string>& overrides = {}) {
   return make_scene(parse_scenario(toml, "test.toml", ICEDEM_SOURCE_DIR, overrides));
+}
+
+/// Options of a test's run: no progress line, the file `name` in the test directory.
+inline RunOptions test_run(const std::string& name, const std::string& command_line = "") {
+  RunOptions o;
+  o.output = std::string(ICEDEM_TEST_TMP) + "/" + name;
+  o.progress = false;
+  o.command_line = command_line;
+  return o;
 }
 
 /// Still water, the structure parked far away, every body awake: the bench of
