@@ -27,6 +27,7 @@ from scipy import signal, stats
 
 from . import results
 from .results import mode_key
+from .runner import RUN_FILES
 
 SEGMENT_S = 60.0
 # The load spectrum of a pack is red: its largest power sits at the lowest bin,
@@ -116,10 +117,9 @@ def make_record(run_dir):
     """The record of a finished run, from its directory: its summary, the Welch spectrum of its
     surge load over the analysis window (up to RECORD_MAX_HZ) and its breaks (every field of
     /fracture/events, mode and mechanism also by name)."""
-    with open(os.path.join(run_dir, "summary.json")) as f:
-        summary = json.load(f)
+    summary = results.load_summary(os.path.join(run_dir, RUN_FILES["summary"]))
     freq, power, events = [], [], []
-    run = results.load_run(os.path.join(run_dir, "run.h5"))
+    run = results.load_run(os.path.join(run_dir, RUN_FILES["h5"]))
     start, end = summary.get("window_start_s"), summary.get("window_end_s")
     if start is not None and end is not None:
         t, x = run["/load/time"], run["/load/surge"]
@@ -145,7 +145,7 @@ def load_record(run, out):
     file) and kept."""
     from . import execute
     run_dir = os.path.join(out, run.path)
-    summary = os.path.join(run_dir, "summary.json")
+    summary = os.path.join(run_dir, RUN_FILES["summary"])
     kept_is_current = (run.record_file and os.path.isfile(run.record_file)
                        and (not os.path.isfile(summary)
                             or os.path.getmtime(run.record_file) >= os.path.getmtime(summary)))

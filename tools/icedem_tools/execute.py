@@ -9,7 +9,6 @@ summary.json exists, or when the sweep keeps records and its record exists
 is not 0 (its error is the last "error" line of log.txt); pending otherwise
 (never started, or killed).
 """
-import json
 import os
 import shlex
 import subprocess
@@ -42,7 +41,7 @@ def finished_here(run, out_dir):
     d = os.path.join(out_dir, run.path)
     try:
         with open(os.path.join(d, "exit_code")) as f:
-            return f.read().strip() == "0" and os.path.isfile(os.path.join(d, "summary.json"))
+            return f.read().strip() == "0" and os.path.isfile(os.path.join(d, RUN_FILES["summary"]))
     except FileNotFoundError:
         return False
 
@@ -76,8 +75,8 @@ def summary(run, out_dir):
         return {"status": "pending" if st.state in ("pending", "done") else "failed",
                 "message": st.error or "not run here yet"}
     d = os.path.join(out_dir, run.path)
-    with open(os.path.join(d, RUN_FILES["summary"])) as f:
-        return dict(json.load(f), run_dir=d)
+    from .results import load_summary  # numpy and h5py: not needed to run a sweep
+    return dict(load_summary(os.path.join(d, RUN_FILES["summary"])), run_dir=d)
 
 
 def run_here(runs, out_dir, icedem, jobs=0):

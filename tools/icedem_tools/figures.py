@@ -26,7 +26,6 @@ shows, run.xdmf and run_views.h5: its snapshots for ParaView
 """
 import argparse
 import csv
-import json
 import os
 import sys
 
@@ -98,8 +97,7 @@ def history(runs, out, scenario, path):
         return False
     fig, axes = plt.subplots(len(sel), 1, figsize=(10, 2.2 * len(sel)), sharex=True, squeeze=False)
     for ax, r in zip(axes[:, 0], sorted(sel, key=lambda r: dict(r.grid).get(FIS, 0))):
-        with open(os.path.join(out, r.path, "summary.json")) as f:
-            summary = json.load(f)
+        summary = results.load_summary(os.path.join(out, r.path, runner.RUN_FILES["summary"]))
         t0 = summary.get("first_contact_s") or 0.0
         t0 = t0 if t0 > 0 else 0.0  # -1: no contact
         h = results.load_run(os.path.join(out, r.path, RUN_H5))
