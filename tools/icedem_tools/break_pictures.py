@@ -27,9 +27,9 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 from scipy.spatial import ConvexHull  # noqa: E402
 
 from . import aggregate as agg, execute, results, runner, spec
+from .report_tables import FII, FIS
 from .xdmf import quat_to_matrix
 
-FII, FIS = "friction.ice_ice", "friction.ice_structure"
 WANTED = ((0.3, "pressed under"), (0.7, "on the slope"))  # Fig. 18 (a) and (b)
 SNAPSHOT_S = 0.2     # snapshot interval of the repeated run, s
 AFTER_S = 0.3        # the repeat runs this long past the break, s

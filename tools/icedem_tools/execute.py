@@ -47,8 +47,9 @@ def finished_here(run, out_dir):
 
 
 def status(run, out_dir):
-    if finished_here(run, out_dir) or (run.record_file and os.path.isfile(run.record_file)):
-        return Status(run, "done", exit_code=0 if finished_here(run, out_dir) else None)
+    here = finished_here(run, out_dir)
+    if here or (run.record_file and os.path.isfile(run.record_file)):
+        return Status(run, "done", exit_code=0 if here else None)
     d = os.path.join(out_dir, run.path)
     try:
         with open(os.path.join(d, "exit_code")) as f:
@@ -70,10 +71,9 @@ def status(run, out_dir):
 def summary(run, out_dir):
     """The summary of a run finished in its directory, with run_dir (its directory) added; else
     {"status": "failed" or "pending", "message": why}."""
-    st = status(run, out_dir)
     if not finished_here(run, out_dir):
-        return {"status": "pending" if st.state in ("pending", "done") else "failed",
-                "message": st.error or "not run here yet"}
+        st = status(run, out_dir)
+        return {"status": "failed" if st.state == "failed" else "pending", "message": st.error or "not run here yet"}
     d = os.path.join(out_dir, run.path)
     from .results import load_summary  # numpy and h5py: not needed to run a sweep
     return dict(load_summary(os.path.join(d, RUN_FILES["summary"])), run_dir=d)

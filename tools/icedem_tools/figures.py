@@ -25,7 +25,6 @@ shows, run.xdmf and run_views.h5: its snapshots for ParaView
     scripts/sweep_figures.py SWEEP.toml [--out DIR] [--figures DIR] [--icedem PATH] [--jobs N]
 """
 import argparse
-import csv
 import os
 import sys
 
@@ -37,10 +36,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 from . import aggregate as agg, execute, results, runner, spec, xdmf
+from .report_tables import FII, FIS, read_rows
 
 RUN_H5 = runner.RUN_FILES["h5"]
 
-FII, FIS = "friction.ice_ice", "friction.ice_structure"
 
 
 def save(fig, path):
@@ -55,11 +54,6 @@ def reference_run(runs, out, scenario):
     sel = [r for r in runs if r.scenario == scenario and dict(r.grid).get(FII, 0.5) == 0.5
            and dict(r.grid).get(FIS, 0.2) == 0.2 and execute.status(r, out).state == "done"]
     return min(sel, key=lambda r: r.seed) if sel else None
-
-
-def load_rows(out):
-    with open(os.path.join(out, "results.csv")) as f:
-        return list(csv.DictReader(f))
 
 
 def loads_vs_fis(rows, scenario, path):
@@ -268,7 +262,7 @@ def main(argv=None):
     out = os.path.abspath(args.out or os.path.join(spec.ROOT, "sweeps", name))
     figs = args.figures or os.path.join(out, "figures")
     os.makedirs(figs, exist_ok=True)
-    rows = load_rows(out)
+    rows = read_rows(out)
     # the runs drawn from their HDF5 files (a kept record holds no time series): run again
     # those finished on another machine
     lowest = min(r.seed for r in runs)
