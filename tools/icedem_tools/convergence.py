@@ -47,6 +47,7 @@ STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "convergence.toml")
 with open(STUDY_FILE, "rb") as _f:
     STUDY = tomllib.load(_f)["study"]
 BASELINE, REFERENCE, BRUTE = STUDY["baseline"], STUDY["reference"], STUDY["brute"]
+REFERENCES = (REFERENCE, BRUTE)  # the variants the candidates are judged against
 MEAN_TOLERANCE, PEAK_TOLERANCE = STUDY["mean_tolerance"], STUDY["peak_tolerance"]
 
 
@@ -116,13 +117,13 @@ def main(argv=None):
     except spec.SweepError as e:
         sys.exit(f"scripts/convergence: {e}")
     models = list(dict.fromkeys(r.scenario for r in runs))
-    settings = list(dict.fromkeys(r.variant for r in runs if not r.variant.startswith("reference")))
+    settings = list(dict.fromkeys(r.variant for r in runs if r.variant not in REFERENCES))
     for given, known, what in ((a.models, models, "model"), (a.settings, settings, "setting")):
         for x in given or ():
             if x not in known:
                 sys.exit(f"scripts/convergence: unknown {what} '{x}'; known: {', '.join(known)}")
     runs = [r for r in runs if (not a.models or r.scenario in a.models)
-            and (r.variant.startswith("reference") or not a.settings or r.variant in a.settings)
+            and (r.variant in REFERENCES or not a.settings or r.variant in a.settings)
             and not (a.no_brute and r.variant == BRUTE)]
     if not a.report_only and not os.access(a.icedem, os.X_OK):
         sys.exit(f"scripts/convergence: no icedem executable at {a.icedem} (build it: scripts/setup.sh)")
@@ -182,7 +183,7 @@ def report(a, runs, found, out, start, wall):
                          f"{e['breaks']:.1f} ± {e['breaks_hw']:.1f}{'' if breaks_ok else ' (out)'} | "
                          f"{e['sweeps']:.1f} | {100 * e['capped']:.0f} % | {e['cpu']:.1f} | {ratio:.2f} | "
                          f"{'yes' if ok else 'no'} |")
-            if not n.startswith("reference"):
+            if n not in REFERENCES:
                 pareto[title].append((n, ratio, err, ok))
         good = sorted((p for p in pareto[title] if p[3]), key=lambda p: p[1])
         lines += ["", f"Cheapest setting within tolerance: **{good[0][0]}**, {good[0][1]:.2f} times the paper "
