@@ -24,11 +24,11 @@ bool rectangle_half_extents(const Polygon& p, double& hx, double& hz) {
 }  // namespace
 
 double principal_yaw(const Polygon& outline) {
-  const AreaMoments m = area_moments(outline);
-  const double scale = m.sxx + m.szz;
-  if (std::abs(m.sxz) <= 1e-12 * scale && std::abs(m.sxx - m.szz) <= 1e-12 * scale) return 0.0;
+  const CentroidalMoments m = centroidal_moments(outline);
+  const double scale = m.ixx + m.izz;
+  if (std::abs(m.ixz) <= 1e-12 * scale && std::abs(m.ixx - m.izz) <= 1e-12 * scale) return 0.0;
   Eigen::Matrix2d tensor;
-  tensor << m.sxx, m.sxz, m.sxz, m.szz;
+  tensor << m.ixx, m.ixz, m.ixz, m.izz;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(tensor);
   const Eigen::Vector2d e1 = eig.eigenvectors().col(1);  // the long axis becomes body x
   return std::atan2(-e1.y(), e1.x());  // body +x maps to (cos, -sin) under yaw (polygon.hpp)
@@ -42,11 +42,12 @@ std::unique_ptr<FloeShape> make_floe_shape(const Polygon& outline, double h, dou
   s->prism = make_prism(s->outline, h);
   s->radius = bounding_radius(s->outline);
 
-  const AreaMoments m = area_moments(s->outline);
+  // about the centroid, which is the body origin (the outline is centred on it)
+  const CentroidalMoments m = centroidal_moments(s->outline);
   s->mass = density * m.area * h;
   const double rho_h = density * h;
   const double plate = s->mass * h * h / 12;  // thickness contribution about horizontal axes
-  s->inertia = {rho_h * m.szz + plate, rho_h * (m.sxx + m.szz), rho_h * m.sxx + plate};
+  s->inertia = {rho_h * m.izz + plate, rho_h * (m.ixx + m.izz), rho_h * m.ixx + plate};
 
   s->damping = damping_coefficients(s->prism, s->mass, std::min(s->inertia.x(), s->inertia.z()), water);
 

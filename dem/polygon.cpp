@@ -105,21 +105,6 @@ double signed_area(const Polygon& polygon) {
 
 double area(const Polygon& polygon) { return std::abs(signed_area(polygon)); }
 
-AreaMoments area_moments(const Polygon& p) {
-  double a = 0, sxx = 0, szz = 0, sxz = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Eigen::Vector2d& u = p[i];
-    const Eigen::Vector2d& v = p[(i + 1) % p.size()];
-    const double c = u.x() * v.y() - v.x() * u.y();
-    a += c / 2;
-    sxx += c * (u.x() * u.x() + u.x() * v.x() + v.x() * v.x()) / 12;
-    szz += c * (u.y() * u.y() + u.y() * v.y() + v.y() * v.y()) / 12;
-    sxz += c * (u.x() * v.y() + 2 * u.x() * u.y() + 2 * v.x() * v.y() + v.x() * u.y()) / 24;
-  }
-  const double s = a < 0 ? -1.0 : 1.0;  // either vertex order
-  return {s * a, s * sxx, s * szz, s * sxz};
-}
-
 CentroidalMoments centroidal_moments(const Polygon& hull) {
   CentroidalMoments m;
   if (hull.size() < 3) return m;
@@ -176,26 +161,15 @@ Polygon convex_hull(std::vector<Eigen::Vector2d> points) {
 }
 
 Eigen::Vector2d centroid(const Polygon& polygon) {
-  const size_t n = polygon.size();
-  assert(n > 0);
-  // fan of triangles from the first vertex; each weighs by its signed area
-  Eigen::Vector2d weighted = Eigen::Vector2d::Zero();
-  double twice_area = 0.0;
-  for (size_t i = 1; i + 1 < n; ++i) {
-    const Eigen::Vector2d a = polygon[i] - polygon[0];
-    const Eigen::Vector2d b = polygon[i + 1] - polygon[0];
-    const double c = cross(a, b);
-    twice_area += c;
-    weighted += c * (a + b);
-  }
-  if (n < 3 || std::abs(twice_area) <= kRelTol * kRelTol * std::pow(extent(polygon), 2)) {
+  assert(!polygon.empty());
+  const CentroidalMoments m = centroidal_moments(polygon);
+  if (polygon.size() < 3 || m.area <= 0.5 * kRelTol * kRelTol * std::pow(extent(polygon), 2)) {
     // no area: fall back to the vertex mean
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     for (const auto& v : polygon) mean += v;
-    return mean / static_cast<double>(n);
+    return mean / static_cast<double>(polygon.size());
   }
-  // triangle centroid = (p0 + a + b) / 3 relative to p0
-  return polygon[0] + weighted / (3.0 * twice_area);
+  return m.centroid;
 }
 
 bool is_convex(const Polygon& polygon) {

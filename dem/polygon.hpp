@@ -28,19 +28,10 @@ double signed_area(const Polygon& polygon);
 /// Absolute area in m^2.
 double area(const Polygon& polygon);
 
-/// Second moments of area of a polygon about the origin of its frame (its own
-/// centroid for a floe outline), either vertex order.
-struct AreaMoments {
-  double area;  // m^2
-  double sxx;   // m^4, integral of x^2 dA
-  double szz;   // m^4, integral of z^2 dA
-  double sxz;   // m^4, integral of x z dA
-};
-AreaMoments area_moments(const Polygon& polygon);
-
 /// Area, centroid and second moments about the centroid of a polygon (either vertex order),
 /// summed relative to its first vertex (small numbers, for polygons far from the origin).
-/// Zero area for fewer than three vertices.
+/// Zero area for fewer than three vertices. The one shoelace sum behind a floe's mass and
+/// inertia, a waterplane section's stiffness and centroid().
 struct CentroidalMoments {
   double area = 0;                                     // m^2
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();  // m
