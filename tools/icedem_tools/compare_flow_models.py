@@ -101,7 +101,12 @@ def write_report(a, results, setup, V):
     lines = ["# Hydrodynamic models compared", "",
              f"Command: `scripts/compare_flow_models.py{' --probe' if a.probe else ''}"
              f"{f' --duration {a.duration:g}' if a.duration else ''} --seed {a.seed}` on "
-             f"`{os.path.relpath(a.scenario, ROOT)}`. One core per run.", "",
+             f"`{os.path.relpath(a.scenario, ROOT)}`, at the scenario's own numerics. One core per run.", "",
+             "One seed is one sample of a chaotic pack: the loads below differ between the models by less "
+             "than they differ between seeds. Whether a flow model moves the mean or the maximum beyond that "
+             "scatter is measured over 10 seeds per model (`sweeps/flow_models.toml`) in the paper report's "
+             "section \"Flow models over seeds\" ([report](../paper_reproduction/report.md)). This page "
+             "gives what one run cannot be told from the ensemble: the costs and the flow itself.", "",
              f"OpenFOAM set-up (coarse mesh: blockMesh, snappyHexMesh, potentialFoam, grad, probes on the grid) "
              f"from an empty cache: {setup[0]:.1f} s wall, {setup[1]:.1f} s CPU.", "",
              "Costs are CPU times (of icedem and, in probe mode, the partner and OpenFOAM); wall times "
