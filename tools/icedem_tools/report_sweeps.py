@@ -99,6 +99,45 @@ def flow_section(flow_sweep, rows):
     return L + ["", "± are 95 % confidence half-widths over the seeds; a difference is beyond the scatter when "
                 "it exceeds the root sum of squares of the two half-widths.", ""]
 
+# a ratio "moved" when every seed moved the same way and the mean ratio is beyond this
+MOVED = 0.05
+
+
+def convergence_verdict(got):
+    """What moved with the numerics, in words: a load whose every seed's ratio to its default
+    run lies on one side of 1 with the mean ratio beyond MOVED (a few seeds of a chaotic pack
+    cannot show a smaller change), and the breaks per run against the default's."""
+    moved, breaks = [], []
+    for (model, numerics), runs_ in got.items():
+        base = got.get((model, "default"), {})
+        if numerics == "default" or not base:
+            continue
+        seeds = sorted(set(runs_) & set(base))
+        for key, label in (("mean_fx_N", "mean"), ("max_fx_N", "max")):
+            r = [runs_[sd][key] / base[sd][key] for sd in seeds if runs_[sd].get(key) and base[sd].get(key)]
+            if len(r) >= 2 and (min(r) > 1 or max(r) < 1) and abs(sum(r) / len(r) - 1) > MOVED:
+                moved.append(f"{model} {label} with {numerics}: {sum(r) / len(r):.2f} "
+                             f"({min(r):.2f}-{max(r):.2f}) in every seed")
+        b0 = sum(base[sd].get("breaks", 0) for sd in seeds)
+        b1 = sum(runs_[sd].get("breaks", 0) for sd in seeds)
+        if b0 or b1:
+            times = f", {b1 / b0:.1f} times" if b0 else ""
+            breaks.append(f"{model} with {numerics}: {b1} against {b0} in the same {len(seeds)} seeds{times}")
+    L = [""]
+    if moved:
+        L.append(f"**Not converged** (every seed moved the same way, by more than {100 * MOVED:.0f} % on "
+                 "average): " + "; ".join(moved) + ". The grid's value of these loads is labelled by this "
+                 "ratio; its scatter over seeds does not cover it.")
+    else:
+        L.append(f"No load moved the same way in every seed by more than {100 * MOVED:.0f} % on average.")
+    if breaks:
+        L.append("")
+        L.append("Breaks: " + "; ".join(breaks) + ". Break counts are rare events of a chaotic pack; a "
+                 "ratio of several on a few seeds says the grid's counts (and the mechanism shares built "
+                 "on them) depend on the step and the solve.")
+    return L
+
+
 def convergence_section(conv_sweep, records):
     """The grid's numbers against a halved step and a tighter solve (a sweep whose scenarios are
     <model>+<numerics>, e.g. sweeps/paper_convergence.toml), compared seed by seed, and whether
@@ -136,6 +175,7 @@ def convergence_section(conv_sweep, records):
                      f"{fmt(sum(cpu) / len(cpu) if cpu else None, '', 0)} |")
     L += ["", "Ratios: the mean over seeds of each seed's value against the same seed's default run, with "
           "the range over seeds in brackets."]
+    L += convergence_verdict(got)
     # the default runs are the grid's runs of the same seeds at f_ii 0.5, f_is 0.2: they must agree
     same, differ = 0, []
     for (model, numerics), by_seed in got.items():
