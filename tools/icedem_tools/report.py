@@ -191,7 +191,7 @@ def main(argv=None):
     if args.convergence:
         L += convergence_section(os.path.abspath(args.convergence), records)
     for sup in supplements:
-        L += supplement_section(*sup)
+        L += supplement_section(*sup, grid_rows=rows, records=records)
     if args.before:
         L += before_section(rows, os.path.abspath(args.before), args.before_note)
     L += configuration_table(rows) + run_time_section(summaries, out, len(runs))

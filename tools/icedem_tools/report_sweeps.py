@@ -8,9 +8,10 @@ import os
 from . import aggregate as agg, execute, spec
 from .report_tables import FII, FIS, ci, fmt, num, pick, ratio_to_first, read_rows, supplement_rows, sweep_about
 
-def supplement_section(sweep_file, name, runs, out, rows):
+def supplement_section(sweep_file, name, runs, out, rows, grid_rows=None, records=None):
     """The configurations of another aggregated sweep (its supplement_rows), with their max
-    against the first one's."""
+    against the first one's; configurations named <model>+<numerics> also against the grid's
+    own runs of that model at f_ii 0.5, f_is 0.2 (grid_rows, records: the grid's)."""
     if rows is None:
         return [f"## Supplement: sweep `{name}`", "", f"Not aggregated yet (`scripts/sweep aggregate {sweep_file}`).", ""]
     done = sum(1 for r in runs if execute.status(r, out).state == "done")
@@ -24,7 +25,49 @@ def supplement_section(sweep_file, name, runs, out, rows):
         L.append(f"| {r['configuration']} | {r['seeds']} | {ci(r, 'mean_fx_N')} | {ci(r, 'max_fx_N')} | "
                  f"{ratio_to_first(rows, r, 'mean_fx_N')} | {ratio_to_first(rows, r, 'max_fx_N')} | "
                  f"{fmt(per / n if per is not None and n else None, '', 0)} |")
-    return L + [""]
+    return L + [""] + numerics_against_grid(runs, out, rows, grid_rows or [], records or {})
+
+
+def numerics_against_grid(runs, out, rows, grid_rows, records):
+    """Each <model>+<numerics> configuration of a supplement against the grid's runs of that
+    model at f_ii 0.5, f_is 0.2 (the default numerics): mean and max with whether the
+    difference exceeds the seeds' scatter, and breaks per run."""
+    def breaks_per_run(summaries):
+        return sum(x.get("breaks", 0) for x in summaries) / len(summaries) if summaries else None
+    grid_breaks = {}
+    for model, recs in records.items():
+        at_ref = [rec["summary"] for r, rec in recs
+                  if dict(r.grid).get(FII) == 0.5 and dict(r.grid).get(FIS) == 0.2]
+        grid_breaks[model] = breaks_per_run(at_ref)
+    sup = collections.defaultdict(list)
+    for r in runs:
+        if execute.status(r, out).state == "done":
+            sup[r.scenario].append(agg.load_record(r, out)["summary"])
+    L = []
+    for r in rows:
+        model, plus, numerics = r["scenario"].partition("+")
+        g = pick(grid_rows, model) if plus else None
+        if g is None:
+            continue
+        if not L:
+            L = ["Against the grid's own runs of the same model at f_ii 0.5, f_is 0.2 (the default "
+                 "numerics): a difference is beyond the scatter when it exceeds the two 95 % half-widths "
+                 "combined (root of the sum of squares).", "",
+                 "| configuration | seeds here / grid | mean N here − grid | beyond scatter? | ratio | "
+                 "max N here − grid | beyond scatter? | ratio | breaks per run here / grid |",
+                 "|---|---|---|---|---|---|---|---|---|"]
+        cells = []
+        for key in ("mean_fx_N", "max_fx_N"):
+            a, b = num(r, key), num(g, key)
+            if a is None or not b:
+                cells += ["n/a", "n/a", "n/a"]
+                continue
+            h = math.hypot(num(r, key + "_ci95") or 0.0, num(g, key + "_ci95") or 0.0)
+            cells += [f"{a - b:+.1f} (± {h:.1f})", "**yes**" if abs(a - b) > h else "no", f"{a / b:.2f}"]
+        here, there = breaks_per_run(sup.get(r["scenario"], [])), grid_breaks.get(model)
+        L.append(f"| {r['configuration']} | {r['seeds']} / {g['seeds']} | " + " | ".join(cells) +
+                 f" | {fmt(here, '', 1)} / {fmt(there, '', 1)} |")
+    return L + ([""] if L else [])
 
 def before_section(rows, before_out, note):
     """Every configuration against the same sweep run with an earlier build (its output
