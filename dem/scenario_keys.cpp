@@ -209,7 +209,9 @@ std::vector<KeySpec> make_keys() {
   k.push_back(real("fracture.element_size", "m", 0.15, 0.01, 100.0,
                        "side of the square ice elements (paper: 0.15 / 0.20 m)"));
   k.push_back(real("fracture.cfm", "-", 1.0e-10, 0.0, 1.0,
-                   "constraint force mixing of the element joints (Bullet units)"));
+                   "constraint force mixing of the element joints (Bullet units); the joints' "
+                   "stiffness depends on it and on the step: recalibrate (icedem calibrate) when "
+                   "time.dt or time.substeps change"));
   k.push_back(real("fracture.erp", "-", 0.8, 0.0, 1.0, "error reduction of the element joints (paper: 0.8)"));
   k.push_back(integer("fracture.joint_iterations", 0, 0, 100000,
                       "PGS iterations for the element joints (Bullet's per-constraint override; "
