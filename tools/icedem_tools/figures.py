@@ -41,7 +41,6 @@ from .report_tables import FII, FIS, read_rows
 RUN_H5 = runner.RUN_FILES["h5"]
 
 
-
 def save(fig, path):
     fig.tight_layout()
     fig.savefig(path, dpi=110)

@@ -8,6 +8,38 @@ import os
 from . import aggregate as agg, execute, spec
 from .report_tables import FII, FIS, ci, fmt, num, pick, ratio_to_first, read_rows, supplement_rows, sweep_about
 
+
+def at_reference(run):
+    """Whether a grid run is at the paper's reference friction, f_ii 0.5, f_is 0.2."""
+    g = dict(run.grid)
+    return g.get(FII) == 0.5 and g.get(FIS) == 0.2
+
+
+def finished_summaries(runs, out):
+    """{scenario: {seed: summary}} of a sweep's finished runs (here or by their records)."""
+    found = collections.defaultdict(dict)
+    for r in runs:
+        if execute.status(r, out).state == "done":
+            found[r.scenario][r.seed] = agg.load_record(r, out)["summary"]
+    return found
+
+
+def beyond_scatter(row, ref, key):
+    """(difference "+d (± h)", "**yes**" or "no") of two aggregated rows' `key`: beyond the
+    scatter when the difference exceeds the root sum of squares of their 95 % half-widths."""
+    a, b = num(row, key), num(ref, key)
+    if a is None or b is None:
+        return "n/a", "n/a"
+    h = math.hypot(num(row, key + "_ci95") or 0.0, num(ref, key + "_ci95") or 0.0)
+    return f"{a - b:+.1f} (± {h:.1f})", ("**yes**" if abs(a - b) > h else "no")
+
+
+def seed_ratios(runs_, base, key):
+    """Each seed's `key` against the same seed's run in base ({seed: summary} both)."""
+    return [runs_[sd][key] / base[sd][key] for sd in sorted(set(runs_) & set(base))
+            if runs_[sd].get(key) and base[sd].get(key)]
+
+
 def supplement_section(sweep_file, name, runs, out, rows, grid_rows=None, records=None):
     """The configurations of another aggregated sweep (its supplement_rows), with their max
     against the first one's; configurations named <model>+<numerics> also against the grid's
@@ -34,15 +66,9 @@ def numerics_against_grid(runs, out, rows, grid_rows, records):
     difference exceeds the seeds' scatter, and breaks per run."""
     def breaks_per_run(summaries):
         return sum(x.get("breaks", 0) for x in summaries) / len(summaries) if summaries else None
-    grid_breaks = {}
-    for model, recs in records.items():
-        at_ref = [rec["summary"] for r, rec in recs
-                  if dict(r.grid).get(FII) == 0.5 and dict(r.grid).get(FIS) == 0.2]
-        grid_breaks[model] = breaks_per_run(at_ref)
-    sup = collections.defaultdict(list)
-    for r in runs:
-        if execute.status(r, out).state == "done":
-            sup[r.scenario].append(agg.load_record(r, out)["summary"])
+    grid_breaks = {model: breaks_per_run([rec["summary"] for r, rec in recs if at_reference(r)])
+                   for model, recs in records.items()}
+    sup = finished_summaries(runs, out)
     L = []
     for r in rows:
         model, plus, numerics = r["scenario"].partition("+")
@@ -62,9 +88,8 @@ def numerics_against_grid(runs, out, rows, grid_rows, records):
             if a is None or not b:
                 cells += ["n/a", "n/a", "n/a"]
                 continue
-            h = math.hypot(num(r, key + "_ci95") or 0.0, num(g, key + "_ci95") or 0.0)
-            cells += [f"{a - b:+.1f} (± {h:.1f})", "**yes**" if abs(a - b) > h else "no", f"{a / b:.2f}"]
-        here, there = breaks_per_run(sup.get(r["scenario"], [])), grid_breaks.get(model)
+            cells += [*beyond_scatter(r, g, key), f"{a / b:.2f}"]
+        here, there = breaks_per_run(list(sup.get(r["scenario"], {}).values())), grid_breaks.get(model)
         L.append(f"| {r['configuration']} | {r['seeds']} / {g['seeds']} | " + " | ".join(cells) +
                  f" | {fmt(here, '', 1)} / {fmt(there, '', 1)} |")
     return L + ([""] if L else [])
@@ -125,13 +150,7 @@ def flow_section(flow_sweep, rows):
           "beyond scatter? | CPU per run s |", "|---|---|---|---|---|---|---|---|---|"]
 
     def diff(r, key):
-        if ref is None or r is ref:
-            return "", ""
-        a, b = num(r, key), num(ref, key)
-        if a is None or b is None:
-            return "n/a", "n/a"
-        h = math.hypot(num(r, key + "_ci95") or 0.0, num(ref, key + "_ci95") or 0.0)
-        return f"{a - b:+.1f} (± {h:.1f})", ("**yes**" if abs(a - b) > h else "no")
+        return ("", "") if ref is None or r is ref else beyond_scatter(r, ref, key)
     for label, r in table:
         dm, bm = diff(r, "mean_fx_N")
         dx, bx = diff(r, "max_fx_N")
@@ -157,7 +176,7 @@ def convergence_verdict(got):
             continue
         seeds = sorted(set(runs_) & set(base))
         for key, label in (("mean_fx_N", "mean"), ("max_fx_N", "max")):
-            r = [runs_[sd][key] / base[sd][key] for sd in seeds if runs_[sd].get(key) and base[sd].get(key)]
+            r = seed_ratios(runs_, base, key)
             if len(r) >= 2 and (min(r) > 1 or max(r) < 1) and abs(sum(r) / len(r) - 1) > MOVED:
                 moved.append(f"{model} {label} with {numerics}: {sum(r) / len(r):.2f} "
                              f"({min(r):.2f}-{max(r):.2f}) in every seed")
@@ -187,11 +206,9 @@ def convergence_section(conv_sweep, records):
     its default runs repeat the grid's runs of the same seeds."""
     name, runs, out, _ = supplement_rows(conv_sweep)
     L = ["## Convergence of the grid's loads", "", sweep_about(conv_sweep), ""]
-    got = collections.defaultdict(dict)  # (model, numerics) -> {seed: summary}
-    for r in runs:
-        if execute.status(r, out).state == "done":
-            model, _, numerics = r.scenario.partition("+")
-            got[(model, numerics)][r.seed] = agg.load_record(r, out)["summary"]
+    # (model, numerics) -> {seed: summary}
+    got = {(scenario.partition("+")[0], scenario.partition("+")[2]): by_seed
+           for scenario, by_seed in finished_summaries(runs, out).items()}
     if not got:
         return L + [f"No finished runs yet (`scripts/sweep run {os.path.relpath(conv_sweep, spec.ROOT)}`).", ""]
     L += ["| model | numerics | seeds | mean: ratio to default | max: ratio to default | breaks per run | "
@@ -204,9 +221,7 @@ def convergence_section(conv_sweep, records):
         base = got.get((model, "default"), {})
         for numerics in [n for m, n in got if m == model]:
             runs_ = got[(model, numerics)]
-            seeds = sorted(set(runs_) & set(base))
-            ratios = {k: [runs_[sd][k] / base[sd][k] for sd in seeds if runs_[sd].get(k) and base[sd].get(k)]
-                      for k in ("mean_fx_N", "max_fx_N")}
+            ratios = {k: seed_ratios(runs_, base, k) for k in ("mean_fx_N", "max_fx_N")}
             br = [x.get("breaks", 0) for x in runs_.values()]
             sw = [(x.get("solver") or {}).get("iterations_mean") for x in runs_.values()]
             sw = [v for v in sw if v is not None]
@@ -225,8 +240,7 @@ def convergence_section(conv_sweep, records):
         if numerics != "default":
             continue
         for r, rec in records.get(model, []):
-            g = dict(r.grid)
-            if g.get(FII) == 0.5 and g.get(FIS) == 0.2 and r.seed in by_seed:
+            if at_reference(r) and r.seed in by_seed:
                 a, b = rec["summary"].get("max_fx_N"), by_seed[r.seed].get("max_fx_N")
                 if a == b:
                     same += 1
