@@ -83,7 +83,8 @@ void write_json(const std::string& path, const nlohmann::json& j) {
 }
 
 int run_command(const std::string& scenario_path, std::string output, const std::vector<std::string>& sets,
-                const std::string& summary_path, bool quiet, const std::string& command_line) {
+                const std::string& summary_path, bool quiet, const std::string& command_line,
+                const ProblemExportSettings& problems) {
   const Scene scene = load_scene(scenario_path, sets);
   if (output.empty()) output = std::filesystem::path(scenario_path).stem().string() + ".h5";
   const std::filesystem::path dir = std::filesystem::absolute(output).parent_path();
@@ -92,9 +93,11 @@ int run_command(const std::string& scenario_path, std::string output, const std:
   refuse_input_as_output(output, {scenario_path, scene.layout.file});
   if (!summary_path.empty()) require_writable(summary_path, "--summary-json");
   const OutputLock lock(output);  // one run per output file
-  RunOptions options{output, !quiet, command_line, openfoam_coupling()};
+  RunOptions options{output, !quiet, command_line, openfoam_coupling(), problems};
   const RunSummary summary = run_simulation(scene, options);
   std::cout << summary_table(summary) << std::flush;
+  if (!problems.directory.empty())
+    std::cout << fmt::format("{} contact problems written to {}\n", summary.problem_files.size(), problems.directory);
   if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
   return summary.status == "interrupted" ? kExitInterrupted : kExitOk;
 }
@@ -214,6 +217,16 @@ int main(int argc, char** argv) {
   run->add_option("--set", sets, "override a scenario key, e.g. --set friction.ice_ice=0.3")->take_all();
   run->add_option("--summary-json", summary_path, "write the run summary as JSON to this file");
   run->add_flag("-q,--quiet", quiet, "no progress line");
+  ProblemExportSettings problems;
+  run->add_option("--export-problems", problems.directory,
+                  "write contact problems of chosen steps to this directory (FCLIB files; "
+                  "docs/model/contact_problems.md)");
+  run->add_option("--export-at", problems.times, "s: export the islands of the steps holding these times")
+      ->delimiter(',');
+  run->add_option("--export-capped", problems.capped, "export up to this many islands that stopped at the sweep cap");
+  run->add_option("--export-spacing", problems.capped_spacing, "s, least time between two capped exports (default 1)");
+  run->add_option("--export-min-contacts", problems.min_contacts, "leave out islands with fewer contacts (default 1)");
+  run->add_option("--export-name", problems.name, "file name prefix (default: problem)");
 
   CLI::App* check = app.add_subcommand("check", "validate a scenario (and its floe layout) only");
   check->add_option("scenario", scenario, "scenario TOML file")->required();
@@ -259,7 +272,8 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return run_command(scenario, output, sets, summary_path, quiet, joined_command_line(argc, argv));
+    if (*run)
+      return run_command(scenario, output, sets, summary_path, quiet, joined_command_line(argc, argv), problems);
     if (*check) return check_command(scenario, sets);
     if (*stl) return stl_command(scenario, sets, output);
     if (*calibrate) return calibrate_command(scenario, sets, target_modulus, write_path);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
@@ -238,6 +239,11 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
     joint_sweeps = std::max(joint_sweeps, m_tmpSolverNonContactConstraintPool[j].m_overrideNumSolverIterations);
   const int cap = info.m_numIterations;
   const bool has_contacts = !order_.empty();
+  std::optional<ContactProblem> problem;
+  if (observer_ && has_contacts && observer_->wants_problems()) {
+    problem = capture_problem(info);
+    problem->island = report_.islands;
+  }
 
   int contact_sweeps = 0;
   double residual = 0.0, previous_change = 0.0;
@@ -269,10 +275,35 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
   if (has_contacts) {
     report_.iterations = std::max(report_.iterations, contact_sweeps);
     report_.residual = std::max(report_.residual, residual);
-    if (residual > settings_.tolerance && contact_sweeps >= cap) report_.capped = true;
+    const bool capped = residual > settings_.tolerance && contact_sweeps >= cap;
+    if (capped) report_.capped = true;
     ++report_.islands;
+    if (problem) {
+      SolverAnswer answer = row_impulses();
+      answer.sweeps = contact_sweeps;
+      answer.residual = residual;
+      answer.capped = capped;
+      observer_->solved(*problem, answer);
+    }
   }
   return 0.f;
+}
+
+SolverAnswer ContactSolver::row_impulses() const {
+  SolverAnswer a;
+  const int contacts = m_tmpSolverContactConstraintPool.size();
+  a.r.resize(3 * contacts);
+  for (int c = 0; c < contacts; ++c) {
+    const btSolverConstraint& normal = m_tmpSolverContactConstraintPool[c];
+    a.r(3 * c) = normal.m_appliedImpulse;
+    for (int k = 0; k < 2; ++k)
+      a.r(3 * c + 1 + k) =
+          two_directions_ || k == 0 ? m_tmpSolverContactFrictionConstraintPool[normal.m_frictionIndex + k].m_appliedImpulse : 0.0;
+  }
+  a.l.resize(m_tmpSolverNonContactConstraintPool.size());
+  for (int j = 0; j < m_tmpSolverNonContactConstraintPool.size(); ++j)
+    a.l(j) = m_tmpSolverNonContactConstraintPool[j].m_appliedImpulse;
+  return a;
 }
 
 btScalar ContactSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies,

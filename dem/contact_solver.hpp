@@ -47,7 +47,20 @@
 
 #include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
 
+#include "dem/contact_problem.hpp"
+
 namespace icedem {
+
+/// Sees the contact problems of chosen Bullet steps (dem/contact_problem_export.hpp
+/// writes them to files).
+class ProblemObserver {
+ public:
+  virtual ~ProblemObserver() = default;
+  /// Whether to capture the islands of the Bullet step being solved.
+  virtual bool wants_problems() const = 0;
+  /// An island's problem as it stood before the sweeps, and what the sweeps made of it.
+  virtual void solved(const ContactProblem& problem, const SolverAnswer& answer) = 0;
+};
 
 /// Order of the contact rows within a sweep.
 enum class SweepOrder {
@@ -88,6 +101,9 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
 
   /// The structure whose load the residual follows (null: none).
   void set_structure(const btCollisionObject* structure) { structure_ = structure; }
+
+  /// Let `observer` (not owned; null: none) see the problems of the steps it wants.
+  void set_observer(ProblemObserver* observer) { observer_ = observer; }
 
   /// Accumulated over the solves since the last clear (the owner clears it every step).
   SolverReport& report() { return report_; }
@@ -137,9 +153,14 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   // in the given direction of the order; returns the largest change of a contact impulse, N s
   double sweep(int iteration, bool contacts, bool reverse);
   btVector3 structure_impulse() const;
+  // the problem of the island whose rows are set up (dem/contact_problem_bullet.cpp)
+  ContactProblem capture_problem(const btContactSolverInfo& info) const;
+  // the impulses the rows hold now
+  SolverAnswer row_impulses() const;
 
   ContactSolverSettings settings_;
   const btCollisionObject* structure_ = nullptr;
+  ProblemObserver* observer_ = nullptr;
   SolverReport report_;
   std::vector<StructureRow> structure_rows_;  // of the current group
   bool two_directions_ = false;               // two friction rows per contact (else one), set per group

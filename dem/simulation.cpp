@@ -192,6 +192,10 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   // initial conditions
   const Layout layout = scene_layout(scene);
   State state = initial_state(scene, layout.floes, options.coupling);
+  if (!options.problems.directory.empty()) {
+    state.problem_export = std::make_unique<ProblemExport>(options.problems, scene.source_path);
+    state.world->set_problem_observer(state.problem_export.get());
+  }
   summary.floes = static_cast<int>(layout.floes.size());
   summary.achieved_concentration = layout.achieved_concentration;
 
@@ -287,6 +291,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   for (int n : state.breaks_by_mode) summary.breaks += n;
   compute_statistics(scene, history, summary);
   summary.solver = solver_summary(scene, history, summary);
+  if (state.problem_export) summary.problem_files = state.problem_export->files();
   if (validation) summary.validation = validation->result(scene).to_json();
   summary.wall_time_s = wall();
   summary.cpu_time_s = process_cpu_time();

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "dem/contact_problem_export.hpp"
 #include "dem/flow_coupling.hpp"
 #include "dem/scene.hpp"
 #include "dem/summary.hpp"
@@ -16,6 +17,7 @@ struct RunOptions {
   bool progress = true;           // progress line on stderr
   std::string command_line;       // recorded in /meta
   FlowCoupling coupling;          // the OpenFOAM coupling, if the program links it (dem/flow_coupling.hpp)
+  ProblemExportSettings problems; // contact problems to write (directory empty: none)
 };
 
 /// Run the scene to the end (or until interrupted). Throws NumericalError after

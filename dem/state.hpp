@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "dem/break_context.hpp"
+#include "dem/contact_problem_export.hpp"
 #include "dem/diagnostics.hpp"
 #include "dem/drag_exchange.hpp"
 #include "dem/flow_field.hpp"
@@ -35,6 +36,7 @@ struct State {
   std::unique_ptr<World> world;     // Bullet bodies; poses and velocities change every step
   std::unique_ptr<FlowField> flow;  // water velocity model; follows the structure
   std::unique_ptr<DragExchange> drag_exchange;  // exchanged drag (probe mode), else null
+  std::unique_ptr<ProblemExport> problem_export;  // writes chosen steps' contact problems, else null
 
   double time = 0.0;  // s, simulated; written by step()
   long step = 0;      // completed steps; written by step()

@@ -98,6 +98,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
     { StageTimer t(times.structure); move_structure(scene, state, t_next); }
     { StageTimer t(times.water); apply_water_forces(scene, state); }
     if (loads) loads->apply(*state.world);
+    if (state.problem_export) state.problem_export->begin_step(state.step, t_next, h);
     { StageTimer t(times.bullet); advance_bullet(state, h); }
     { StageTimer t(times.load_cell); read_load_cell(state, cell); }
     state.time = t_next;

@@ -62,6 +62,7 @@ struct RunSummary {
   DiagnosticExtremes health;  // extremes of the per-step diagnostics (speeds, energy, ice mass, ...)
   std::vector<std::string> warnings;  // scene warnings (step_size_warnings), printed first
   nlohmann::json validation;  // validation block of a validation case, null otherwise
+  std::vector<std::string> problem_files;  // contact problems written (--export-problems); not in the JSON
 };
 
 /// One key of the summary JSON. The numeric keys marked `stats` are also written as

@@ -125,6 +125,9 @@ class World {
   /// the next Bullet step; Bullet derives its velocity from the motion.
   void set_structure_target(const Eigen::Vector3d& position);
 
+  /// Let `observer` (not owned; null: none) see the contact problems of the steps it wants.
+  void set_problem_observer(ProblemObserver* observer) { solver_->set_observer(observer); }
+
   /// What the contact solver did since the report was last cleared.
   SolverReport& solver_report() { return solver_->report(); }
 

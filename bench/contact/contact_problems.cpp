@@ -1,0 +1,183 @@
+// contact_problems: tools on contact problem files (dem/contact_problem_file.hpp).
+//
+//   contact_problems solve FILE... [--method M ...] [--tolerance T] [--max-iterations N] [--cold]
+//       solve each problem with each method; print iterations, merit and CPU time
+//   contact_problems reference FILE...
+//       solve each problem to a merit of 1e-10 with Siconos numerics, cross-check the
+//       answer with a second method, and write it into the file as FCLIB's /solution
+//       with /icedem/reference saying how it was found (or why none was)
+//
+// The merit is natural_map_residual on the Delassus form (dem/contact_problem.hpp),
+// the same for every method.
+#include <ctime>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <H5Cpp.h>
+#include <fmt/format.h>
+
+#include "dem/contact_method.hpp"
+#include "dem/contact_problem_file.hpp"
+#include "dem/contact_siconos.hpp"
+#include "dem/errors.hpp"
+#include "dem/hdf5_io.hpp"
+
+extern "C" {
+#include <fclib.h>
+}
+
+using namespace icedem;
+
+namespace {
+
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+Eigen::VectorXd guess_of(const ContactProblem& p) {
+  Eigen::VectorXd g(p.contact_rows());
+  for (int c = 0; c < static_cast<int>(p.contacts.size()); ++c) g.segment<3>(3 * c) = p.contacts[c].guess;
+  return g;
+}
+
+int solve_command(const std::vector<std::string>& files, std::vector<std::string> methods, double tolerance,
+                  int max_iterations, bool cold) {
+  if (methods.empty()) methods = contact_method_names();
+  std::cout << fmt::format("{:<40} {:>7} {:>6} {:<16} {:>7} {:>10} {:>9}\n", "problem", "contacts", "joints", "method",
+                           "iters", "merit", "cpu ms");
+  for (const std::string& path : files) {
+    const ProblemFile file = read_problem_file(path);
+    const ContactProblem& p = file.problem;
+    const LocalForm local = local_form(p);
+    for (const std::string& name : methods) {
+      MethodOptions o;
+      o.tolerance = tolerance;
+      o.max_iterations = max_iterations;
+      o.warm_start = !cold;
+      const double t0 = cpu_seconds();
+      const SolverAnswer a = make_contact_method(name)->solve(p, o);
+      const double cpu = cpu_seconds() - t0;
+      std::cout << fmt::format("{:<40} {:>7} {:>6} {:<16} {:>7} {:>10.3e} {:>9.2f}\n",
+                               std::filesystem::path(path).filename().string(), p.contacts.size(), p.joint_rows(), name,
+                               a.sweeps, natural_map_residual(local, a.r), 1e3 * cpu);
+    }
+  }
+  return 0;
+}
+
+// The reference of one problem: Siconos' semismooth Newton (Alart-Curnier) to 1e-10,
+// then Fischer-Burmeister, then NSGS with a large cap if it fails; the answer is
+// cross-checked against the next method that also reaches 1e-8.
+struct Reference {
+  std::string status;     // "solved" or "unsolved"
+  std::string method;     // the method whose answer is kept
+  double merit = 0;       // of the kept answer
+  std::string check;      // the cross-checking method, "" if none reached 1e-8
+  double difference = 0;  // |r - r_check| / |r|
+  Eigen::VectorXd r;
+};
+
+Reference reference_of(const ContactProblem& p) {
+  constexpr double kTarget = 1e-10, kCheck = 1e-8;
+  const LocalForm local = local_form(p);
+  const Eigen::VectorXd guess = guess_of(p);
+  struct Try {
+    const char* name;
+    int id, iterations;
+  };
+  const Try tries[] = {{"siconos_nsn_ac", 504, 500}, {"siconos_nsn_fb", 513, 500}, {"siconos_nsgs", 500, 20000}};
+  Reference ref;
+  ref.status = "unsolved";
+  std::vector<std::pair<std::string, Eigen::VectorXd>> reached;  // answers at kCheck or better
+  double best = std::numeric_limits<double>::infinity();
+  for (const Try& t : tries) {
+    MethodOptions o;
+    o.tolerance = kTarget;
+    o.max_iterations = t.iterations;
+    const SolverAnswer a = SiconosMethod(t.id).solve_local(local, guess, o);
+    const double merit = natural_map_residual(local, a.r);
+    if (merit < best) best = merit, ref.method = t.name, ref.merit = merit, ref.r = a.r;
+    if (merit <= kCheck) reached.emplace_back(t.name, a.r);
+  }
+  if (ref.merit <= kTarget) ref.status = "solved";
+  for (const auto& [name, r] : reached)
+    if (name != ref.method) {
+      ref.check = name;
+      ref.difference = (r - ref.r).norm() / std::max(ref.r.norm(), 1e-300);
+      break;
+    }
+  return ref;
+}
+
+int reference_command(const std::vector<std::string>& files) {
+  std::cout << fmt::format("{:<40} {:>7} {:>6} {:<9} {:<16} {:>10} {:<16} {:>10}\n", "problem", "contacts", "joints",
+                           "status", "method", "merit", "checked by", "|dr|/|r|");
+  for (const std::string& path : files) {
+    const ProblemFile file = read_problem_file(path);
+    const ContactProblem& p = file.problem;
+    const Reference ref = reference_of(p);
+    // FCLIB's /solution: v, u, r, l of the kept answer (l and v from the folded joints)
+    const GlobalForm g = global_form(p);
+    const Eigen::VectorXd l = joint_impulses(p, ref.r);
+    const Eigen::VectorXd v_bodies = velocities(g, ref.r, l);
+    Eigen::VectorXd v(v_bodies.size() + l.size());
+    v << v_bodies, Eigen::VectorXd::Zero(l.size());
+    for (int s = 0, row = 0; row < p.joint_rows(); ++row)
+      if (p.joints[row].compliance > 0) v(v_bodies.size() + s++) = p.joints[row].compliance * l(row);
+    Eigen::VectorXd u = g.Jc * v_bodies + g.w;
+    Eigen::VectorXd r = ref.r, lj = l;
+    {
+      QuietHdf5 quiet;
+      H5::H5File f(path, H5F_ACC_RDWR);
+      if (f.nameExists("/solution")) f.unlink("/solution");
+      if (f.nameExists("/icedem/reference")) f.unlink("/icedem/reference");
+    }
+    fclib_solution s{v.data(), u.data(), r.data(), lj.size() ? lj.data() : nullptr};
+    if (!fclib_write_solution(&s, path.c_str())) throw OutputError(path + ": libfclib could not write /solution");
+    {
+      QuietHdf5 quiet;
+      H5::H5File f(path, H5F_ACC_RDWR);
+      H5::Group g = f.createGroup("/icedem/reference");
+      write_attr(g, "status", ref.status);
+      write_attr(g, "method", ref.method);
+      write_attr(g, "merit", ref.merit);
+      write_attr(g, "checked_by", ref.check);
+      write_attr(g, "difference", ref.difference);
+    }
+    std::cout << fmt::format("{:<40} {:>7} {:>6} {:<9} {:<16} {:>10.3e} {:<16} {:>10.2e}\n",
+                             std::filesystem::path(path).filename().string(), p.contacts.size(), p.joint_rows(),
+                             ref.status, ref.method, ref.merit, ref.check.empty() ? "-" : ref.check, ref.difference);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"contact_problems: reference solutions and solves of contact problem files"};
+  app.require_subcommand(1);
+  std::vector<std::string> files, methods;
+  double tolerance = 1e-6;
+  int max_iterations = 200;
+  bool cold = false;
+  CLI::App* solve = app.add_subcommand("solve", "solve problems with contact methods");
+  solve->add_option("files", files, "problem files")->required();
+  solve->add_option("--method", methods, "methods (default: all)")->take_all();
+  solve->add_option("--tolerance", tolerance, "merit to stop at (default 1e-6)");
+  solve->add_option("--max-iterations", max_iterations, "iteration cap (default 200)");
+  solve->add_flag("--cold", cold, "start from zero, not the warm start");
+  CLI::App* reference = app.add_subcommand("reference", "write reference solutions into problem files");
+  reference->add_option("files", files, "problem files")->required();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (*solve) return solve_command(files, methods, tolerance, max_iterations, cold);
+    return reference_command(files);
+  } catch (const std::exception& e) {
+    std::cerr << "contact_problems: " << e.what() << "\n";
+    return 2;
+  }
+}

@@ -1,0 +1,63 @@
+#include "dem/contact_siconos.hpp"
+
+#include <cstdlib>
+#include <cstring>
+
+#include <Eigen/SparseCore>
+
+// Siconos' headers declare C functions inside their own extern "C" blocks
+#include <siconos/numerics/FrictionContactProblem.h>
+#include <siconos/numerics/NonSmoothDrivers.h>
+#include <siconos/numerics/NumericsMatrix.h>
+#include <siconos/numerics/SolverOptions.h>
+
+namespace icedem {
+namespace {
+
+// Siconos frees what a problem holds with free(): give it malloc'd copies
+double* malloc_copy(const Eigen::VectorXd& v) {
+  auto* out = static_cast<double*>(std::malloc(sizeof(double) * std::max<Eigen::Index>(v.size(), 1)));
+  if (v.size()) std::memcpy(out, v.data(), sizeof(double) * v.size());
+  return out;
+}
+
+}  // namespace
+
+SolverAnswer SiconosMethod::solve_local(const LocalForm& local, const Eigen::VectorXd& guess,
+                                        const MethodOptions& options) {
+  const int m = static_cast<int>(local.q.size());
+  SolverAnswer answer;
+  answer.r = Eigen::VectorXd::Zero(m);
+  if (m == 0) return answer;
+  if (options.warm_start) answer.r = guess;
+
+  NumericsMatrix* W = NM_create(NM_SPARSE, m, m);
+  NM_triplet_alloc(W, local.W.nonZeros());
+  for (int col = 0; col < local.W.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(local.W, col); it; ++it)
+      NM_entry(W, static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
+  NM_csc(W);
+  FrictionContactProblem* problem =
+      frictionContactProblem_new_with_data(3, m / 3, W, malloc_copy(local.q), malloc_copy(local.mu));
+  SolverOptions* so = solver_options_create(solver_);
+  so->dparam[SICONOS_DPARAM_TOL] = options.tolerance;
+  so->iparam[SICONOS_IPARAM_MAX_ITER] = options.max_iterations;
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(m);
+  const int info = fc3d_driver(problem, answer.r.data(), u.data(), so);
+  answer.sweeps = so->iparam[SICONOS_IPARAM_ITER_DONE];
+  answer.residual = so->dparam[SICONOS_DPARAM_RESIDU];
+  answer.capped = info != 0;
+  solver_options_delete(so);
+  frictionContactProblem_free(problem);
+  return answer;
+}
+
+SolverAnswer SiconosMethod::solve(const ContactProblem& p, const MethodOptions& options) {
+  Eigen::VectorXd guess(p.contact_rows());
+  for (int c = 0; c < static_cast<int>(p.contacts.size()); ++c) guess.segment<3>(3 * c) = p.contacts[c].guess;
+  SolverAnswer answer = solve_local(local_form(p), guess, options);
+  answer.l = joint_impulses(p, answer.r);
+  return answer;
+}
+
+}  // namespace icedem
