@@ -72,6 +72,9 @@ ContactProblem ContactSolver::capture_problem(const btContactSolverInfo& info) c
     const btSolverBody& body = m_tmpSolverBodyPool[s];
     const btRigidBody* rb = body.m_originalBody;
     if (!rb || rb->getInvMass() <= 0) continue;
+    if (rb->getLinearFactor() != btVector3(1, 1, 1) || rb->getAngularFactor() != btVector3(1, 1, 1))
+      throw std::logic_error("capture_problem: a body with restricted motion (linear or angular factor) has no "
+                             "place in the problem");
     index_of[s] = static_cast<int>(p.bodies.size());
     ProblemBody b;
     b.mass = 1.0 / rb->getInvMass();
@@ -103,8 +106,8 @@ ContactProblem ContactSolver::capture_problem(const btContactSolverInfo& info) c
     const btSolverConstraint* rows[3] = {&normal, &m_tmpSolverContactFrictionConstraintPool[normal.m_frictionIndex],
                                          &m_tmpSolverContactFrictionConstraintPool[normal.m_frictionIndex + 1]};
     for (int k = 0; k < 3; ++k) {
-      c.ja.row(k) = row_on_a(*rows[k]);
-      c.jb.row(k) = row_on_b(*rows[k]);
+      if (c.a >= 0) c.ja.row(k) = row_on_a(*rows[k]);
+      if (c.b >= 0) c.jb.row(k) = row_on_b(*rows[k]);
       c.w(k) = offset(*rows[k], c.a, c.b);
       c.guess(k) = rows[k]->m_appliedImpulse;
       if (rows[k]->m_cfm != 0.0) throw std::logic_error("capture_problem: soft contact rows are not supported");
@@ -117,13 +120,14 @@ ContactProblem ContactSolver::capture_problem(const btContactSolverInfo& info) c
 
   for (int r = 0; r < m_tmpSolverNonContactConstraintPool.size(); ++r) {
     const btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[r];
-    if (std::isfinite(row.m_lowerLimit) || std::isfinite(row.m_upperLimit))
+    // Bullet's unbounded is SIMD_INFINITY (DBL_MAX in double precision)
+    if (row.m_lowerLimit > -SIMD_INFINITY || row.m_upperLimit < SIMD_INFINITY)
       throw std::logic_error("capture_problem: a joint row with bounds is not an equality");
     ProblemJointRow j;
     j.a = dof_index(m_tmpSolverBodyPool[row.m_solverBodyIdA], index_of, row.m_solverBodyIdA);
     j.b = dof_index(m_tmpSolverBodyPool[row.m_solverBodyIdB], index_of, row.m_solverBodyIdB);
-    j.ja = row_on_a(row);
-    j.jb = row_on_b(row);
+    if (j.a >= 0) j.ja = row_on_a(row);
+    if (j.b >= 0) j.jb = row_on_b(row);
     j.bias = offset(row, j.a, j.b);
     j.compliance = row.m_cfm / row.m_jacDiagABInv;
     j.guess = row.m_appliedImpulse;

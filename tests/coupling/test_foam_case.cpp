@@ -150,7 +150,7 @@ TEST(FoamCase, CoupledTowRunsEndToEndOnTheSolvedGrid) {
   EXPECT_LT((state.flow->velocity(p) - expected).norm(), 1e-12);
   // and a run through it completes with a finite, non-zero ice load
   const std::string out = std::string(ICEDEM_TEST_TMP) + "/coupled_tow.h5";
-  const RunSummary s = run_simulation(scene, RunOptions{out, false, "test", openfoam_coupling()});
+  const RunSummary s = run_simulation(scene, RunOptions{out, false, "test", openfoam_coupling(), {}});
   EXPECT_EQ(s.status, "complete");
   ASSERT_TRUE(s.has_statistics) << s.statistics_note;
   EXPECT_TRUE(std::isfinite(s.surge.mean));
@@ -168,7 +168,7 @@ TEST(FoamCase, ProbeModeTowExchangesWithTheOpenFoamPartner) {
   std::filesystem::remove_all(tmp);
   std::filesystem::create_directories(tmp);
   ::setenv("TMPDIR", tmp.c_str(), 1);
-  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/probe_tow.h5", false, "test", openfoam_coupling()});
+  const RunSummary s = run_simulation(scene, RunOptions{std::string(ICEDEM_TEST_TMP) + "/probe_tow.h5", false, "test", openfoam_coupling(), {}});
   ::unsetenv("TMPDIR");
   EXPECT_EQ(s.status, "complete");
   // a run that succeeded leaves nothing there (a sweep of probe runs would fill /tmp)
@@ -195,7 +195,7 @@ TEST(FoamCase, ExchangeTimeoutStopsTheRunAndKeepsItsFile) {
   const std::string out = std::string(ICEDEM_TEST_TMP) + "/probe_timeout.h5";
   std::string msg;
   try {
-    run_simulation(scene, RunOptions{out, false, "test", openfoam_coupling()});
+    run_simulation(scene, RunOptions{out, false, "test", openfoam_coupling(), {}});
   } catch (const CouplingError& e) {
     msg = e.what();
   }

@@ -113,7 +113,7 @@ Result run_case(const GoldenCase& c, std::vector<std::string> extra = {}, const 
   const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/" + c.scenario, sets);
   const std::string out = kTmp + "/golden_" + c.name + tag + ".h5";
   Result r;
-  r.summary = run_simulation(scene, RunOptions{out, false, "test_golden", openfoam_coupling()});
+  r.summary = run_simulation(scene, RunOptions{out, false, "test_golden", openfoam_coupling(), {}});
   H5::H5File f(out, H5F_ACC_RDONLY);
   const auto t = read_vector<double>(f, "/load/time", H5::PredType::NATIVE_DOUBLE);
   const auto force = read_vector<double>(f, "/load/force", H5::PredType::NATIVE_DOUBLE);

@@ -1,0 +1,268 @@
+// Contact problems captured from Bullet's rows (dem/contact_problem*.hpp), checked on
+// scenes whose answer is known, solved by Siconos numerics to 1e-10 or better:
+//  - a box resting on a floor: the floor carries its weight over the step, m g h;
+//  - a row of boxes sliding end-on at constant speed, pushed by a kinematic plate: the
+//    plate carries all their friction, n mu m g h, and a few sweeps of
+//    projected Gauss-Seidel on the same problem fall well short of it (the long force
+//    chain the solver issue is about, reproduced on the captured problem);
+//  - two lattices of elements pushed together: the problem with its joint rows, the
+//    joints folded into the Delassus form (Siconos) and solved as rows (Gauss-Seidel)
+//    give the same body velocities, and Bullet's own converged answer satisfies the
+//    captured joint rows;
+//  - a problem file keeps the problem exactly, and its FCLIB local form is the one
+//    computed from the problem;
+//  - the merit is Siconos' own (fc3d_compute_error).
+#include <gtest/gtest.h>
+
+#include <optional>
+
+#include <siconos/numerics/FrictionContactProblem.h>
+#include <siconos/numerics/NumericsMatrix.h>
+#include <siconos/numerics/SolverOptions.h>
+#include <siconos/numerics/fc3d_compute_error.h>
+
+#include "dem/contact_method.hpp"
+#include "dem/contact_problem_file.hpp"
+#include "dem/contact_siconos.hpp"
+#include "dem/contact_solver.hpp"
+#include "dem/initial_state.hpp"
+#include "dem/step.hpp"
+#include "tests/physics/breakable_scenes.hpp"
+#include "tests/support/box_world.hpp"
+
+extern "C" {
+#include <fclib.h>
+}
+
+using namespace icedem;
+using namespace icedem::testing;
+
+namespace {
+
+// keeps the last island's problem of the steps it is asked to capture
+class Keep : public ProblemObserver {
+ public:
+  bool capture = false;
+  std::optional<ContactProblem> problem;
+  SolverAnswer answer;
+  bool wants_problems() const override { return capture; }
+  void solved(const ContactProblem& p, const SolverAnswer& a) override {
+    if (problem && problem->contacts.size() > p.contacts.size()) return;  // keep the largest island
+    problem = p;
+    answer = a;
+  }
+};
+
+std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, double tolerance = 1e-9) {
+  ContactSolverSettings s;
+  s.iterations = cap;
+  s.tolerance = tolerance;
+  s.friction_warm_start = true;
+  auto solver = std::make_unique<ContactSolver>(s);
+  solver->set_observer(&keep);
+  return solver;
+}
+
+// Siconos' proximal point method (semismooth Newton inside) to `tolerance`: it solves the
+// rank-deficient problems of faces touching at several points, where plain Newton fails
+SolverAnswer reference(const ContactProblem& p, double tolerance = 1e-12) {
+  MethodOptions o;
+  o.tolerance = tolerance;
+  o.max_iterations = 200;
+  return make_contact_method("siconos_prox")->solve(p, o);
+}
+
+// sum of the normal impulses of the contacts that pass `which`
+template <typename Which>
+double normal_impulse(const ContactProblem& p, const Eigen::VectorXd& r, Which which) {
+  double sum = 0.0;
+  for (int c = 0; c < static_cast<int>(p.contacts.size()); ++c)
+    if (which(p.contacts[c])) sum += r(3 * c);
+  return sum;
+}
+
+constexpr int kRowBoxes = 20;
+constexpr double kRowMu = 0.3, kBoxMass = 1.0, kHalf = 0.05, kPlateSpeed = 0.05;
+
+// The row of boxes of test_contact_solver.cpp (20 boxes of 1 kg on a floor with mu = 0.3,
+// frictionless to each other), already sliding: the boxes touch end to end and move at
+// the plate's speed, the plate touching the first. Frictionless side walls keep the row
+// from buckling. The problem of the first step is captured: its answer is known exactly,
+// where later steps depend on how well the steps before them were solved.
+ContactProblem sliding_row() {
+  Keep keep;
+  Bench bench(tight_solver(keep, 2000, 1e-9));
+  auto* solver = static_cast<ContactSolver*>(bench.world().getConstraintSolver());
+  bench.world().getSolverInfo().m_numIterations = 2000;
+  bench.world().getSolverInfo().m_warmstartingFactor = 1.0;
+  bench.world().getSolverInfo().m_minimumSolverBatchSize = 1;
+  bench.box({5.0, 0.05, 1.0}, at(0, -0.05, 0), 0.0, kRowMu, 2);  // floor, top at y = 0
+  for (double side : {-1.0, 1.0}) bench.box({5.0, 0.1, 0.01}, at(0, 0.1, side * (kHalf + 0.011)), 0.0, 0.0, 2);
+  for (int i = 0; i < kRowBoxes; ++i) {
+    // overlapping by 0.5 mm: boxes that exactly touch are not all found touching
+    btRigidBody* b = bench.box({kHalf, kHalf, kHalf}, at(0.2 + (2 * i + 1) * (kHalf - 0.00025), kHalf, 0), kBoxMass, 1.0, 1);
+    b->setLinearVelocity(btVector3(kPlateSpeed, 0, 0));
+  }
+  const double plate_x0 = 0.2 - 0.01 + 0.0005;  // its face 0.5 mm into the first box
+  btRigidBody* plate = bench.box({0.01, 0.04, 0.2}, at(plate_x0, 0.06, 0), 0.0, 0.0, 3, true);
+  solver->set_structure(plate);
+  plate->getMotionState()->setWorldTransform(at(plate_x0 + kPlateSpeed * kDt, 0.06, 0));
+  keep.capture = true;
+  bench.world().stepSimulation(kDt, 0);
+  return *keep.problem;
+}
+
+}  // namespace
+
+TEST(ContactProblem, RestingBoxProblemCarriesItsWeight) {
+  Keep keep;
+  Bench bench(tight_solver(keep));
+  bench.world().getSolverInfo().m_numIterations = 5000;
+  bench.world().getSolverInfo().m_minimumSolverBatchSize = 1;
+  bench.box({5.0, 0.05, 1.0}, at(0, -0.05, 0), 0.0, 0.5, 2);
+  bench.box({kHalf, kHalf, kHalf}, at(0, kHalf, 0), kBoxMass, 1.0, 1);
+  for (int s = 0; s < 25; ++s) bench.world().stepSimulation(kDt, 0);
+  keep.capture = true;
+  bench.world().stepSimulation(kDt, 0);
+  ASSERT_TRUE(keep.problem);
+  const ContactProblem& p = *keep.problem;
+  ASSERT_EQ(p.bodies.size(), 1u);  // the floor is fixed: data, not an unknown
+  ASSERT_GE(p.contacts.size(), 3u);
+  const SolverAnswer a = reference(p);
+  EXPECT_FALSE(a.capped);
+  // a body at rest: the floor's impulse over the step is its weight's, m g h, to round-off
+  const double weight = kBoxMass * kGravity * kDt;
+  EXPECT_NEAR(normal_impulse(p, a.r, [](const ProblemContact&) { return true; }), weight, 1e-9 * weight);
+  // and what Bullet's rows ended with, swept to 1e-9, solves the captured problem: the
+  // capture is the problem Bullet solved (merit to 1e-6, the rows' own tolerance being looser)
+  EXPECT_LT(natural_map_residual(local_form(p), keep.answer.r), 1e-6);
+}
+
+TEST(ContactProblem, SlidingRowProblemPutsAllTheFrictionOnThePlate) {
+  const ContactProblem p = sliding_row();
+  ASSERT_EQ(p.bodies.size(), static_cast<std::size_t>(kRowBoxes));
+  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;  // N s over the step
+  auto on_plate = [](const ProblemContact& c) { return c.on_structure; };
+  // exact: Siconos reaches 1e-12; the plate's impulse within 1e-6 of n mu m g h
+  const SolverAnswer exact = reference(p);
+  EXPECT_FALSE(exact.capped) << "Siconos' residual " << exact.residual;
+  EXPECT_NEAR(normal_impulse(p, exact.r, on_plate), expected, 1e-6 * expected);
+  // ten cold sweeps of Bullet's Gauss-Seidel rows on the same problem carry about one box
+  // per sweep: measured 0.15 of the load; asserted below 0.8
+  MethodOptions ten;
+  ten.max_iterations = 10;
+  ten.tolerance = 0.0;
+  ten.warm_start = false;
+  const SolverAnswer pgs = make_contact_method("pgs")->solve(p, ten);
+  const double short_of = normal_impulse(p, pgs.r, on_plate) / expected;
+  EXPECT_LT(short_of, 0.8);
+  std::printf("sliding row: n mu m g h = %.5f N s; Siconos %.5f N s in %d iterations; 10 cold PGS sweeps %.2f of it\n",
+              expected, normal_impulse(p, exact.r, on_plate), exact.sweeps, short_of);
+}
+
+TEST(ContactProblem, FileKeepsTheProblemAndItsFclibForms) {
+  const ContactProblem p = sliding_row();
+  SolverAnswer answer;
+  answer.r = Eigen::VectorXd::LinSpaced(p.contact_rows(), 0.0, 1.0);
+  answer.l = Eigen::VectorXd();
+  answer.sweeps = 7;
+  answer.residual = 0.25;
+  answer.capped = true;
+  const std::string path = std::string(ICEDEM_TEST_TMP) + "/row_problem.hdf5";
+  write_problem_file(path, p, answer);
+  const ProblemFile back = read_problem_file(path);
+  const ContactProblem& q = back.problem;
+  ASSERT_EQ(q.bodies.size(), p.bodies.size());
+  ASSERT_EQ(q.contacts.size(), p.contacts.size());
+  for (std::size_t i = 0; i < p.bodies.size(); ++i) {
+    EXPECT_EQ(q.bodies[i].mass, p.bodies[i].mass);
+    EXPECT_TRUE(q.bodies[i].inertia.isApprox(p.bodies[i].inertia, 1e-14));
+    // stored as M v_free: v_free comes back through a 6x6 solve
+    EXPECT_LT((q.bodies[i].free_velocity - p.bodies[i].free_velocity).norm(), 1e-14);
+  }
+  for (std::size_t c = 0; c < p.contacts.size(); ++c) {
+    EXPECT_EQ(q.contacts[c].ja, p.contacts[c].ja);
+    EXPECT_EQ(q.contacts[c].jb, p.contacts[c].jb);
+    EXPECT_EQ(q.contacts[c].w, p.contacts[c].w);
+    EXPECT_EQ(q.contacts[c].mu, p.contacts[c].mu);
+    EXPECT_EQ(q.contacts[c].guess, p.contacts[c].guess);
+    EXPECT_EQ(q.contacts[c].on_structure, p.contacts[c].on_structure);
+  }
+  ASSERT_TRUE(back.answer);
+  EXPECT_EQ(back.answer->r, answer.r);
+  EXPECT_EQ(back.answer->sweeps, 7);
+  EXPECT_TRUE(back.answer->capped);
+  // the file's FCLIB local form, read by libfclib, is the Delassus form of the problem
+  fclib_local* local = fclib_read_local(path.c_str());
+  ASSERT_NE(local, nullptr);
+  const LocalForm expected = local_form(p);
+  ASSERT_EQ(local->W->n, expected.W.cols());
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(local->W->m, local->W->n);
+  for (int col = 0; col < local->W->n; ++col)
+    for (int k = local->W->p[col]; k < local->W->p[col + 1]; ++k) W(local->W->i[k], col) = local->W->x[k];
+  EXPECT_LT((W - Eigen::MatrixXd(expected.W)).norm(), 1e-15 * W.norm());
+  EXPECT_EQ(Eigen::Map<Eigen::VectorXd>(local->q, local->W->n), expected.q);
+  fclib_delete_local(local);
+}
+
+TEST(ContactProblem, MeritIsSiconosNaturalMapResidual) {
+  const ContactProblem p = sliding_row();
+  const LocalForm local = local_form(p);
+  const int m = p.contact_rows();
+  // any impulses will do: a ramp that is neither zero nor a solution
+  const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(m, 0.0, 0.01);
+  NumericsMatrix* W = NM_create(NM_SPARSE, m, m);
+  NM_triplet_alloc(W, local.W.nonZeros());
+  for (int col = 0; col < local.W.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(local.W, col); it; ++it)
+      NM_entry(W, static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
+  auto* q = static_cast<double*>(std::malloc(sizeof(double) * m));
+  auto* mu = static_cast<double*>(std::malloc(sizeof(double) * m / 3));
+  for (int i = 0; i < m; ++i) q[i] = local.q(i);
+  for (int i = 0; i < m / 3; ++i) mu[i] = local.mu(i);
+  FrictionContactProblem* problem = frictionContactProblem_new_with_data(3, m / 3, W, q, mu);
+  SolverOptions* so = solver_options_create(500);
+  Eigen::VectorXd rr = r, u(m);
+  double siconos = 0.0;
+  fc3d_compute_error(problem, rr.data(), u.data(), 1e-10, so, local.q.norm(), &siconos);
+  solver_options_delete(so);
+  frictionContactProblem_free(problem);
+  EXPECT_NEAR(natural_map_residual(local, r), siconos, 1e-12 * siconos);
+}
+
+TEST(ContactProblem, LatticeJointsFoldIntoTheDelassusForm) {
+  // two lattices of 0.15 m elements (a 0.6 x 0.3 m strip, a 0.3 x 0.3 m square), frictionless,
+  // the square pushed into the strip at 0.2 m/s; joints soft (the 0.15 m paper CFM) and unbreakable
+  const Scene scene = bench({"fracture.cfm=0.00743", "friction.ice_ice=0", "solver.tolerance=1e-9",
+                             "solver.iterations=20000", "fracture.joint_iterations=20000"});
+  Floe square = square_floe(10.0 + 0.45 + 0.002, 0.0, 0.3);
+  State state = initial_state(scene, {strip(0.6, 0.3), square});
+  for (FloeBody& f : state.world->floes())
+    if (f.floe_id == 1) f.body->setLinearVelocity(btVector3(-0.2, 0, 0));
+  Keep keep;
+  state.world->set_problem_observer(&keep);
+  for (int s = 0; s < 10 && !keep.problem; ++s) {
+    keep.capture = true;
+    step(scene, state);
+  }
+  ASSERT_TRUE(keep.problem) << "the lattices never touched";
+  const ContactProblem& p = *keep.problem;
+  ASSERT_EQ(p.joint_rows(), 6 * (10 + 4));  // six rows per joint: 10 in the strip, 4 in the square
+  for (const ProblemJointRow& j : p.joints) ASSERT_GT(j.compliance, 0.0);
+
+  // Bullet's own answer, joints and contacts swept to 1e-9, satisfies the captured joint rows
+  const GlobalForm g = global_form(p);
+  const Eigen::VectorXd v_run = velocities(g, keep.answer.r, keep.answer.l);
+  const Eigen::VectorXd joint_error = g.Jj * v_run + g.b + g.compliance.cwiseProduct(keep.answer.l);
+  EXPECT_LT(joint_error.norm(), 1e-6 * g.b.norm() + 1e-12) << "|J v + b + C l| of the run's answer";
+
+  // joints folded (Siconos on the Delassus form) and joints as rows (Gauss-Seidel) agree
+  const SolverAnswer folded = reference(p, 1e-11);
+  MethodOptions rows;
+  rows.tolerance = 1e-11;
+  rows.max_iterations = 200000;
+  const SolverAnswer swept = make_contact_method("pgs_cone")->solve(p, rows);
+  const Eigen::VectorXd v_folded = velocities(g, folded.r, folded.l), v_swept = velocities(g, swept.r, swept.l);
+  EXPECT_LT((v_folded - v_swept).norm(), 1e-6 * v_folded.norm());
+  EXPECT_LT((folded.l - swept.l).norm(), 1e-4 * folded.l.norm());
+}
