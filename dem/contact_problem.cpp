@@ -145,6 +145,18 @@ LocalForm local_form(const ContactProblem& p) {
   return local;
 }
 
+Eigen::Vector3d structure_impulse(const ContactProblem& p, const Eigen::VectorXd& r) {
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  for (int c = 0; c < static_cast<int>(p.contacts.size()); ++c) {
+    const ProblemContact& contact = p.contacts[c];
+    if (!contact.on_structure) continue;
+    // the floe's side of the contact: its rows' linear parts are the contact frame
+    const ContactJacobian& floe = contact.a >= 0 ? contact.ja : contact.jb;
+    total -= floe.leftCols<3>().transpose() * r.segment<3>(3 * c);
+  }
+  return total;
+}
+
 double local_q_norm(const ContactProblem& p) {
   const GlobalForm g = global_form(p);
   if (p.joints.empty()) return (g.Jc * g.v_free + g.w).norm();

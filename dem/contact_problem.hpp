@@ -121,6 +121,10 @@ LocalForm local_form(const ContactProblem& p);
 /// |q| of the local form, computed without forming W (the merit's scale).
 double local_q_norm(const ContactProblem& p);
 
+/// The impulse the contacts on the structure give it over the step, N s, tank frame:
+/// the ice load times the step.
+Eigen::Vector3d structure_impulse(const ContactProblem& p, const Eigen::VectorXd& r);
+
 /// Body velocities, stacked (v, w) per body, after impulses r (contacts) and l (joint rows).
 Eigen::VectorXd velocities(const GlobalForm& g, const Eigen::VectorXd& r, const Eigen::VectorXd& l);
 
