@@ -56,11 +56,7 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
 
   // each contact's weight: a fraction of its effective inverse mass J M^-1 J^T
   std::vector<Matrix6d> inv_mass(nb);
-  for (int i = 0; i < nb; ++i) {
-    inv_mass[i].setZero();
-    inv_mass[i].topLeftCorner<3, 3>().diagonal().setConstant(1.0 / p.bodies[i].mass);
-    inv_mass[i].bottomRightCorner<3, 3>() = p.bodies[i].inertia.inverse();
-  }
+  for (int i = 0; i < nb; ++i) inv_mass[i] = inverse_mass(p.bodies[i]);
   Eigen::VectorXd rho(nc);
   for (int c = 0; c < nc; ++c) {
     const ProblemContact& k = p.contacts[c];
@@ -98,18 +94,16 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
   const Eigen::VectorXd& mu = g.mu;
 
   // start: the warm start's impulses, the velocities they give
-  Eigen::VectorXd r_centre = Eigen::VectorXd::Zero(m), l_start = Eigen::VectorXd::Zero(p.joint_rows());
-  if (options.warm_start) {
-    for (int c = 0; c < nc; ++c) r_centre.segment<3>(3 * c) = p.contacts[c].guess;
-    for (int j = 0; j < p.joint_rows(); ++j) l_start(j) = p.joints[j].guess;
-  }
+  Eigen::VectorXd r_centre = options.warm_start ? contact_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(m));
+  const Eigen::VectorXd l_start =
+      options.warm_start ? joint_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(p.joint_rows()));
   Eigen::VectorXd v = velocities(g, r_centre, l_start);
   auto shift_of = [&](const Eigen::VectorXd& u) {
     Eigen::VectorXd s = Eigen::VectorXd::Zero(m);
     for (int c = 0; c < nc; ++c) s(3 * c) = mu(c) * std::hypot(u(3 * c + 1), u(3 * c + 2));
     return s;
   };
-  Eigen::VectorXd u = Jc * v + g.w;
+  Eigen::VectorXd u(m);  // the contact velocities of v, set with each residual
 
   // the contacts' impulses r_c = P_K(rb_c - y_c / rho_c) for y = Jc v + w + s (+ a step)
   auto impulses = [&](const Eigen::VectorXd& y, Eigen::VectorXd& r) {
@@ -153,9 +147,10 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
         const Eigen::Matrix3d dP =
             cone_projection_jacobian(r_centre.segment<3>(3 * c) - shifted / rho(c), mu(c));
         if (dP.isZero()) continue;
-        Eigen::Matrix3d dS = Eigen::Matrix3d::Identity();
-        if (ut > 0) dS.block<1, 2>(0, 1) = mu(c) * uc.tail<2>().transpose() / ut;
-        const Eigen::Matrix3d B = dP * dS / rho(c);
+        // d(u + s)/du: the shift mu |u_T| moves the normal with the tangential velocity
+        Eigen::Matrix3d d_shifted = Eigen::Matrix3d::Identity();
+        if (ut > 0) d_shifted.block<1, 2>(0, 1) = mu(c) * uc.tail<2>().transpose() / ut;
+        const Eigen::Matrix3d B = dP * d_shifted / rho(c);
         int at = 0;
         for (int i : {k.a, k.b})
           for (int j : {k.a, k.b}) {

@@ -37,11 +37,7 @@ struct Row {
 SolverAnswer ProjectedGaussSeidel::solve(const ContactProblem& p, const MethodOptions& options) {
   const int nb = static_cast<int>(p.bodies.size()), nc = static_cast<int>(p.contacts.size()), nj = p.joint_rows();
   std::vector<Eigen::Matrix<double, 6, 6>> inv_mass(nb);
-  for (int i = 0; i < nb; ++i) {
-    inv_mass[i].setZero();
-    inv_mass[i].topLeftCorner<3, 3>().diagonal().setConstant(1.0 / p.bodies[i].mass);
-    inv_mass[i].bottomRightCorner<3, 3>() = p.bodies[i].inertia.inverse();
-  }
+  for (int i = 0; i < nb; ++i) inv_mass[i] = inverse_mass(p.bodies[i]);
   auto make_row = [&](int a, int b, const RowJacobian& ja, const RowJacobian& jb) {
     Row r{a, b, ja, jb, Vector6d::Zero(), Vector6d::Zero(), 0.0};
     double eff = 0.0;

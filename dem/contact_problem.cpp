@@ -54,6 +54,25 @@ std::vector<std::vector<int>> joined_groups(const ContactProblem& p) {
 
 }  // namespace
 
+Eigen::Matrix<double, 6, 6> inverse_mass(const ProblemBody& body) {
+  Eigen::Matrix<double, 6, 6> inv = Eigen::Matrix<double, 6, 6>::Zero();
+  inv.topLeftCorner<3, 3>().diagonal().setConstant(1.0 / body.mass);
+  inv.bottomRightCorner<3, 3>() = body.inertia.inverse();
+  return inv;
+}
+
+Eigen::VectorXd contact_guess(const ContactProblem& p) {
+  Eigen::VectorXd g(p.contact_rows());
+  for (int c = 0; c < static_cast<int>(p.contacts.size()); ++c) g.segment<3>(3 * c) = p.contacts[c].guess;
+  return g;
+}
+
+Eigen::VectorXd joint_guess(const ContactProblem& p) {
+  Eigen::VectorXd g(p.joint_rows());
+  for (int r = 0; r < p.joint_rows(); ++r) g(r) = p.joints[r].guess;
+  return g;
+}
+
 GlobalForm global_form(const ContactProblem& p) {
   GlobalForm g;
   const int n = p.dofs(), m = p.contact_rows(), k = p.joint_rows();

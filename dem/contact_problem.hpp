@@ -89,6 +89,13 @@ struct SolverAnswer {
   bool capped = false;    // stopped at the cap above its tolerance
 };
 
+/// A body's 6x6 inverse mass matrix: 1/m on the linear block, the inverse inertia on the angular.
+Eigen::Matrix<double, 6, 6> inverse_mass(const ProblemBody& body);
+
+/// The warm start of the contacts (normal, t1, t2 per contact) and of the joint rows, N s.
+Eigen::VectorXd contact_guess(const ContactProblem& p);
+Eigen::VectorXd joint_guess(const ContactProblem& p);
+
 /// The sparse matrices and vectors of the global form.
 struct GlobalForm {
   Eigen::SparseMatrix<double> M;   // dofs x dofs, block diagonal

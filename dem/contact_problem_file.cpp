@@ -170,9 +170,7 @@ void write_problem_file(const std::string& path, const ContactProblem& p, const 
     for (int s = 0; s < static_cast<int>(soft.size()); ++s) v(n + s) = p.joints[soft[s]].compliance * l(soft[s]);
     return std::make_pair(v, Eigen::VectorXd(g.Jc * v.head(n) + g.w));
   };
-  Eigen::VectorXd r0(m), l0(k);
-  for (int c = 0; c < static_cast<int>(p.contacts.size()); ++c) r0.segment<3>(3 * c) = p.contacts[c].guess;
-  for (int r = 0; r < k; ++r) l0(r) = p.joints[r].guess;
+  Eigen::VectorXd r0 = contact_guess(p), l0 = joint_guess(p);
   auto [v0, u0] = solution_of(r0, l0);
   fclib_solution guess{v0.data(), u0.data(), r0.data(), k > 0 ? l0.data() : nullptr};
   if (m > 0 && !fclib_write_guesses(1, &guess, path.c_str())) fail("libfclib failed on the guess");

@@ -53,9 +53,7 @@ SolverAnswer SiconosMethod::solve_local(const LocalForm& local, const Eigen::Vec
 }
 
 SolverAnswer SiconosMethod::solve(const ContactProblem& p, const MethodOptions& options) {
-  Eigen::VectorXd guess(p.contact_rows());
-  for (int c = 0; c < static_cast<int>(p.contacts.size()); ++c) guess.segment<3>(3 * c) = p.contacts[c].guess;
-  SolverAnswer answer = solve_local(local_form(p), guess, options);
+  SolverAnswer answer = solve_local(local_form(p), contact_guess(p), options);
   answer.l = joint_impulses(p, answer.r);
   return answer;
 }

@@ -10,7 +10,9 @@ namespace icedem {
 
 class SiconosMethod : public ContactMethod {
  public:
-  /// `solver`: a SICONOS_FRICTION_3D_* id (Friction_cst.h), e.g. 500 NSGS, 504 NSN_AC, 513 NSN_FB.
+  /// Siconos numerics' SICONOS_FRICTION_3D_* solver ids (siconos/numerics/Friction_cst.h)
+  static constexpr int kNsgs = 500, kProx = 502, kNsnAc = 504, kNsnFb = 513, kAdmm = 523;
+  /// `solver`: one of the ids above.
   explicit SiconosMethod(int solver) : solver_(solver) {}
   SolverAnswer solve(const ContactProblem& problem, const MethodOptions& options) override;
   /// The same on a Delassus form already built (its time is then not counted).

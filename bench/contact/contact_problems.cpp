@@ -38,12 +38,6 @@ double cpu_seconds() {
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-Eigen::VectorXd guess_of(const ContactProblem& p) {
-  Eigen::VectorXd g(p.contact_rows());
-  for (int c = 0; c < static_cast<int>(p.contacts.size()); ++c) g.segment<3>(3 * c) = p.contacts[c].guess;
-  return g;
-}
-
 int solve_command(const std::vector<std::string>& files, std::vector<std::string> methods, double tolerance,
                   int max_iterations, bool cold) {
   if (methods.empty()) methods = contact_method_names();
@@ -90,13 +84,15 @@ Reference reference_of(const ContactProblem& p) {
   constexpr double kTarget = 1e-10, kCheck = 1e-8;
   const LocalForm local = local_form(p);
   const GlobalForm g = global_form(p);
-  const Eigen::VectorXd guess = guess_of(p);
+  const Eigen::VectorXd guess = contact_guess(p);
   struct Try {
     const char* name;
     int id, iterations;
   };
-  const Try tries[] = {{"siconos_prox", 502, 1000}, {"siconos_nsn_ac", 504, 500}, {"siconos_nsn_fb", 513, 500},
-                       {"siconos_nsgs", 500, 5000}};
+  const Try tries[] = {{"siconos_prox", SiconosMethod::kProx, 1000},
+                       {"siconos_nsn_ac", SiconosMethod::kNsnAc, 500},
+                       {"siconos_nsn_fb", SiconosMethod::kNsnFb, 500},
+                       {"siconos_nsgs", SiconosMethod::kNsgs, 5000}};
   Reference ref;
   ref.status = "unsolved";
   std::vector<std::pair<std::string, Eigen::VectorXd>> reached;  // answers at kCheck or better
