@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
-#include <Eigen/Dense>
-#include <Eigen/SparseLU>
+#include <Eigen/SparseCholesky>
 
 namespace icedem {
 namespace {
@@ -12,182 +13,277 @@ namespace {
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-// the derivative of project_on_cone at x (symmetric, its eigenvalues in [0, 1])
-Eigen::Matrix3d cone_projection_jacobian(const Eigen::Vector3d& x, double mu) {
+// The derivative of project_on_cone at x (symmetric, its eigenvalues in [0, 1]).
+// `kind` says where x went: 0 to the apex, 1 inside the cone, 2 onto its surface.
+Eigen::Matrix3d cone_projection_jacobian(const Eigen::Vector3d& x, double mu, int& kind) {
   const double tangent = std::hypot(x(1), x(2));
-  if (mu * tangent <= -x(0)) return Eigen::Matrix3d::Zero();  // projected to the apex
-  if (tangent <= mu * x(0)) return Eigen::Matrix3d::Identity();
-  // onto the cone's surface: P = (a, mu a t), a = (x_N + mu |x_T|) / (1 + mu^2), t = x_T / |x_T|
+  if (mu * tangent <= -x(0)) return kind = 0, Eigen::Matrix3d::Zero();
+  if (tangent <= mu * x(0)) return kind = 1, Eigen::Matrix3d::Identity();
+  kind = 2;
+  // onto the surface: P = (a, mu a t), a = (x_N + mu |x_T|) / (1 + mu^2), t = x_T / |x_T|
   const Eigen::Vector2d t = x.tail<2>() / tangent;
   const double k = 1.0 / (1.0 + mu * mu), a = k * (x(0) + mu * tangent);
   Eigen::Matrix3d d;
   d(0, 0) = k;
   d.block<1, 2>(0, 1) = k * mu * t.transpose();
   d.block<2, 1>(1, 0) = k * mu * t;
-  d.block<2, 2>(1, 1) = k * mu * mu * t * t.transpose() +
-                        (mu * a / tangent) * (Eigen::Matrix2d::Identity() - t * t.transpose());
+  d.block<2, 2>(1, 1) =
+      k * mu * mu * t * t.transpose() + (mu * a / tangent) * (Eigen::Matrix2d::Identity() - t * t.transpose());
   return d;
 }
 
-// where each entry of the contacts' blocks J_i^T D J_j lands in H's compressed values
-struct ContactSlots {
-  std::vector<int> index;  // 36 per block, blocks (a,a), (a,b), (b,a), (b,b) as present
-};
-
+// position of (row, col) in the compressed values of H
 int slot(const SparseMatrix& H, int row, int col) {
   const int* begin = H.innerIndexPtr() + H.outerIndexPtr()[col];
   const int* end = H.innerIndexPtr() + H.outerIndexPtr()[col + 1];
   return static_cast<int>(std::lower_bound(begin, end, row) - H.innerIndexPtr());
 }
 
+// The inner problem's data and its function, gradient and Hessian pieces.
+class InnerProblem {
+ public:
+  InnerProblem(const ContactProblem& p, double rho_fraction)
+      : p_(p), g_(global_form(p)), nb_(static_cast<int>(p.bodies.size())), nc_(static_cast<int>(p.contacts.size())) {
+    for (int r = 0; r < g_.compliance.size(); ++r)
+      if (!(g_.compliance(r) > 0)) throw std::invalid_argument("primal Newton: joint rows must be soft");
+    c_inv_ = g_.compliance.cwiseInverse();
+    Jj_t_ = g_.Jj.transpose();
+    Jc_ = g_.Jc;
+    Jc_t_ = g_.Jc.transpose();
+    const SparseMatrix Hc = g_.M + Jj_t_ * c_inv_.asDiagonal() * g_.Jj;  // the part that does not change
+
+    // each contact's weight: a fraction of its effective inverse mass J M^-1 J^T
+    inv_mass_.resize(nb_);
+    for (int i = 0; i < nb_; ++i) inv_mass_[i] = inverse_mass(p.bodies[i]);
+    rho_.resize(nc_);
+    for (int c = 0; c < nc_; ++c) {
+      const ProblemContact& k = p.contacts[c];
+      double trace = 0.0;
+      if (k.a >= 0) trace += (k.ja * inv_mass_[k.a] * k.ja.transpose()).trace();
+      if (k.b >= 0) trace += (k.jb * inv_mass_[k.b] * k.jb.transpose()).trace();
+      rho_(c) = rho_fraction * trace / 3.0;
+    }
+
+    // the Hessian's lower triangle: Hc and every contact's body blocks
+    std::vector<Eigen::Triplet<double>> t;
+    for (int col = 0; col < Hc.outerSize(); ++col)
+      for (SparseMatrix::InnerIterator it(Hc, col); it; ++it)
+        if (it.row() >= it.col()) t.emplace_back(it.row(), it.col(), it.value());
+    auto each_block = [&](const ProblemContact& k, auto&& visit) {
+      for (int i : {k.a, k.b})
+        for (int j : {k.a, k.b})
+          if (i >= 0 && j >= 0 && i >= j) visit(i, j);
+    };
+    for (const ProblemContact& k : p.contacts)
+      each_block(k, [&](int i, int j) {
+        for (int r = 0; r < 6; ++r)
+          for (int s = 0; s < 6; ++s)
+            if (6 * i + r >= 6 * j + s) t.emplace_back(6 * i + r, 6 * j + s, 0.0);
+      });
+    H_.resize(6 * nb_, 6 * nb_);
+    H_.setFromTriplets(t.begin(), t.end());
+    H_.makeCompressed();
+    base_ = Eigen::Map<const Eigen::VectorXd>(H_.valuePtr(), H_.nonZeros());
+    slots_.resize(nc_);
+    for (int c = 0; c < nc_; ++c)
+      each_block(p.contacts[c], [&](int i, int j) {
+        for (int r = 0; r < 6; ++r)
+          for (int s = 0; s < 6; ++s)
+            slots_[c].push_back(6 * i + r >= 6 * j + s ? slot(H_, 6 * i + r, 6 * j + s) : -1);
+      });
+  }
+
+  const GlobalForm& global() const { return g_; }
+  int contacts() const { return nc_; }
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& Jc() const { return Jc_; }
+
+  // z_c = rb_c - (u_c + s_c) / rho_c, whose projection is the contact's impulse
+  Eigen::Vector3d argument(int c, const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s) const {
+    Eigen::Vector3d z = rb.segment<3>(3 * c) - u.segment<3>(3 * c) / rho_(c);
+    z(0) -= s(c) / rho_(c);
+    return z;
+  }
+
+  // the impulses r(v) and the gradient G(v) = M (v - v_free) + Jj^T C^-1 (Jj v + b) - Jc^T r
+  void gradient(const Eigen::VectorXd& v, const Eigen::VectorXd& u, const Eigen::VectorXd& rb,
+                const Eigen::VectorXd& s, Eigen::VectorXd& r, Eigen::VectorXd& G) const {
+    for (int c = 0; c < nc_; ++c) r.segment<3>(3 * c) = project_on_cone(argument(c, rb, u, s), g_.mu(c));
+    G = g_.M * (v - g_.v_free) - Jc_t_ * r;
+    if (g_.Jj.rows()) G += Jj_t_ * c_inv_.cwiseProduct(g_.Jj * v + g_.b);
+  }
+
+  // where each contact's argument goes under the projection (cone_projection_jacobian's kinds)
+  void kinds(const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s,
+             std::vector<int>& out) const {
+    out.resize(nc_);
+    for (int c = 0; c < nc_; ++c) {
+      const Eigen::Vector3d z = argument(c, rb, u, s);
+      const double tangent = std::hypot(z(1), z(2)), mu = g_.mu(c);
+      out[c] = mu * tangent <= -z(0) ? 0 : tangent <= mu * z(0) ? 1 : 2;
+    }
+  }
+
+  // H = Hc + Jc^T diag(dP_c / rho_c) Jc at the current arguments; `kinds` gets where each went
+  const SparseMatrix& hessian(const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s,
+                              std::vector<int>& kinds) {
+    Eigen::Map<Eigen::VectorXd>(H_.valuePtr(), H_.nonZeros()) = base_;
+    kinds.resize(nc_);
+    for (int c = 0; c < nc_; ++c) {
+      const ProblemContact& k = p_.contacts[c];
+      const Eigen::Matrix3d B = cone_projection_jacobian(argument(c, rb, u, s), g_.mu(c), kinds[c]) / rho_(c);
+      if (kinds[c] == 0) continue;
+      int at = 0;
+      for (int i : {k.a, k.b})
+        for (int j : {k.a, k.b}) {
+          if (i < 0 || j < 0 || i < j) continue;
+          const ContactJacobian& Ji = i == k.a ? k.ja : k.jb;
+          const ContactJacobian& Jk = j == k.a ? k.ja : k.jb;
+          const Matrix6d block = Ji.transpose() * B * Jk;
+          for (int rr = 0; rr < 6; ++rr)
+            for (int ss = 0; ss < 6; ++ss, ++at)
+              if (slots_[c][at] >= 0) H_.valuePtr()[slots_[c][at]] += block(rr, ss);
+        }
+    }
+    return H_;
+  }
+
+  // The derivative of f along d at step a: phi'(a) = G(v + a d) . d, from the pieces
+  // that do not depend on a (so a trial costs O(contacts + joint rows)).
+  struct Line {
+    double md_v = 0, md_d = 0;       // d^T M (v - v_free), d^T M d
+    Eigen::VectorXd jj_v, jj_d;      // C^-1 (Jj v + b) and Jj d
+    Eigen::VectorXd u, ud;           // Jc v + w, Jc d
+  };
+  Line line(const Eigen::VectorXd& v, const Eigen::VectorXd& u, const Eigen::VectorXd& d) const {
+    Line l;
+    const Eigen::VectorXd Md = g_.M * d;
+    l.md_v = Md.dot(v - g_.v_free);
+    l.md_d = Md.dot(d);
+    if (g_.Jj.rows()) {
+      l.jj_v = g_.Jj * v + g_.b;
+      l.jj_d = g_.Jj * d;
+    }
+    l.u = u;
+    l.ud = Jc_ * d;
+    return l;
+  }
+  double slope(const Line& l, double a, const Eigen::VectorXd& rb, const Eigen::VectorXd& s) const {
+    double total = l.md_v + a * l.md_d;
+    if (l.jj_d.size()) total += l.jj_d.dot(c_inv_.cwiseProduct(l.jj_v + a * l.jj_d));
+    for (int c = 0; c < nc_; ++c) {
+      Eigen::Vector3d z = rb.segment<3>(3 * c) - (l.u.segment<3>(3 * c) + a * l.ud.segment<3>(3 * c)) / rho_(c);
+      z(0) -= s(c) / rho_(c);
+      total -= l.ud.segment<3>(3 * c).dot(project_on_cone(z, g_.mu(c)));
+    }
+    return total;
+  }
+
+  Eigen::VectorXd joint_impulses(const Eigen::VectorXd& v) const {
+    if (!g_.Jj.rows()) return Eigen::VectorXd();
+    return -c_inv_.cwiseProduct(g_.Jj * v + g_.b);
+  }
+
+ private:
+  const ContactProblem& p_;
+  GlobalForm g_;
+  int nb_, nc_;
+  Eigen::VectorXd c_inv_, rho_;
+  SparseMatrix Jj_t_, Jc_t_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> Jc_;
+  std::vector<Matrix6d> inv_mass_;
+  SparseMatrix H_;
+  Eigen::VectorXd base_;
+  std::vector<std::vector<int>> slots_;
+};
+
+// The step length a > 0 where phi'(a) = 0 (phi convex: phi' nondecreasing, phi'(0) < 0),
+// to within a tenth of |phi'(0)| (the strong Wolfe condition): expand from a = 1 until
+// phi' changes sign, then regula falsi (Illinois) on the bracket.
+template <class Slope>
+double exact_line_search(Slope&& slope, double slope0) {
+  const double enough = 0.1 * std::abs(slope0);
+  double lo = 0.0, f_lo = slope0, hi = 1.0, f_hi = slope(1.0);
+  if (std::abs(f_hi) <= enough) return 1.0;
+  for (int k = 0; f_hi < 0 && k < 30; ++k) lo = hi, f_lo = f_hi, hi *= 2.0, f_hi = slope(hi);
+  if (f_hi < 0) return hi;
+  int side = 0;
+  double a = hi;
+  for (int k = 0; k < 60; ++k) {
+    a = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    const double f = slope(a);
+    if (std::abs(f) <= enough) break;
+    if (f < 0) {
+      lo = a, f_lo = f;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = a, f_hi = f;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    }
+  }
+  return a;
+}
+
 }  // namespace
 
 SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& options) {
-  const int nb = static_cast<int>(p.bodies.size()), nc = static_cast<int>(p.contacts.size());
-  const int n = 6 * nb, m = 3 * nc;
-  const GlobalForm g = global_form(p);
-  for (int r = 0; r < g.compliance.size(); ++r)
-    if (!(g.compliance(r) > 0)) throw std::invalid_argument("primal Newton: joint rows must be soft");
-  const Eigen::VectorXd c_inv = g.compliance.cwiseInverse();
-  const SparseMatrix Jj_t = g.Jj.transpose();
-  const SparseMatrix Hc = g.M + Jj_t * c_inv.asDiagonal() * g.Jj;  // constant part of the Hessian
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> Jc = g.Jc;
-  const SparseMatrix Jc_t = g.Jc.transpose();
-
-  // each contact's weight: a fraction of its effective inverse mass J M^-1 J^T
-  std::vector<Matrix6d> inv_mass(nb);
-  for (int i = 0; i < nb; ++i) inv_mass[i] = inverse_mass(p.bodies[i]);
-  Eigen::VectorXd rho(nc);
-  for (int c = 0; c < nc; ++c) {
-    const ProblemContact& k = p.contacts[c];
-    double trace = 0.0;
-    if (k.a >= 0) trace += (k.ja * inv_mass[k.a] * k.ja.transpose()).trace();
-    if (k.b >= 0) trace += (k.jb * inv_mass[k.b] * k.jb.transpose()).trace();
-    rho(c) = settings_.rho_fraction * trace / 3.0;
-  }
-
-  // the Hessian's pattern: Hc and every contact's body blocks, analysed once
-  std::vector<Eigen::Triplet<double>> t;
-  for (int col = 0; col < Hc.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(Hc, col); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
-  for (const ProblemContact& k : p.contacts)
-    for (int i : {k.a, k.b})
-      for (int j : {k.a, k.b})
-        if (i >= 0 && j >= 0)
-          for (int r = 0; r < 6; ++r)
-            for (int s = 0; s < 6; ++s) t.emplace_back(6 * i + r, 6 * j + s, 0.0);
-  SparseMatrix H(n, n);
-  H.setFromTriplets(t.begin(), t.end());
-  H.makeCompressed();
-  const Eigen::VectorXd base = Eigen::Map<const Eigen::VectorXd>(H.valuePtr(), H.nonZeros());
-  std::vector<ContactSlots> slots(nc);
-  for (int c = 0; c < nc; ++c) {
-    const ProblemContact& k = p.contacts[c];
-    for (int i : {k.a, k.b})
-      for (int j : {k.a, k.b})
-        if (i >= 0 && j >= 0)
-          for (int r = 0; r < 6; ++r)
-            for (int s = 0; s < 6; ++s) slots[c].index.push_back(slot(H, 6 * i + r, 6 * j + s));
-  }
-
+  InnerProblem inner(p, settings_.rho_fraction);
+  const GlobalForm& g = inner.global();
+  const int n = p.dofs(), m = p.contact_rows(), nc = inner.contacts();
   const double q_norm = local_q_norm(p);
-  const Eigen::VectorXd& mu = g.mu;
 
-  // start: the warm start's impulses, the velocities they give
-  Eigen::VectorXd r_centre = options.warm_start ? contact_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(m));
-  const Eigen::VectorXd l_start =
+  // start: the warm start's impulses and the velocities they give
+  Eigen::VectorXd rb = options.warm_start ? contact_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(m));
+  const Eigen::VectorXd l0 =
       options.warm_start ? joint_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(p.joint_rows()));
-  Eigen::VectorXd v = velocities(g, r_centre, l_start);
-  auto shift_of = [&](const Eigen::VectorXd& u) {
-    Eigen::VectorXd s = Eigen::VectorXd::Zero(m);
-    for (int c = 0; c < nc; ++c) s(3 * c) = mu(c) * std::hypot(u(3 * c + 1), u(3 * c + 2));
-    return s;
+  Eigen::VectorXd v = velocities(g, rb, l0);
+  Eigen::VectorXd u = inner.Jc() * v + g.w;
+  Eigen::VectorXd s(nc);
+  auto update_shift = [&] {
+    for (int c = 0; c < nc; ++c) s(c) = g.mu(c) * std::hypot(u(3 * c + 1), u(3 * c + 2));
   };
-  Eigen::VectorXd u(m);  // the contact velocities of v, set with each residual
+  update_shift();
 
-  // the contacts' impulses r_c = P_K(rb_c - y_c / rho_c) for y = Jc v + w + s (+ a step)
-  auto impulses = [&](const Eigen::VectorXd& y, Eigen::VectorXd& r) {
-    for (int c = 0; c < nc; ++c)
-      r.segment<3>(3 * c) = project_on_cone(r_centre.segment<3>(3 * c) - y.segment<3>(3 * c) / rho(c), mu(c));
-  };
-
+  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> cholesky;
+  std::vector<int> kinds, kinds_after;
+  Eigen::VectorXd r(m), G(n), d(n);
   SolverAnswer answer;
-  Eigen::VectorXd r(m), grad(n), dv(n), v_try(n), r_try(m);
-  // G(v) = M (v - v_free) - Jj^T l(v) - Jc^T r(v), with the shift inside r(v)
-  auto residual = [&](const Eigen::VectorXd& vel, Eigen::VectorXd& rr, Eigen::VectorXd& uu) {
-    uu = Jc * vel + g.w;
-    impulses(uu + shift_of(uu), rr);
-    return Eigen::VectorXd(g.M * (vel - g.v_free) + Jj_t * c_inv.cwiseProduct(g.Jj * vel + g.b) - Jc_t * rr);
-  };
-  // |G|^2 in M^-1's metric (M is block diagonal)
-  auto size = [&](const Eigen::VectorXd& G) {
-    double total = 0.0;
-    for (int i = 0; i < nb; ++i) total += G.segment<6>(6 * i).dot(inv_mass[i] * G.segment<6>(6 * i));
-    return total;
-  };
-  Eigen::SparseLU<SparseMatrix> lu;
-  lu.analyzePattern(H);
-  int steps = 0;
   answer.residual = std::numeric_limits<double>::infinity();
-  Eigen::VectorXd u_try(m);
-  for (int outer = 0; steps < options.max_iterations; ++outer) {
-    grad = residual(v, r, u);
-    double psi = size(grad);
-    const double scale = std::max(v.dot(g.M * v), 1e-300);
-    for (int inner = 0; inner < settings_.inner_iterations && steps < options.max_iterations; ++inner) {
-      if (psi <= 1e-24 * scale) break;
-      // the semismooth Jacobian Hc + Jc^T B Jc, B_c = dP_K (I + dS_c) / rho_c
-      Eigen::Map<Eigen::VectorXd>(H.valuePtr(), H.nonZeros()) = base;
-      for (int c = 0; c < nc; ++c) {
-        const ProblemContact& k = p.contacts[c];
-        const Eigen::Vector3d uc = u.segment<3>(3 * c);
-        const double ut = std::hypot(uc(1), uc(2));
-        Eigen::Vector3d shifted = uc;
-        shifted(0) += mu(c) * ut;
-        const Eigen::Matrix3d dP =
-            cone_projection_jacobian(r_centre.segment<3>(3 * c) - shifted / rho(c), mu(c));
-        if (dP.isZero()) continue;
-        // d(u + s)/du: the shift mu |u_T| moves the normal with the tangential velocity
-        Eigen::Matrix3d d_shifted = Eigen::Matrix3d::Identity();
-        if (ut > 0) d_shifted.block<1, 2>(0, 1) = mu(c) * uc.tail<2>().transpose() / ut;
-        const Eigen::Matrix3d B = dP * d_shifted / rho(c);
-        int at = 0;
-        for (int i : {k.a, k.b})
-          for (int j : {k.a, k.b}) {
-            if (i < 0 || j < 0) continue;
-            const ContactJacobian& Ji = i == k.a ? k.ja : k.jb;
-            const ContactJacobian& Jk = j == k.a ? k.ja : k.jb;
-            const Matrix6d block = Ji.transpose() * B * Jk;
-            for (int rr = 0; rr < 6; ++rr)
-              for (int ss = 0; ss < 6; ++ss) H.valuePtr()[slots[c].index[at++]] += block(rr, ss);
-          }
-      }
-      lu.factorize(H);
-      dv = -lu.solve(grad);
+  int steps = 0;
+  bool analysed = false;
+  while (steps < options.max_iterations) {
+    // inner: Newton on f for this centre and shift
+    for (int k = 0; k < settings_.inner_iterations && steps < options.max_iterations; ++k) {
+      inner.gradient(v, u, rb, s, r, G);
+      const SparseMatrix& H = inner.hessian(rb, u, s, kinds);
+      if (!analysed) cholesky.analyzePattern(H), analysed = true;
+      cholesky.factorize(H);
+      if (cholesky.info() != Eigen::Success) break;  // H is positive definite unless M is not
+      d = -cholesky.solve(G);
       ++steps;
-      // backtracking on |G|^2 (Armijo): the Newton step decreases it near a solution
-      double a = 1.0;
-      bool accepted = false;
-      for (int k = 0; k < 30; ++k, a *= 0.5) {
-        v_try = v + a * dv;
-        const Eigen::VectorXd G = residual(v_try, r_try, u_try);
-        const double psi_try = size(G);
-        if (psi_try <= (1.0 - 1e-4 * a) * psi) {
-          v = v_try, r = r_try, u = u_try, grad = G, psi = psi_try, accepted = true;
-          break;
-        }
-      }
-      if (!accepted) break;
+      const double slope0 = G.dot(d);
+      if (!(slope0 < 0)) break;  // at the minimum to round-off
+      const InnerProblem::Line line = inner.line(v, u, d);
+      const double a = exact_line_search([&](double x) { return inner.slope(line, x, rb, s); }, slope0);
+      v += a * d;
+      u += a * line.ud;
+      // a full step that kept every contact where it was has reached the exact minimum of
+      // this piecewise quadratic (up to the cone's curvature): the inner problem is solved
+      inner.kinds(rb, u, s, kinds_after);
+      if (std::abs(a - 1.0) < 1e-3 && kinds_after == kinds) break;
     }
-    // outer: the impulses become the proximal centre
-    r_centre = r;
-    answer.residual = natural_map_residual(r, u, mu, q_norm);
+    inner.gradient(v, u, rb, s, r, G);
+    answer.residual = natural_map_residual(r, u, g.mu, q_norm);
     if (answer.residual <= options.tolerance) break;
+    // outer: the impulses become the proximal centre, the sliding speeds the shift
+    rb = r;
+    update_shift();
   }
   answer.sweeps = steps;
   answer.capped = answer.residual > options.tolerance;
-  answer.r = r_centre;
-  answer.l = -c_inv.cwiseProduct(g.Jj * v + g.b);
+  answer.r = r;
+  answer.l = inner.joint_impulses(v);
   return answer;
 }
 

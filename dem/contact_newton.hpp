@@ -1,20 +1,28 @@
 // A primal Newton method for the contact problem (on velocities, as MuJoCo's),
-// exact for Coulomb's law through an outer proximal-point loop. EXPERIMENTAL: a
-// candidate of the solver study, not used by runs (docs/model/contact_problems.md
-// has its measured convergence).
+// exact for Coulomb's law through an outer proximal-point loop.
 //
-// The unknown is the bodies' velocity v (its size follows the bodies, not the
-// redundant contact points). For a proximal centre rb (contact impulses) and a
-// weight rho per contact, the contact impulses are
-//   r_c(v) = P_K(rb_c - (u_c + s_c) / rho_c),  u = Jc v + w,  s_c = (mu |u_T,c|, 0, 0)
-// (De Saxce's shift inside), and Newton solves the momentum balance
-//   G(v) = M (v - v_free) + Jj^T C^-1 (Jj v + b) - Jc^T r(v) = 0
-// with the semismooth Jacobian M + Jj^T C^-1 Jj + Jc^T B Jc (sparse LU, its pattern
-// analysed once per problem) and a backtracking line search on |G|^2 in M^-1's metric.
-// The outer loop sets rb = r: its fixed point is r = P_K(r - (u + s) / rho), a zero
-// of natural_map_residual. rho is a fraction of each contact's effective inverse mass.
-// Measured: without friction it converges in about ten outer iterations; with
-// friction the line search stalls and the outer loop converges linearly (slowly).
+// The unknown is the bodies' velocity v: its size follows the bodies, not the
+// redundant contact points, so the four points of a face resting on another
+// (a rank-deficient Delassus matrix, where dual Newton methods fail) cost
+// nothing special. For a proximal centre rb (contact impulses), a shift s
+// (De Saxce's mu |u_T| on each normal) and a weight rho_c per contact, the inner
+// problem is the minimum of the convex function
+//
+//   f(v) = 1/2 (v - v_free)^T M (v - v_free) + 1/2 (Jj v + b)^T C^-1 (Jj v + b)
+//        + sum_c rho_c / 2 |P_K(rb_c - (u_c + s_c) / rho_c)|^2,    u = Jc v + w,
+//
+// (1/2 |P_K(z)|^2 is convex with gradient P_K(z), Moreau), whose gradient is the
+// momentum balance G(v) = M (v - v_free) + Jj^T C^-1 (Jj v + b) - Jc^T r(v) with
+// r_c(v) = P_K(rb_c - (u_c + s_c) / rho_c). Newton steps use the generalised Hessian
+// H = M + Jj^T C^-1 Jj + Jc^T diag(dP_K / rho) Jc (symmetric positive definite:
+// a sparse Cholesky factorisation, its pattern analysed once per problem) and an
+// exact line search along the step (f is convex and piecewise quadratic in the step
+// length, so its derivative is monotone; each trial costs O(contacts), no sparse
+// product). The outer loop sets rb = r and s = mu |u_T|: its fixed point is
+// r = P_K(r - (u + (mu |u_T|, 0, 0)) / rho), a zero of natural_map_residual.
+// rho is a small fraction of each contact's effective inverse mass: the smaller, the
+// fewer outer iterations (the proximal step is 1/rho) and the stiffer the inner
+// problem, which a direct factorisation does not mind.
 #pragma once
 
 #include "dem/contact_method.hpp"
@@ -24,8 +32,8 @@ namespace icedem {
 class PrimalNewton : public ContactMethod {
  public:
   struct Settings {
-    double rho_fraction = 0.001;  // rho_c = this times the mean diagonal of J_c M^-1 J_c^T
-    int inner_iterations = 30;  // Newton steps per outer iteration, at most
+    double rho_fraction = 1e-3;  // rho_c = this times the mean diagonal of J_c M^-1 J_c^T
+    int inner_iterations = 20;   // Newton steps per outer iteration, at most
   };
   PrimalNewton() = default;
   explicit PrimalNewton(const Settings& settings) : settings_(settings) {}

@@ -28,6 +28,7 @@
 #include "dem/initial_state.hpp"
 #include "dem/step.hpp"
 #include "tests/physics/breakable_scenes.hpp"
+#include "tests/physics/contact_scenes.hpp"
 #include "tests/support/box_world.hpp"
 
 extern "C" {
@@ -36,83 +37,6 @@ extern "C" {
 
 using namespace icedem;
 using namespace icedem::testing;
-
-namespace {
-
-// keeps the last island's problem of the steps it is asked to capture
-class Keep : public ProblemObserver {
- public:
-  bool capture = false;
-  std::optional<ContactProblem> problem;
-  SolverAnswer answer;
-  bool wants_problems() const override { return capture; }
-  void solved(const ContactProblem& p, const SolverAnswer& a) override {
-    if (problem && problem->contacts.size() > p.contacts.size()) return;  // keep the largest island
-    problem = p;
-    answer = a;
-  }
-};
-
-std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, double tolerance = 1e-9) {
-  ContactSolverSettings s;
-  s.iterations = cap;
-  s.tolerance = tolerance;
-  s.friction_warm_start = true;
-  auto solver = std::make_unique<ContactSolver>(s);
-  solver->set_observer(&keep);
-  return solver;
-}
-
-// Siconos' proximal point method (semismooth Newton inside) to `tolerance`: it solves the
-// rank-deficient problems of faces touching at several points, where plain Newton fails
-SolverAnswer reference(const ContactProblem& p, double tolerance = 1e-12) {
-  MethodOptions o;
-  o.tolerance = tolerance;
-  o.max_iterations = 200;
-  return make_contact_method("siconos_prox")->solve(p, o);
-}
-
-// sum of the normal impulses of the contacts that pass `which`
-template <typename Which>
-double normal_impulse(const ContactProblem& p, const Eigen::VectorXd& r, Which which) {
-  double sum = 0.0;
-  for (int c = 0; c < static_cast<int>(p.contacts.size()); ++c)
-    if (which(p.contacts[c])) sum += r(3 * c);
-  return sum;
-}
-
-constexpr int kRowBoxes = 20;
-constexpr double kRowMu = 0.3, kBoxMass = 1.0, kHalf = 0.05, kPlateSpeed = 0.05;
-
-// The row of boxes of test_contact_solver.cpp (20 boxes of 1 kg on a floor with mu = 0.3,
-// frictionless to each other), already sliding: the boxes touch end to end and move at
-// the plate's speed, the plate touching the first. Frictionless side walls keep the row
-// from buckling. The problem of the first step is captured: its answer is known exactly,
-// where later steps depend on how well the steps before them were solved.
-ContactProblem sliding_row() {
-  Keep keep;
-  Bench bench(tight_solver(keep, 2000, 1e-9));
-  auto* solver = static_cast<ContactSolver*>(bench.world().getConstraintSolver());
-  bench.world().getSolverInfo().m_numIterations = 2000;
-  bench.world().getSolverInfo().m_warmstartingFactor = 1.0;
-  bench.world().getSolverInfo().m_minimumSolverBatchSize = 1;
-  bench.box({5.0, 0.05, 1.0}, at(0, -0.05, 0), 0.0, kRowMu, 2);  // floor, top at y = 0
-  for (double side : {-1.0, 1.0}) bench.box({5.0, 0.1, 0.01}, at(0, 0.1, side * (kHalf + 0.011)), 0.0, 0.0, 2);
-  for (int i = 0; i < kRowBoxes; ++i) {
-    // overlapping by 0.5 mm: boxes that exactly touch are not all found touching
-    btRigidBody* b = bench.box({kHalf, kHalf, kHalf}, at(0.2 + (2 * i + 1) * (kHalf - 0.00025), kHalf, 0), kBoxMass, 1.0, 1);
-    b->setLinearVelocity(btVector3(kPlateSpeed, 0, 0));
-  }
-  const double plate_x0 = 0.2 - 0.01 + 0.0005;  // its face 0.5 mm into the first box
-  btRigidBody* plate = bench.box({0.01, 0.04, 0.2}, at(plate_x0, 0.06, 0), 0.0, 0.0, 3, true);
-  solver->set_structure(plate);
-  plate->getMotionState()->setWorldTransform(at(plate_x0 + kPlateSpeed * kDt, 0.06, 0));
-  keep.capture = true;
-  bench.world().stepSimulation(kDt, 0);
-  return *keep.problem;
-}
-
-}  // namespace
 
 TEST(ContactProblem, RestingBoxProblemCarriesItsWeight) {
   Keep keep;
@@ -231,20 +155,9 @@ TEST(ContactProblem, MeritIsSiconosNaturalMapResidual) {
 }
 
 TEST(ContactProblem, LatticeJointsFoldIntoTheDelassusForm) {
-  // two lattices of 0.15 m elements (a 0.6 x 0.3 m strip, a 0.3 x 0.3 m square), frictionless,
-  // the square pushed into the strip at 0.2 m/s; joints soft (the 0.15 m paper CFM) and unbreakable
-  const Scene scene = bench({"fracture.cfm=0.00743", "friction.ice_ice=0", "solver.tolerance=1e-9",
-                             "solver.iterations=20000", "fracture.joint_iterations=20000"});
-  Floe square = square_floe(10.0 + 0.45 + 0.002, 0.0, 0.3);
-  State state = initial_state(scene, {strip(0.6, 0.3), square});
-  for (FloeBody& f : state.world->floes())
-    if (f.floe_id == 1) f.body->setLinearVelocity(btVector3(-0.2, 0, 0));
+  // two lattices pushed together (contact_scenes.hpp), frictionless, joints soft
   Keep keep;
-  state.world->set_problem_observer(&keep);
-  for (int s = 0; s < 10 && !keep.problem; ++s) {
-    keep.capture = true;
-    step(scene, state);
-  }
+  pushed_lattices(keep);
   ASSERT_TRUE(keep.problem) << "the lattices never touched";
   const ContactProblem& p = *keep.problem;
   ASSERT_EQ(p.joint_rows(), 6 * (10 + 4));  // six rows per joint: 10 in the strip, 4 in the square

@@ -1,0 +1,111 @@
+#!/usr/bin/python3
+"""Regenerate the contact-problem library: real contact problems of real runs,
+one FCLIB file per island (docs/model/contact_problems.md).
+
+    bench/contact/make_library.py OUTDIR [--icedem build/dem/icedem] [--only SET ...]
+
+Each set runs one scenario with `icedem run --export-problems` and writes its
+files to OUTDIR/SET/. The lattice sets run their scenario twice: once to find the
+joint breaks, once more (the runs are deterministic) to write the islands of the
+steps that broke joints, the solves whose loads broke them. A set whose directory
+already holds files is skipped, so the script resumes where it stopped.
+
+Sets (about 25 minutes of CPU in all):
+  small_jam    the paper's small floes: islands stopped at the sweep cap
+  wide_jam     the same on a 48 m wide field (9,600 floes), the longest chains
+  large_rigid  the paper's 0.6 m rigid floes: capped islands as the pack builds up
+  locked       the stress suite's jammed field: a pack locked between cone and end wall
+  lattice_020  0.6 m floes of 0.20 m elements: steps that broke a joint
+  lattice_015  0.6 m floes of 0.15 m elements: steps that broke a joint, among them
+               floes pressed under the cone
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def scenario(path):
+    return os.path.join(ROOT, "scenarios", path)
+
+
+# name: (scenario, extra icedem arguments, export arguments); the lattice sets'
+# export times come from a first run
+SETS = {
+    "small_jam": ("paper/small_floes.toml", [],
+                  ["--export-capped", "16", "--export-spacing", "15", "--export-min-contacts", "50"]),
+    "wide_jam": ("paper/small_floes.toml",
+                 ["--set", "channel.width=48", "--set", "tank.width=49.2", "--set", "time.duration=150"],
+                 ["--export-capped", "6", "--export-spacing", "15", "--export-min-contacts", "300"]),
+    "large_rigid": ("paper/large_floes_rigid.toml", [],
+                    ["--export-capped", "6", "--export-spacing", "30", "--export-min-contacts", "50"]),
+    "locked": ("stress/jammed.toml", [],
+               ["--export-at", "40,46,50,54,58", "--export-min-contacts", "50"]),
+    "lattice_020": ("paper/large_floes_breakable_020.toml", [], None),
+    "lattice_015": ("paper/large_floes_breakable_015.toml", [], None),
+}
+BREAK_STEPS = 6  # steps with breaks written per lattice set, spread over the run
+
+
+def run(icedem, scen, extra, out_h5, export_dir=None, export_args=(), name=""):
+    cmd = [icedem, "run", scenario(scen), "-o", out_h5, *extra]
+    if export_dir:
+        cmd += ["--export-problems", export_dir, "--export-name", name, *export_args]
+    print("  " + " ".join(cmd), flush=True)
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+
+
+def break_times(h5_path):
+    """The times of the steps that broke joints, pressed-under breaks first, then spread over the run."""
+    with h5py.File(h5_path, "r") as f:
+        events = f["/fracture/events"][()]
+        names = dict(item.split(" ", 1) for item in
+                     f["/fracture/events"].attrs["mechanism_names"].split(", ")) if len(events) else {}
+    if not len(events):
+        return []
+    pressed = [int(code) for code, n in names.items() if n.strip() == "pressed under"]
+    times = np.unique(np.round(events["time"], 6))
+    pressed_times = np.unique(np.round(events["time"][np.isin(events["mechanism"], pressed)], 6))
+    chosen = list(pressed_times[:BREAK_STEPS // 2])
+    rest = [t for t in times if t not in chosen]
+    if rest:
+        picks = np.linspace(0, len(rest) - 1, min(BREAK_STEPS - len(chosen), len(rest))).round().astype(int)
+        chosen += [rest[i] for i in sorted(set(picks))]
+    return sorted(chosen)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("outdir")
+    parser.add_argument("--icedem", default=os.path.join(ROOT, "build", "dem", "icedem"))
+    parser.add_argument("--only", nargs="*", choices=list(SETS), help="sets to make (default: all)")
+    args = parser.parse_args()
+    for name in args.only or SETS:
+        scen, extra, export = SETS[name]
+        target = os.path.join(args.outdir, name)
+        if os.path.isdir(target) and os.listdir(target):
+            print(f"{name}: already made, skipped")
+            continue
+        print(f"{name}:", flush=True)
+        with tempfile.TemporaryDirectory() as tmp:
+            if export is None:
+                first = os.path.join(tmp, "first.h5")
+                run(args.icedem, scen, extra, first)
+                times = break_times(first)
+                if not times:
+                    print(f"  no joint broke: nothing to write for {name}")
+                    continue
+                export = ["--export-at", ",".join(f"{t:.6f}" for t in times), "--export-min-contacts", "20"]
+            run(args.icedem, scen, extra, os.path.join(tmp, "run.h5"), target, export, name)
+        print(f"  {len(os.listdir(target))} problems in {target}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

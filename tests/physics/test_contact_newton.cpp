@@ -1,0 +1,111 @@
+// The primal Newton contact method (dem/contact_newton.hpp) on problems whose answer
+// is known:
+//  - the sliding row of 20 boxes (contact_scenes.hpp): the plate carries all their
+//    friction, n mu m g h, a chain that ten Gauss-Seidel sweeps solve to 0.15 of it;
+//  - two lattices pushed together: with the joints in the Hessian (not folded, not
+//    swept) the bodies' velocities and joint impulses are Siconos' on the folded form;
+//  - two islands of the paper's small-floe run that stopped at today's sweep cap
+//    (tests/physics/data/contact/, written by `icedem run --export-problems`), with the
+//    reference solution that `contact_problems reference` stored in them (Siconos to
+//    about 1e-11, cross-checked by a second Siconos method).
+#include <gtest/gtest.h>
+
+#include "dem/contact_newton.hpp"
+#include "dem/contact_problem_file.hpp"
+#include "tests/physics/contact_scenes.hpp"
+
+extern "C" {
+#include <fclib.h>
+}
+
+using namespace icedem;
+using namespace icedem::testing;
+
+namespace {
+
+SolverAnswer newton(const ContactProblem& p, double tolerance, int cap, bool warm = true) {
+  MethodOptions o;
+  o.tolerance = tolerance;
+  o.max_iterations = cap;
+  o.warm_start = warm;
+  return PrimalNewton().solve(p, o);
+}
+
+std::string data_file(const std::string& name) {
+  return std::string(ICEDEM_SOURCE_DIR) + "/tests/physics/data/contact/" + name;
+}
+
+// the reference impulses stored in a problem file (FCLIB's /solution)
+Eigen::VectorXd stored_reference(const std::string& path, int rows) {
+  fclib_solution* s = fclib_read_solution(path.c_str());
+  if (!s) return {};
+  Eigen::VectorXd r = Eigen::Map<Eigen::VectorXd>(s->r, rows);
+  fclib_delete_solutions(s, 1);
+  return r;
+}
+
+}  // namespace
+
+TEST(ContactNewton, SlidingRowPutsAllTheFrictionOnThePlate) {
+  const ContactProblem p = sliding_row();
+  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;  // N s over the step
+  // cold: the chain's whole load from zero impulses; 1e-10 is round-off for this problem
+  const SolverAnswer a = newton(p, 1e-10, 200, false);
+  EXPECT_FALSE(a.capped) << "merit " << a.residual << " after " << a.sweeps << " Newton steps";
+  EXPECT_LT(natural_map_residual(local_form(p), a.r), 1e-9);
+  // the plate's impulse is n mu m g h: at a merit of 1e-10 within 1e-6 of it
+  EXPECT_NEAR(normal_impulse(p, a.r, [](const ProblemContact& c) { return c.on_structure; }), expected,
+              1e-6 * expected);
+  std::printf("sliding row: %d Newton steps to a merit of %.1e\n", a.sweeps, a.residual);
+}
+
+TEST(ContactNewton, LatticeJointsInTheHessianGiveTheFoldedAnswer) {
+  Keep keep;
+  pushed_lattices(keep);
+  ASSERT_TRUE(keep.problem) << "the lattices never touched";
+  const ContactProblem& p = *keep.problem;
+  const GlobalForm g = global_form(p);
+  const SolverAnswer folded = reference(p, 1e-11);
+  const SolverAnswer a = newton(p, 1e-11, 200);
+  EXPECT_FALSE(a.capped) << "merit " << a.residual;
+  const Eigen::VectorXd v_folded = velocities(g, folded.r, folded.l), v = velocities(g, a.r, a.l);
+  // both at 1e-11: velocities to 1e-8, joint impulses to 1e-6 (the folded joint impulses
+  // go through C^-1, a factor ~1e3 on round-off)
+  EXPECT_LT((v - v_folded).norm(), 1e-8 * v_folded.norm());
+  EXPECT_LT((a.l - folded.l).norm(), 1e-6 * folded.l.norm());
+  // and Newton's joint impulses solve the joint rows J v + b + C l = 0 to round-off
+  // (relative to the rows' largest term: here b is nearly zero, the joints start unstrained)
+  const Eigen::VectorXd Cl = g.compliance.cwiseProduct(a.l), Jv = g.Jj * v;
+  EXPECT_LT((Jv + g.b + Cl).norm(), 1e-9 * std::max({g.b.norm(), Cl.norm(), Jv.norm()}));
+}
+
+// Islands of the paper run's jams: the solution Newton reaches agrees with the stored
+// reference in what is unique (bodies' velocities, the load on the structure; a face's
+// impulses are not unique). Tolerances: Siconos' own two methods differ by 2e-7 in the
+// velocities on the first problem, so 1e-5 at a merit of 1e-7 is what the solutions allow.
+class ContactNewtonRun : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ContactNewtonRun, ReachesTheReferenceOnAJamOfThePaperRun) {
+  const std::string path = data_file(GetParam());
+  const ProblemFile file = read_problem_file(path);
+  const ContactProblem& p = file.problem;
+  const Eigen::VectorXd r_ref = stored_reference(path, p.contact_rows());
+  ASSERT_EQ(r_ref.size(), p.contact_rows()) << "no reference solution in " << path;
+  // the run's own solver stopped at the sweep cap on these islands
+  ASSERT_TRUE(file.answer && file.answer->capped);
+  const SolverAnswer a = newton(p, 1e-7, 400);
+  const double merit = natural_map_residual(local_form(p), a.r);
+  EXPECT_LT(merit, 1e-7) << a.sweeps << " Newton steps";
+  const GlobalForm g = global_form(p);
+  const Eigen::VectorXd v_ref = velocities(g, r_ref, joint_impulses(p, r_ref));
+  const Eigen::VectorXd v = velocities(g, a.r, a.l);
+  EXPECT_LT((v - v_ref).norm(), 1e-5 * v_ref.norm());
+  const Eigen::Vector3d load_ref = structure_impulse(p, r_ref), load = structure_impulse(p, a.r);
+  EXPECT_LT((load - load_ref).norm(), 1e-5 * std::max(load_ref.norm(), 1e-9));
+  // what the run's capped sweeps left: the merit of its answer, for the record
+  std::printf("%s: %zu contacts; the run's answer %.1e, Newton %.1e in %d steps\n", GetParam(), p.contacts.size(),
+              natural_map_residual(local_form(p), file.answer->r), merit, a.sweeps);
+}
+
+INSTANTIATE_TEST_SUITE_P(Jams, ContactNewtonRun,
+                         ::testing::Values("small_floes_t052.9.hdf5", "small_floes_t124.5.hdf5"));
