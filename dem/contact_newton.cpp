@@ -178,6 +178,13 @@ class InnerProblem {
     return total;
   }
 
+  // M^-1 x, body by body
+  Eigen::VectorXd inverse_mass_times(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd y(x.size());
+    for (int i = 0; i < nb_; ++i) y.segment<6>(6 * i) = inv_mass_[i] * x.segment<6>(6 * i);
+    return y;
+  }
+
   Eigen::VectorXd joint_impulses(const Eigen::VectorXd& v) const {
     if (!g_.Jj.rows()) return Eigen::VectorXd();
     return -c_inv_.cwiseProduct(g_.Jj * v + g_.b);
@@ -273,8 +280,11 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
       inner.kinds(rb, u, s, kinds_after);
       if (std::abs(a - 1.0) < 1e-3 && kinds_after == kinds) break;
     }
+    // judged on what the answer is: the impulses r (and the joints' l at v) and the
+    // velocities they give, v - M^-1 G, not on v itself (the inner loop may stop short)
     inner.gradient(v, u, rb, s, r, G);
-    answer.residual = natural_map_residual(r, u, g.mu, q_norm);
+    const Eigen::VectorXd u_r = inner.Jc() * (v - inner.inverse_mass_times(G)) + g.w;
+    answer.residual = natural_map_residual(r, u_r, g.mu, q_norm);
     if (answer.residual <= options.tolerance) break;
     // outer: the impulses become the proximal centre, the sliding speeds the shift
     rb = r;
