@@ -258,15 +258,19 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
   SolverAnswer answer;
   answer.residual = std::numeric_limits<double>::infinity();
   int steps = 0;
-  bool analysed = false;
-  while (steps < options.max_iterations) {
+  bool analysed = false, failed = false;
+  while (steps < options.max_iterations && !failed) {
     // inner: Newton on f for this centre and shift
     for (int k = 0; k < settings_.inner_iterations && steps < options.max_iterations; ++k) {
       inner.gradient(v, u, rb, s, r, G);
       const SparseMatrix& H = inner.hessian(rb, u, s, kinds);
       if (!analysed) cholesky.analyzePattern(H), analysed = true;
       cholesky.factorize(H);
-      if (cholesky.info() != Eigen::Success) break;  // H is positive definite unless M is not
+      // H is positive definite unless a body's mass matrix is not: nothing more to do
+      if (cholesky.info() != Eigen::Success) {
+        failed = true;
+        break;
+      }
       d = -cholesky.solve(G);
       ++steps;
       const double slope0 = G.dot(d);

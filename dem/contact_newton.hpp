@@ -16,13 +16,13 @@
 // r_c(v) = P_K(rb_c - (u_c + s_c) / rho_c). Newton steps use the generalised Hessian
 // H = M + Jj^T C^-1 Jj + Jc^T diag(dP_K / rho) Jc (symmetric positive definite:
 // a sparse Cholesky factorisation, its pattern analysed once per problem) and an
-// exact line search along the step (f is convex and piecewise quadratic in the step
-// length, so its derivative is monotone; each trial costs O(contacts), no sparse
-// product). The outer loop sets rb = r and s = mu |u_T|: its fixed point is
+// exact line search along the step (f is convex, so its derivative along the step is
+// monotone; each trial costs O(contacts), no sparse product). The outer loop sets rb = r and s = mu |u_T|: its fixed point is
 // r = P_K(r - (u + (mu |u_T|, 0, 0)) / rho), a zero of natural_map_residual.
 // rho is a small fraction of each contact's effective inverse mass: the smaller, the
-// fewer outer iterations (the proximal step is 1/rho) and the stiffer the inner
-// problem, which a direct factorisation does not mind.
+// longer the proximal steps, but the stiffer the inner problem, whose contacts then
+// change state one by one; 1e-3 was the best of 1e-2, 1e-3 and 1e-4 on the problem
+// library (docs/model/contact_problems.md has the measurements and what is still slow).
 #pragma once
 
 #include "dem/contact_method.hpp"
