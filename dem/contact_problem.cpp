@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 
 namespace icedem {
 namespace {
@@ -178,9 +179,18 @@ Eigen::Vector3d structure_impulse(const ContactProblem& p, const Eigen::VectorXd
 
 double local_q_norm(const ContactProblem& p) {
   const GlobalForm g = global_form(p);
+  if (p.contacts.empty()) return 0.0;
   if (p.joints.empty()) return (g.Jc * g.v_free + g.w).norm();
-  const FoldedMass folded = fold_joints(p, g);
-  return (g.Jc * (folded.Mt_inv * folded.ft) + g.w).norm();
+  for (int r = 0; r < g.compliance.size(); ++r)
+    if (!(g.compliance(r) > 0.0)) throw std::invalid_argument("local_q_norm: joint row " + std::to_string(r) + " is rigid");
+  // Mt^-1 ft by a sparse factorisation of Mt = M + Jj^T C^-1 Jj, not by folding the
+  // joints into a dense inverse per lattice (fold_joints), which costs the cube of its size
+  const Eigen::VectorXd c_inv = g.compliance.cwiseInverse();
+  const Eigen::SparseMatrix<double> Jj_t = g.Jj.transpose();
+  const Eigen::SparseMatrix<double> Mt = g.M + Jj_t * c_inv.asDiagonal() * g.Jj;
+  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> factor(Mt);
+  const Eigen::VectorXd x = factor.solve(Eigen::VectorXd(g.M * g.v_free - Jj_t * c_inv.cwiseProduct(g.b)));
+  return (g.Jc * x + g.w).norm();
 }
 
 Eigen::VectorXd velocities(const GlobalForm& g, const Eigen::VectorXd& r, const Eigen::VectorXd& l) {

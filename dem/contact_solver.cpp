@@ -9,6 +9,8 @@
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
+#include "dem/joint_springs.hpp"
+
 namespace icedem {
 
 // Gauss-Seidel converges linearly, e_k ~ rho^k: a sweep that changes the impulses by
@@ -22,6 +24,10 @@ double ContactSolver::remaining_error(double change, double previous_change, int
   if (sweeps < 2 || previous_change <= 0.0) return change / (1.0 - kMaxRate);
   const double rate = std::min(change / previous_change, kMaxRate);
   return change / (1.0 - rate);
+}
+
+ContactSolver::ContactSolver(const ContactSolverSettings& settings) : settings_(settings) {
+  if (settings_.method != "pgs") method_ = make_contact_method(settings_.method);
 }
 
 void ContactSolver::prepareSolve(int numBodies, int numManifolds) {
@@ -49,6 +55,40 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
       const double sign = manifold.getBody0() == structure_ ? 1.0 : -1.0;
       for (int r = first; r < end; ++r) structure_rows_.push_back({r, sign});
     }
+  }
+}
+
+// A spring joint's row (dem/joint_springs.hpp): Bullet wrote it as
+//   rhs = (erp e / h - J v_free) jacDiagABInv,  cfm = the constraint's stop CFM,
+// the row solved when J v = erp e / h - (cfm / jacDiagABInv) l. The spring K asks for
+//   J v = e / h - l / (h^2 K):
+// the error read back through the joint's erp, the compliance 1 / (h^2 K) written as
+// cfm = jacDiagABInv / (h^2 K). J v_free is computed as Bullet does (convertJoint).
+void ContactSolver::convertJoints(btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info) {
+  btSequentialImpulseConstraintSolver::convertJoints(constraints, numConstraints, info);
+  const double h = info.m_timeStep;
+  for (int r = 0; r < m_tmpSolverNonContactConstraintPool.size(); ++r) {
+    btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[r];
+    const auto* joint = dynamic_cast<const SpringJoint*>(static_cast<btTypedConstraint*>(row.m_originalContactPoint));
+    if (!joint || row.m_jacDiagABInv == 0) continue;
+    const btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
+    const btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
+    // which of A's axes the row acts along (linear rows) or about (angular rows: no linear part)
+    const bool angular = row.m_contactNormal1.length2() == 0;
+    const btVector3 world_axis = angular ? row.m_relpos1CrossNormal : row.m_contactNormal1;
+    const btVector3 local = joint->getRigidBodyA().getWorldTransform().getBasis().transpose() * world_axis;
+    const int axis = local.absolute().maxAxis();
+    const double K = joint->springs()(angular ? 3 + axis : axis);
+    auto free = [](const btSolverBody& s, const btVector3& n, const btVector3& rn) {
+      if (!s.m_originalBody) return 0.0;
+      return double(n.dot(s.m_linearVelocity + s.m_externalForceImpulse) +
+                    rn.dot(s.m_angularVelocity + s.m_externalTorqueImpulse));
+    };
+    const double jv_free = free(a, row.m_contactNormal1, row.m_relpos1CrossNormal) +
+                           free(b, row.m_contactNormal2, row.m_relpos2CrossNormal);
+    const double error_rate = (row.m_rhs / row.m_jacDiagABInv + jv_free) / joint->erp();  // e / h
+    row.m_rhs = (error_rate - jv_free) * row.m_jacDiagABInv;
+    row.m_cfm = row.m_jacDiagABInv / (h * h * K);
   }
 }
 
@@ -234,6 +274,12 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
   solveGroupCacheFriendlySplitImpulseIterations(bodies, numBodies, manifolds, numManifolds, constraints,
                                                 numConstraints, info, debug);
 
+  // the method solves an island's contacts and joints together; a lattice alone too
+  if (method_ && (!order_.empty() || m_tmpSolverNonContactConstraintPool.size() > 0)) {
+    solve_with_method(info);
+    return 0.f;
+  }
+
   int joint_sweeps = 0;
   for (int j = 0; j < m_tmpSolverNonContactConstraintPool.size(); ++j)
     joint_sweeps = std::max(joint_sweeps, m_tmpSolverNonContactConstraintPool[j].m_overrideNumSolverIterations);
@@ -287,6 +333,41 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
     }
   }
   return 0.f;
+}
+
+void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
+  ContactProblem problem = capture_problem(info);
+  problem.island = report_.islands;
+  MethodOptions options;
+  options.tolerance = settings_.merit_tolerance;
+  options.max_iterations = settings_.method_iterations;
+  options.warm_start = true;  // from the rows' warm start (solver.warm_start of the last step's)
+  SolverAnswer answer = method_->solve(problem, options);
+  apply_impulses(answer);
+  report_.iterations = std::max(report_.iterations, answer.sweeps);
+  report_.residual = std::max(report_.residual, answer.residual);
+  if (answer.capped) report_.capped = true;
+  ++report_.islands;
+  if (observer_ && observer_->wants_problems()) observer_->solved(problem, answer);
+}
+
+void ContactSolver::apply_impulses(const SolverAnswer& answer) {
+  auto set = [&](btSolverConstraint& c, double impulse) {
+    const btScalar change = impulse - c.m_appliedImpulse;
+    btSolverBody& a = m_tmpSolverBodyPool[c.m_solverBodyIdA];
+    btSolverBody& b = m_tmpSolverBodyPool[c.m_solverBodyIdB];
+    a.internalApplyImpulse(c.m_contactNormal1 * a.internalGetInvMass(), c.m_angularComponentA, change);
+    b.internalApplyImpulse(c.m_contactNormal2 * b.internalGetInvMass(), c.m_angularComponentB, change);
+    c.m_appliedImpulse = impulse;
+  };
+  for (int c = 0; c < m_tmpSolverContactConstraintPool.size(); ++c) {
+    btSolverConstraint& normal = m_tmpSolverContactConstraintPool[c];
+    set(normal, answer.r(3 * c));
+    for (int k = 0; k < 2; ++k)
+      set(m_tmpSolverContactFrictionConstraintPool[normal.m_frictionIndex + k], answer.r(3 * c + 1 + k));
+  }
+  for (int j = 0; j < m_tmpSolverNonContactConstraintPool.size(); ++j)
+    set(m_tmpSolverNonContactConstraintPool[j], answer.l(j));
 }
 
 SolverAnswer ContactSolver::row_impulses() const {

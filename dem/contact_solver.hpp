@@ -25,6 +25,11 @@
 // With warm_start 0.85 (Bullet's), no friction warm start, Bullet's row order
 // and tolerance 0 it computes exactly what btSequentialImpulseConstraintSolver
 // computes (tests/physics/test_contact_solver.cpp checks it bit for bit).
+// With another method (settings.method, dem/contact_method.hpp) an island with
+// contacts is not swept: its problem is read off the rows Bullet set up
+// (capture_problem), solved whole, joints included, and the impulses written back
+// to the rows (apply_impulses); Bullet then integrates as after the sweeps. The
+// split-impulse position pass stays Bullet's sweeps either way.
 //
 // Residual after sweep k (dimensionless), per solve group (island): the relative
 // change of the sweep,
@@ -42,11 +47,14 @@
 // covers the contacts.
 #pragma once
 
+#include <memory>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
 #include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
 
+#include "dem/contact_method.hpp"
 #include "dem/contact_problem.hpp"
 
 namespace icedem {
@@ -74,6 +82,12 @@ struct ContactSolverSettings {
   bool friction_warm_start = false;  // carry friction impulses over from the previous step
   SweepOrder order = SweepOrder::kBullet;
   double crushing_force = 0.0;     // N, largest normal force of one contact (pair); 0: none
+  // the method that solves an island with contacts: "pgs" (the sweeps above) or another
+  // of dem/contact_method.hpp, which solves the island's whole problem (joints included)
+  // to merit_tolerance in at most method_iterations of its iterations
+  std::string method = "pgs";
+  double merit_tolerance = 1e-6;
+  int method_iterations = 300;
 };
 
 /// What the solver did during one time step (all islands, all substeps).
@@ -97,7 +111,7 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   /// following one that changed them by `previous_change`: change / (1 - rate).
   static double remaining_error(double change, double previous_change, int sweeps);
 
-  explicit ContactSolver(const ContactSolverSettings& settings) : settings_(settings) {}
+  explicit ContactSolver(const ContactSolverSettings& settings);
 
   /// The structure whose load the residual follows (null: none).
   void set_structure(const btCollisionObject* structure) { structure_ = structure; }
@@ -115,6 +129,9 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
 
  protected:
   void convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info) override;
+  // Bullet's joint rows, then the rows of spring joints (dem/joint_springs.hpp) rewritten
+  // from their stiffness and the step
+  void convertJoints(btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info) override;
   void solveGroupCacheFriendlySplitImpulseIterations(btCollisionObject** bodies, int numBodies,
                                                      btPersistentManifold** manifolds, int numManifolds,
                                                      btTypedConstraint** constraints, int numConstraints,
@@ -157,10 +174,16 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   ContactProblem capture_problem(const btContactSolverInfo& info) const;
   // the impulses the rows hold now
   SolverAnswer row_impulses() const;
+  // the island solved by settings_.method instead of the sweeps; its impulses written to the rows
+  void solve_with_method(const btContactSolverInfo& info);
+  // set the rows' impulses to `answer`'s (rows in capture_problem's order), the bodies'
+  // velocity changes with them
+  void apply_impulses(const SolverAnswer& answer);
 
   ContactSolverSettings settings_;
   const btCollisionObject* structure_ = nullptr;
   ProblemObserver* observer_ = nullptr;
+  std::unique_ptr<ContactMethod> method_;     // null: the sweeps
   SolverReport report_;
   std::vector<StructureRow> structure_rows_;  // of the current group
   bool two_directions_ = false;               // two friction rows per contact (else one), set per group

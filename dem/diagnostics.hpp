@@ -43,14 +43,19 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      &StepDiagnostics::max_joint_gap},
     {"max_cone_penetration", "m", "deepest ice vertex inside the structure hull, radially (tunnelling shows here)",
      &StepDiagnostics::max_cone_penetration},
-    {"solver_iterations", "1", "most PGS sweeps over the contacts any island used in the step (the cap is solver.iterations)",
+    {"solver_iterations", "1",
+     "most PGS sweeps over the contacts any island used in the step (the cap is solver.iterations); with "
+     "another solver.method, most of its iterations (cap solver.method_iterations)",
      &StepDiagnostics::solver_iterations},
     {"solver_residual", "1",
      "largest residual an island ended the step's sweeps with: the relative change of its bodies' net impulses and "
      "of its load on the structure in the last sweep over 1 - rate, an estimate of the error left "
-     "(dem/contact_solver.hpp)",
+     "(dem/contact_solver.hpp); with another solver.method, the largest merit (natural-map residual, "
+     "docs/model/contact_problems.md)",
      &StepDiagnostics::solver_residual},
-    {"solver_capped", "1", "1 if an island reached solver.iterations with its residual above solver.tolerance",
+    {"solver_capped", "1",
+     "1 if an island reached solver.iterations with its residual above solver.tolerance (another "
+     "solver.method: solver.method_iterations with its merit above solver.merit_tolerance)",
      &StepDiagnostics::solver_capped},
 };
 inline constexpr std::size_t kDiagnosticCount = std::size(kDiagnosticColumns);

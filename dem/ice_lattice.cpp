@@ -1,5 +1,7 @@
 #include "dem/ice_lattice.hpp"
 
+#include "dem/joint_springs.hpp"
+
 #include <functional>
 #include <map>
 
@@ -77,8 +79,15 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
     frame_b.setIdentity();
     frame_a.setOrigin(btVector3(mid_a.x(), 0, mid_a.y()));
     frame_b.setOrigin(btVector3(mid_b.x(), 0, mid_b.y()));
-    joint.constraint = std::make_unique<btFixedConstraint>(*world.floes()[joint.body_a].body,
-                                                           *world.floes()[joint.body_b].body, frame_a, frame_b);
+    btRigidBody& body_a = *world.floes()[joint.body_a].body;
+    btRigidBody& body_b = *world.floes()[joint.body_b].body;
+    // elastic: springs of the ice, the same at any step (dem/joint_springs.hpp); else
+    // Bullet's ERP and CFM below set the stiffness
+    if (fracture.elastic_joints)
+      joint.constraint = std::make_unique<SpringJoint>(body_a, body_b, frame_a, frame_b,
+                                                       elastic_joint_springs(fracture, joint.axis_a), fracture.erp);
+    else
+      joint.constraint = std::make_unique<btFixedConstraint>(body_a, body_b, frame_a, frame_b);
     for (int axis = 0; axis < 6; ++axis) {
       joint.constraint->setParam(BT_CONSTRAINT_STOP_CFM, fracture.cfm, axis);
       joint.constraint->setParam(BT_CONSTRAINT_STOP_ERP, fracture.erp, axis);

@@ -72,6 +72,18 @@ std::vector<KeySpec> make_keys() {
                      "structure, outward and inward in turn"));
   k.push_back(real("solver.sor", "-", 1.0, 0.1, 1.9,
                    "(profile) successive over-relaxation factor of the contact rows (1: plain Gauss-Seidel)"));
+  k.push_back(choice("solver.method", "pgs", {"pgs", "pgs_cone", "newton"},
+                     "(profile) how an island's contacts are solved: \"pgs\", projected Gauss-Seidel sweeps on "
+                     "Bullet's rows (solver.iterations, solver.tolerance; friction clamped per direction, a "
+                     "square); \"pgs_cone\", the same sweeps with Coulomb's disc on the island's problem; "
+                     "\"newton\", the primal Newton method on the island's whole problem, joints included; these "
+                     "two to solver.merit_tolerance (docs/model/contact_problems.md)"));
+  k.push_back(real("solver.merit_tolerance", "-", 1e-6, 1e-14, 1.0,
+                   "solver.method other than \"pgs\": an island is solved when its natural-map residual, the "
+                   "merit every contact method is judged by (docs/model/contact_problems.md), is below this"));
+  k.push_back(integer("solver.method_iterations", 300, 1, 100000,
+                      "solver.method other than \"pgs\": cap of the method's iterations per island and Bullet "
+                      "step (Newton steps, or sweeps)"));
   k.push_back(choice("solver.broadphase", "dbvt", {"dbvt", "sap"},
                      "Bullet broadphase: dynamic AABB tree, or 3-axis sweep and prune over the tank"));
   k.push_back(boolean("solver.split_impulse", true,
@@ -213,6 +225,14 @@ std::vector<KeySpec> make_keys() {
                    "stiffness depends on it and on the step: recalibrate (icedem calibrate) when "
                    "time.dt or time.substeps change"));
   k.push_back(real("fracture.erp", "-", 0.8, 0.0, 1.0, "error reduction of the element joints (paper: 0.8)"));
+  k.push_back(choice("fracture.joint_stiffness", "cfm", {"cfm", "elastic"},
+                     "what sets the element joints' stiffness: \"cfm\", fracture.cfm and fracture.erp in Bullet's "
+                     "units (the stiffness then grows as 1/step^2); \"elastic\", each joint row a spring of the "
+                     "ice between two element centres (ice.elastic_modulus, ice.poisson_ratio, ice.thickness, "
+                     "fracture.element_size; docs/model/breakage.md), the same at any step"));
+  k.push_back(real("fracture.stiffness_scale", "-", 1.0, 1.0e-3, 1.0e3,
+                   "fracture.joint_stiffness = \"elastic\": factor on every joint row's stiffness, calibrated "
+                   "once on the plate-deflection test"));
   k.push_back(integer("fracture.joint_iterations", 0, 0, 100000,
                       "PGS iterations for the element joints (Bullet's per-constraint override; "
                       "contacts keep solver.iterations); 0: solver.iterations"));

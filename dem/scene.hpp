@@ -38,6 +38,9 @@ struct SolverSettings {
   Broadphase broadphase;
   bool split_impulse;         // position correction kept out of the contact impulses
   double contact_erp;         // -, fraction of penetration corrected per step
+  std::string method;         // contact method of an island: "pgs" (the sweeps above), "pgs_cone", "newton"
+  double merit_tolerance;     // -, natural-map residual that ends a method's solve
+  int method_iterations;      // cap of the method's iterations per island and Bullet step
 };
 
 struct StructureSettings {
@@ -128,6 +131,11 @@ struct FractureSettings {
   double element_size;  // m
   double cfm;           // -, Bullet units
   double erp;           // -
+  bool elastic_joints;  // joint rows are springs of the ice's modulus (fracture.joint_stiffness = "elastic")
+  double stiffness_scale;  // -, factor on the elastic rows' stiffness
+  double elastic_modulus;  // Pa, copied from the ice for the elastic rows
+  double poisson_ratio;    // -
+  double thickness;        // m
   double characteristic_length;  // m, l_c = (D / (rho_w g))^(1/4) of the ice ("auto")
   int joint_iterations;          // PGS iterations of the joints; 0: solver.iterations
   double load_filter_time;       // s, low-pass time constant of joint loads; 0: raw

@@ -106,6 +106,9 @@ Scene make_scene(const Scenario& sc) {
       choice<Broadphase>(sc, "solver.broadphase", {{"dbvt", Broadphase::kDbvt}, {"sap", Broadphase::kSweepAndPrune}});
   s.solver.split_impulse = get<bool>(sc, "solver.split_impulse");
   s.solver.contact_erp = real(sc, "solver.contact_erp");
+  s.solver.method = get<std::string>(sc, "solver.method");
+  s.solver.merit_tolerance = real(sc, "solver.merit_tolerance");
+  s.solver.method_iterations = integer(sc, "solver.method_iterations");
 
   // structure profile: y strictly increasing, radii >= 0, some radius > 0
   s.structure.speed = real(sc, "structure.speed");
@@ -144,6 +147,10 @@ Scene make_scene(const Scenario& sc) {
   s.ice.shear_strength = real(sc, "ice.shear_strength");
   s.ice.poisson_ratio = real(sc, "ice.poisson_ratio");
   s.ice.contact_crushing = get<bool>(sc, "ice.contact_crushing");
+  if (s.ice.contact_crushing && s.solver.method != "pgs")
+    fail_key(sc, blamed(sc, {"solver.method", "ice.contact_crushing"}),
+             "ice.contact_crushing caps the contact rows of the Gauss-Seidel sweeps; solver.method = \"" +
+                 s.solver.method + "\" has no such cap: use solver.method = \"pgs\" with it");
 
   s.water.density = real(sc, "water.density");
   s.water.gravity = real(sc, "water.gravity");
@@ -218,6 +225,11 @@ Scene make_scene(const Scenario& sc) {
   s.fracture.element_size = real(sc, "fracture.element_size");
   s.fracture.cfm = real(sc, "fracture.cfm");
   s.fracture.erp = real(sc, "fracture.erp");
+  s.fracture.elastic_joints = choice<bool>(sc, "fracture.joint_stiffness", {{"cfm", false}, {"elastic", true}});
+  s.fracture.stiffness_scale = real(sc, "fracture.stiffness_scale");
+  s.fracture.elastic_modulus = real(sc, "ice.elastic_modulus");
+  s.fracture.poisson_ratio = real(sc, "ice.poisson_ratio");
+  s.fracture.thickness = real(sc, "ice.thickness");
   // characteristic length l_c = (D / (rho_w g))^(1/4): "auto" makes only floes at least this
   // large breakable
   s.fracture.characteristic_length = std::pow(s.ice.flexural_rigidity / (s.water.density * s.water.gravity), 0.25);

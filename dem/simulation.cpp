@@ -85,8 +85,10 @@ struct LoadHistory {
 // window, where the statistics come from
 SolverSummary solver_summary(const Scene& scene, const LoadHistory& h, const RunSummary& s) {
   SolverSummary v;
-  v.cap = scene.solver.iterations;
-  v.tolerance = scene.solver.tolerance;
+  v.method = scene.solver.method;
+  const bool sweeps = scene.solver.method == "pgs";
+  v.cap = sweeps ? scene.solver.iterations : scene.solver.method_iterations;
+  v.tolerance = sweeps ? scene.solver.tolerance : scene.solver.merit_tolerance;
   long window_steps = 0, window_capped = 0;
   for (std::size_t i = 0; i < h.solver.size(); ++i) {
     const StepDiagnostics& d = h.solver[i];

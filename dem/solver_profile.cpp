@@ -29,7 +29,8 @@ const std::map<std::string, Settings>& profiles() {
         {"solver.warm_start", KeyValue{0.85}},
         {"solver.friction_warm_start", KeyValue{false}},
         {"solver.order", KeyValue{std::string("bullet")}},
-        {"solver.sor", KeyValue{1.0}}}},
+        {"solver.sor", KeyValue{1.0}},
+        {"solver.method", KeyValue{std::string("pgs")}}}},
       {"converged", {}},
   };
   return table;

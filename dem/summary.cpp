@@ -22,14 +22,20 @@ double median(std::vector<double> v) {
 // sweeps per step, and a warning when the cap, not the tolerance, ended the sweeps
 // of many steps: the loads of those steps are not converged (docs/model/convergence.md)
 std::string solver_line(const SolverSummary& v) {
-  std::string out = fmt::format("  contact solver: {:.1f} sweeps per step on average, at most {:d} (cap {:d}), "
-                                "tolerance {:g}, largest residual {:.2g}\n",
-                                v.iterations_mean, v.iterations_max, v.cap, v.tolerance, v.residual_max);
+  const bool sweeps = v.method == "pgs";
+  std::string out =
+      sweeps ? fmt::format("  contact solver: {:.1f} sweeps per step on average, at most {:d} (cap {:d}), "
+                           "tolerance {:g}, largest residual {:.2g}\n",
+                           v.iterations_mean, v.iterations_max, v.cap, v.tolerance, v.residual_max)
+             : fmt::format("  contact solver ({}): {:.1f} iterations per step on average, at most {:d} (cap {:d}), "
+                           "merit tolerance {:g}, largest merit {:.2g}\n",
+                           v.method, v.iterations_mean, v.iterations_max, v.cap, v.tolerance, v.residual_max);
   if (v.tolerance > 0 && v.capped_window_fraction > SolverSummary::kCappedWarning)
-    out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached solver.iterations = {:d} before "
-                       "solver.tolerance = {:g}: their loads are not converged; raise the cap "
+    out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached {} = {:d} before "
+                       "{} = {:g}: their loads are not converged; raise the cap "
                        "(/diagnostics/solver_capped has the steps)\n",
-                       100 * v.capped_window_fraction, v.cap, v.tolerance);
+                       100 * v.capped_window_fraction, sweeps ? "solver.iterations" : "solver.method_iterations", v.cap,
+                       sweeps ? "solver.tolerance" : "solver.merit_tolerance", v.tolerance);
   if (v.tolerance == 0)
     out += "  note: solver.tolerance = 0 runs every island to the cap and nothing checks that the loads "
            "converged (docs/model/convergence.md)\n";
@@ -197,10 +203,12 @@ const std::vector<SummaryField>& summary_fields() {
          return j;
        }},
       {"solver", "", false, false,
-       "the contact solver over the run: cap, tolerance, iterations_mean and iterations_max (sweeps per step), "
-       "capped_steps, capped_window_fraction (share of the window's steps that hit the cap unconverged), residual_max",
+       "the contact solver over the run: method (solver.method), cap, tolerance, iterations_mean and "
+       "iterations_max (sweeps per step, or the method's iterations), capped_steps, capped_window_fraction (share of "
+       "the window's steps that hit the cap unconverged), residual_max (the sweeps' residual, or the method's merit)",
        [](S s) {
-         return json{{"cap", s.solver.cap},
+         return json{{"method", s.solver.method},
+                     {"cap", s.solver.cap},
                      {"tolerance", s.solver.tolerance},
                      {"iterations_mean", s.solver.iterations_mean},
                      {"iterations_max", s.solver.iterations_max},

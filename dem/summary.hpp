@@ -19,8 +19,9 @@ namespace icedem {
 
 /// What the contact solver did over a run (from the per-step solver diagnostics).
 struct SolverSummary {
-  int cap = 0;                    // solver.iterations
-  double tolerance = 0;           // solver.tolerance
+  std::string method = "pgs";     // solver.method
+  int cap = 0;                    // solver.iterations (pgs), solver.method_iterations (newton)
+  double tolerance = 0;           // solver.tolerance (pgs), solver.merit_tolerance (newton)
   double iterations_mean = 0;     // per step, the most sweeps an island used, averaged over the run
   int iterations_max = 0;
   long capped_steps = 0;          // steps in which an island reached the cap unconverged

@@ -65,6 +65,9 @@ World::World(const WorldSettings& settings)
   contact.friction_warm_start = solver.friction_warm_start;
   contact.order = solver.order_from_structure ? SweepOrder::kFromStructure : SweepOrder::kBullet;
   contact.crushing_force = settings.crushing_force;
+  contact.method = solver.method;
+  contact.merit_tolerance = solver.merit_tolerance;
+  contact.method_iterations = solver.method_iterations;
   solver_ = std::make_unique<ContactSolver>(contact);
   dynamics_ = std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                               collision_config_.get());

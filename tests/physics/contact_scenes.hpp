@@ -3,7 +3,9 @@
 // problem, a tight solver, Siconos' reference solve and the sliding row of boxes.
 #pragma once
 
+#include <algorithm>
 #include <optional>
+#include <string>
 
 #include "dem/contact_method.hpp"
 #include "dem/contact_solver.hpp"
@@ -28,11 +30,15 @@ class Keep : public ProblemObserver {
   }
 };
 
-inline std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, double tolerance = 1e-9) {
+// `method`: "pgs", the sweeps to `tolerance`; another contact method: to a merit of `tolerance`
+inline std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, double tolerance = 1e-9,
+                                                   const std::string& method = "pgs") {
   ContactSolverSettings s;
   s.iterations = cap;
   s.tolerance = tolerance;
   s.friction_warm_start = true;
+  s.method = method;
+  s.merit_tolerance = tolerance;
   auto solver = std::make_unique<ContactSolver>(s);
   solver->set_observer(&keep);
   return solver;
@@ -63,10 +69,17 @@ inline constexpr double kRowMu = 0.3, kBoxMass = 1.0, kHalf = 0.05, kPlateSpeed 
 // frictionless to each other), already sliding: the boxes touch end to end and move at
 // the plate's speed, the plate touching the first. Frictionless side walls keep the row
 // from buckling. The problem of the first step is captured: its answer is known exactly,
-// where later steps depend on how well the steps before them were solved.
-inline ContactProblem sliding_row() {
+// where later steps depend on how well the steps before them were solved. The step is
+// solved by `method` (dem/contact_solver.hpp: "pgs" or a contact method).
+struct RowStep {
+  ContactProblem problem;
+  SolverAnswer answer;           // what the solver ended the step with
+  double plate_impulse = 0;      // N s, the normal impulse Bullet's contact points on the plate hold after the step
+  double box_speed_min = 0, box_speed_max = 0;  // m/s, surge velocity of the boxes after the step
+};
+inline RowStep sliding_row_step(const std::string& method) {
   Keep keep;
-  Bench bench(tight_solver(keep, 2000, 1e-9));
+  Bench bench(tight_solver(keep, 2000, 1e-9, method));
   auto* solver = static_cast<ContactSolver*>(bench.world().getConstraintSolver());
   bench.world().getSolverInfo().m_numIterations = 2000;
   bench.world().getSolverInfo().m_warmstartingFactor = 1.0;
@@ -84,8 +97,23 @@ inline ContactProblem sliding_row() {
   plate->getMotionState()->setWorldTransform(at(plate_x0 + kPlateSpeed * kDt, 0.06, 0));
   keep.capture = true;
   bench.world().stepSimulation(kDt, 0);
-  return *keep.problem;
+  RowStep out{*keep.problem, keep.answer};
+  btDispatcher& dispatcher = *bench.world().getDispatcher();
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    if (manifold->getBody0() != plate && manifold->getBody1() != plate) continue;
+    for (int k = 0; k < manifold->getNumContacts(); ++k) out.plate_impulse += manifold->getContactPoint(k).getAppliedImpulse();
+  }
+  out.box_speed_min = 1e300, out.box_speed_max = -1e300;
+  for (int i = 0; i < bench.world().getNumCollisionObjects(); ++i) {
+    const btRigidBody* b = btRigidBody::upcast(bench.world().getCollisionObjectArray()[i]);
+    if (!b || b->getInvMass() == 0) continue;
+    out.box_speed_min = std::min(out.box_speed_min, double(b->getLinearVelocity().x()));
+    out.box_speed_max = std::max(out.box_speed_max, double(b->getLinearVelocity().x()));
+  }
+  return out;
 }
+inline ContactProblem sliding_row() { return sliding_row_step("pgs").problem; }
 
 // Two lattices of 0.15 m elements (a 0.6 x 0.3 m strip, a 0.3 x 0.3 m square),
 // frictionless, the square pushed into the strip at 0.2 m/s; joints soft (the 0.15 m

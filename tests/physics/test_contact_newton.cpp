@@ -59,6 +59,22 @@ TEST(ContactNewton, SlidingRowPutsAllTheFrictionOnThePlate) {
   std::printf("sliding row: %d Newton steps to a merit of %.1e\n", a.sweeps, a.residual);
 }
 
+// The method in a run (solver.method = "newton", dem/contact_solver.cpp): the island is
+// solved by Newton and its impulses written back to Bullet's rows, so the contact points
+// on the plate hold n mu m g h after the step and every box keeps the plate's speed
+// (a row pushed at constant speed: friction balances the push exactly).
+TEST(ContactNewton, InTheRunTheRowsHoldNewtonsAnswer) {
+  const RowStep s = sliding_row_step("newton");
+  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;
+  EXPECT_FALSE(s.answer.capped) << "merit " << s.answer.residual;
+  EXPECT_NEAR(s.plate_impulse, expected, 1e-6 * expected);
+  // the boxes' surge velocity is the plate's to 1e-6 of it (the merit's 1e-9 on velocities of 0.05 m/s)
+  EXPECT_NEAR(s.box_speed_min, kPlateSpeed, 1e-6 * kPlateSpeed);
+  EXPECT_NEAR(s.box_speed_max, kPlateSpeed, 1e-6 * kPlateSpeed);
+  std::printf("sliding row in a run: plate %.6f N s of %.6f; boxes at %.6f..%.6f m/s\n", s.plate_impulse, expected,
+              s.box_speed_min, s.box_speed_max);
+}
+
 TEST(ContactNewton, LatticeJointsInTheHessianGiveTheFoldedAnswer) {
   Keep keep;
   pushed_lattices(keep);

@@ -139,6 +139,14 @@ TEST(Scenario, CrossKeyProblemPointsAtTheKeyLine) {
   EXPECT_NE(msg.find("must increase"), std::string::npos) << msg;
 }
 
+TEST(Scenario, NewtonWithCrushingContactsIsRefusedAtTheKey) {
+  // the crushing cap lives in the Gauss-Seidel rows only (dem/contact_solver.hpp)
+  const std::string msg = error_of("[ice]\ncontact_crushing = true\n\n[solver]\nmethod = \"newton\"\n");
+  EXPECT_NE(msg.find("test.toml:5"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("solver.method"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("contact_crushing"), std::string::npos) << msg;
+}
+
 TEST(Scenario, MissingLayoutFileIsAnErrorNamingTheKey) {
   const std::string msg = error_of("[layout]\nfile = \"no/such/floes.csv\"\n");
   EXPECT_NE(msg.find("test.toml:2"), std::string::npos) << msg;
