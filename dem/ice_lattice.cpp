@@ -85,12 +85,12 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
     // Bullet's ERP and CFM below set the stiffness
     if (fracture.elastic_joints)
       joint.constraint = std::make_unique<SpringJoint>(body_a, body_b, frame_a, frame_b,
-                                                       elastic_joint_springs(fracture, joint.axis_a), fracture.erp);
+                                                       elastic_joint_springs(fracture, joint.axis_a), kSpringJointErp);
     else
       joint.constraint = std::make_unique<btFixedConstraint>(body_a, body_b, frame_a, frame_b);
     for (int axis = 0; axis < 6; ++axis) {
       joint.constraint->setParam(BT_CONSTRAINT_STOP_CFM, fracture.cfm, axis);
-      joint.constraint->setParam(BT_CONSTRAINT_STOP_ERP, fracture.erp, axis);
+      joint.constraint->setParam(BT_CONSTRAINT_STOP_ERP, fracture.elastic_joints ? kSpringJointErp : fracture.erp, axis);
     }
     // more iterations for the joints than for contacts where asked: Bullet solves a
     // constraint's rows for max(its override, solver.iterations) sweeps, contacts

@@ -40,6 +40,11 @@ using JointSprings = Eigen::Matrix<double, 6, 1>;
 /// ice modulus, Poisson ratio, thickness and stiffness scale.
 JointSprings elastic_joint_springs(const FractureSettings& fracture, const Eigen::Vector3d& axis_a);
 
+/// The stop ERP a spring joint's rows are written with: Bullet writes the position
+/// error e as erp e / h, the solver reads it back (any erp > 0 would do; fracture.erp is
+/// for Bullet's own joints).
+inline constexpr double kSpringJointErp = 1.0;
+
 /// A fixed joint whose rows are springs: the contact solver (dem/contact_solver.cpp)
 /// rewrites its rows' bias and compliance from them every step.
 class SpringJoint : public btFixedConstraint {

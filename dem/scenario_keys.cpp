@@ -224,7 +224,8 @@ std::vector<KeySpec> make_keys() {
                    "constraint force mixing of the element joints (Bullet units); the joints' "
                    "stiffness depends on it and on the step: recalibrate (icedem calibrate) when "
                    "time.dt or time.substeps change"));
-  k.push_back(real("fracture.erp", "-", 0.8, 0.0, 1.0, "error reduction of the element joints (paper: 0.8)"));
+  k.push_back(real("fracture.erp", "-", 0.8, 0.0, 1.0,
+                   "error reduction of the element joints (paper: 0.8); fracture.joint_stiffness = \"cfm\" only"));
   k.push_back(choice("fracture.joint_stiffness", "cfm", {"cfm", "elastic"},
                      "what sets the element joints' stiffness: \"cfm\", fracture.cfm and fracture.erp in Bullet's "
                      "units (the stiffness then grows as 1/step^2); \"elastic\", each joint row a spring of the "
