@@ -2,7 +2,7 @@
 // ContactProblem (dem/contact_problem.hpp) and returns its impulses. Every method
 // lives in its own file, contact_<method>.cpp, and is measured on the problem
 // library with the same merit function (natural_map_residual) by
-// bench/contact/work_precision.cpp.
+// bench/contact/work_precision.py.
 #pragma once
 
 #include <memory>
