@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 #include <Eigen/SparseCholesky>
 
@@ -44,13 +43,13 @@ class InnerProblem {
  public:
   InnerProblem(const ContactProblem& p, double rho_fraction)
       : p_(p), g_(global_form(p)), nb_(static_cast<int>(p.bodies.size())), nc_(static_cast<int>(p.contacts.size())) {
-    for (int r = 0; r < g_.compliance.size(); ++r)
-      if (!(g_.compliance(r) > 0)) throw std::invalid_argument("primal Newton: joint rows must be soft");
+    // the part of the Hessian that does not change: the mass with the soft joints folded
+    // in (throws if a joint row is rigid)
+    const SparseMatrix Hc = folded_mass_matrix(g_).Mt;
     c_inv_ = g_.compliance.cwiseInverse();
     Jj_t_ = g_.Jj.transpose();
     Jc_ = g_.Jc;
     Jc_t_ = g_.Jc.transpose();
-    const SparseMatrix Hc = g_.M + Jj_t_ * c_inv_.asDiagonal() * g_.Jj;  // the part that does not change
 
     // each contact's weight: a fraction of its effective inverse mass J M^-1 J^T
     inv_mass_.resize(nb_);
@@ -238,7 +237,7 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
   InnerProblem inner(p, settings_.rho_fraction);
   const GlobalForm& g = inner.global();
   const int n = p.dofs(), m = p.contact_rows(), nc = inner.contacts();
-  const double q_norm = local_q_norm(p);
+  const double q_norm = local_q_norm(g);
 
   // start: the warm start's impulses and the velocities they give
   Eigen::VectorXd rb = options.warm_start ? contact_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(m));

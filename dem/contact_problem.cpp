@@ -114,17 +114,21 @@ GlobalForm global_form(const ContactProblem& p) {
   return g;
 }
 
-FoldedMass fold_joints(const ContactProblem& p, const GlobalForm& g) {
+FoldedMassMatrix folded_mass_matrix(const GlobalForm& g) {
   for (int r = 0; r < g.compliance.size(); ++r)
     if (!(g.compliance(r) > 0.0))
       throw std::invalid_argument("joint row " + std::to_string(r) +
                                   " is rigid (compliance 0); only soft joints fold into the mass matrix");
-  // Mt = M + Jj^T C^-1 Jj and ft = M v_free - Jj^T C^-1 b
   const Eigen::VectorXd c_inv = g.compliance.cwiseInverse();
   const Eigen::SparseMatrix<double> Jj_t = g.Jj.transpose();
-  const Eigen::SparseMatrix<double> Mt = g.M + Jj_t * c_inv.asDiagonal() * g.Jj;
+  return {g.M + Jj_t * c_inv.asDiagonal() * g.Jj, g.M * g.v_free - Jj_t * c_inv.cwiseProduct(g.b)};
+}
+
+FoldedMass fold_joints(const ContactProblem& p, const GlobalForm& g) {
+  const FoldedMassMatrix sparse = folded_mass_matrix(g);
+  const Eigen::SparseMatrix<double>& Mt = sparse.Mt;
   FoldedMass folded;
-  folded.ft = g.M * g.v_free - Jj_t * c_inv.cwiseProduct(g.b);
+  folded.ft = sparse.ft;
 
   // Mt is block diagonal over groups of jointed bodies: its inverse is too
   Triplets t;
@@ -177,20 +181,16 @@ Eigen::Vector3d structure_impulse(const ContactProblem& p, const Eigen::VectorXd
   return total;
 }
 
-double local_q_norm(const ContactProblem& p) {
-  const GlobalForm g = global_form(p);
-  if (p.contacts.empty()) return 0.0;
-  if (p.joints.empty()) return (g.Jc * g.v_free + g.w).norm();
-  for (int r = 0; r < g.compliance.size(); ++r)
-    if (!(g.compliance(r) > 0.0)) throw std::invalid_argument("local_q_norm: joint row " + std::to_string(r) + " is rigid");
-  // Mt^-1 ft by a sparse factorisation of Mt = M + Jj^T C^-1 Jj, not by folding the
-  // joints into a dense inverse per lattice (fold_joints), which costs the cube of its size
-  const Eigen::VectorXd c_inv = g.compliance.cwiseInverse();
-  const Eigen::SparseMatrix<double> Jj_t = g.Jj.transpose();
-  const Eigen::SparseMatrix<double> Mt = g.M + Jj_t * c_inv.asDiagonal() * g.Jj;
-  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> factor(Mt);
-  const Eigen::VectorXd x = factor.solve(Eigen::VectorXd(g.M * g.v_free - Jj_t * c_inv.cwiseProduct(g.b)));
-  return (g.Jc * x + g.w).norm();
+double local_q_norm(const ContactProblem& p) { return local_q_norm(global_form(p)); }
+
+double local_q_norm(const GlobalForm& g) {
+  if (g.Jc.rows() == 0) return 0.0;
+  if (g.Jj.rows() == 0) return (g.Jc * g.v_free + g.w).norm();
+  // Mt^-1 ft by a sparse factorisation of Mt, not by folding the joints into a dense
+  // inverse per lattice (fold_joints), which costs the cube of its size
+  const FoldedMassMatrix folded = folded_mass_matrix(g);
+  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> factor(folded.Mt);
+  return (g.Jc * factor.solve(folded.ft) + g.w).norm();
 }
 
 Eigen::VectorXd velocities(const GlobalForm& g, const Eigen::VectorXd& r, const Eigen::VectorXd& l) {

@@ -105,6 +105,14 @@ struct GlobalForm {
 };
 GlobalForm global_form(const ContactProblem& p);
 
+/// The soft joints folded into the mass matrix, sparse: Mt = M + Jj^T C^-1 Jj and
+/// ft = M v_free - Jj^T C^-1 b. Throws std::invalid_argument if a joint row is rigid.
+struct FoldedMassMatrix {
+  Eigen::SparseMatrix<double> Mt;
+  Eigen::VectorXd ft;
+};
+FoldedMassMatrix folded_mass_matrix(const GlobalForm& g);
+
 /// The soft joints folded into the mass matrix: Mt^-1 (block diagonal over groups of
 /// jointed bodies) and ft. Throws std::invalid_argument if a joint row is rigid.
 struct FoldedMass {
@@ -127,6 +135,7 @@ LocalForm local_form(const ContactProblem& p);
 
 /// |q| of the local form, computed without forming W (the merit's scale).
 double local_q_norm(const ContactProblem& p);
+double local_q_norm(const GlobalForm& g);
 
 /// The impulse the contacts on the structure give it over the step, N s, tank frame:
 /// the ice load times the step.

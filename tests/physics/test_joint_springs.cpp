@@ -66,10 +66,10 @@ TEST(JointSprings, PlateModulusIsTheSameAtAnyStep) {
     return plate_modulus(s);
   };
   const double base = plate_modulus(elastic);
-  for (const std::string& step : {"time.substeps=2", "time.substeps=4", "time.dt=0.01", "time.dt=0.005"}) {
+  for (const char* step : {"time.substeps=2", "time.substeps=4", "time.dt=0.01", "time.dt=0.005"}) {
     const double e = with(step);
     EXPECT_NEAR(e, base, 0.02 * base) << step;
-    std::printf("elastic joints: %s: %.2f MPa (at dt = 0.02 s, 1 substep: %.2f MPa)\n", step.c_str(), e / 1e6,
+    std::printf("elastic joints: %s: %.2f MPa (at dt = 0.02 s, 1 substep: %.2f MPa)\n", step, e / 1e6,
                 base / 1e6);
   }
   // and Bullet's CFM at the same plate: the modulus moves by far more than 2 % with the step
