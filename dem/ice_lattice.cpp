@@ -15,7 +15,7 @@ ElementLattice floe_lattice(const Polygon& shape, double element_size, double& y
 }
 
 void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, const FractureSettings& fracture,
-                      double friction) {
+                      const IceSettings& ice, double friction) {
   // the lattice in the floe's principal frame (elements are squares in that frame)
   double yaw0 = 0;
   const double Le = fracture.element_size;
@@ -85,7 +85,7 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
     // Bullet's ERP and CFM below set the stiffness
     if (fracture.elastic_joints)
       joint.constraint = std::make_unique<SpringJoint>(body_a, body_b, frame_a, frame_b,
-                                                       elastic_joint_springs(fracture, joint.axis_a), kSpringJointErp);
+                                                       elastic_joint_springs(fracture, ice, joint.axis_a), kSpringJointErp);
     else
       joint.constraint = std::make_unique<btFixedConstraint>(body_a, body_b, frame_a, frame_b);
     for (int axis = 0; axis < 6; ++axis) {

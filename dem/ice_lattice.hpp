@@ -25,10 +25,11 @@ ElementLattice floe_lattice(const Polygon& outline, double element_size, double&
 
 /// Add a breakable floe: its elements (squares of fracture.element_size in the
 /// floe's principal frame) at height `y`, joined at the middle of each shared
-/// face with the fracture settings' softness; with fracture.lattice_radius > 0 a
-/// stand-in in the world and the lattice dormant. `friction`: ice against ice.
+/// face with the fracture settings' softness (elastic joints: springs of `ice`);
+/// with fracture.lattice_radius > 0 a stand-in in the world and the lattice
+/// dormant. `friction`: ice against ice.
 void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, const FractureSettings& fracture,
-                      double friction);
+                      const IceSettings& ice, double friction);
 
 /// Put a dormant lattice in the world in place of its stand-in: every element
 /// takes the rigid-body motion of the stand-in at its place, the joints are

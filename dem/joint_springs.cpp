@@ -6,9 +6,9 @@
 
 namespace icedem {
 
-JointSprings elastic_joint_springs(const FractureSettings& f, const Eigen::Vector3d& axis_a) {
-  const double E = f.elastic_modulus, G = E / (2.0 * (1.0 + f.poisson_ratio));
-  const double H = f.thickness, L = f.element_size;
+JointSprings elastic_joint_springs(const FractureSettings& f, const IceSettings& ice, const Eigen::Vector3d& axis_a) {
+  const double E = ice.elastic_modulus, G = E / (2.0 * (1.0 + ice.poisson_ratio));
+  const double H = ice.thickness, L = f.element_size;
   // in the joint frame: axial, shear up, shear across; torsion, in-plane bending, out-of-plane bending
   const double axial = E * H, shear = G * H;
   const double torsion = G * H * H * H / 3.0, in_plane = E * H * L * L / 12.0, out_of_plane = E * H * H * H / 12.0;

@@ -30,15 +30,17 @@
 namespace icedem {
 
 struct FractureSettings;
+struct IceSettings;
 
 /// The stiffness of a joint's six rows, in the frame of body A's axes (the joint's
 /// constraint frames are A's and B's body axes): N/m along x, y, z, then N m/rad about them.
 using JointSprings = Eigen::Matrix<double, 6, 1>;
 
 /// The springs of a joint whose axis, from A's centre towards B's, is `axis_a` in A's
-/// body frame (horizontal: +x or +z), for an element lattice with `fracture`'s size,
-/// ice modulus, Poisson ratio, thickness and stiffness scale.
-JointSprings elastic_joint_springs(const FractureSettings& fracture, const Eigen::Vector3d& axis_a);
+/// body frame (horizontal: +x or +z), for `fracture`'s element size and stiffness scale
+/// and `ice`'s modulus, Poisson ratio and thickness.
+JointSprings elastic_joint_springs(const FractureSettings& fracture, const IceSettings& ice,
+                                   const Eigen::Vector3d& axis_a);
 
 /// The stop ERP a spring joint's rows are written with: Bullet writes the position
 /// error e as erp e / h, the solver reads it back (any erp > 0 would do; fracture.erp is

@@ -111,7 +111,7 @@ void add_floes(World& world, const Scene& scene, const std::vector<Floe>& floes)
   for (const Floe& floe : floes) {
     const double y = initial_height(scene, floe);
     if (is_breakable(scene, floe.shape)) {
-      add_lattice_floe(world, floe, floe_id++, y, scene.fracture, scene.friction.ice_ice);
+      add_lattice_floe(world, floe, floe_id++, y, scene.fracture, scene.ice, scene.friction.ice_ice);
       continue;
     }
     const FloeShape& shape = world.shape(floe.shape);
