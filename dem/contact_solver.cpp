@@ -319,11 +319,8 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
       contacts_done = true;
   }
   if (has_contacts) {
-    report_.iterations = std::max(report_.iterations, contact_sweeps);
-    report_.residual = std::max(report_.residual, residual);
     const bool capped = residual > settings_.tolerance && contact_sweeps >= cap;
-    if (capped) report_.capped = true;
-    ++report_.islands;
+    report_.add_island(contact_sweeps, residual, capped);
     if (problem) {
       SolverAnswer answer = row_impulses();
       answer.sweeps = contact_sweeps;
@@ -344,10 +341,7 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   options.warm_start = true;  // from the rows' warm start (solver.warm_start of the last step's)
   SolverAnswer answer = method_->solve(problem, options);
   apply_impulses(answer);
-  report_.iterations = std::max(report_.iterations, answer.sweeps);
-  report_.residual = std::max(report_.residual, answer.residual);
-  if (answer.capped) report_.capped = true;
-  ++report_.islands;
+  report_.add_island(answer.sweeps, answer.residual, answer.capped);
   if (observer_ && observer_->wants_problems()) observer_->solved(problem, answer);
 }
 

@@ -47,6 +47,7 @@
 // covers the contacts.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -98,6 +99,13 @@ struct SolverReport {
   int islands = 0;       // solve groups with contacts
 
   void clear() { *this = SolverReport{}; }
+  /// One island solved: its iterations, the residual it ended with, whether the cap stopped it.
+  void add_island(int island_iterations, double island_residual, bool island_capped) {
+    iterations = std::max(iterations, island_iterations);
+    residual = std::max(residual, island_residual);
+    capped = capped || island_capped;
+    ++islands;
+  }
 };
 
 class ContactSolver : public btSequentialImpulseConstraintSolver {
