@@ -12,13 +12,20 @@ namespace {
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-// The derivative of project_on_cone at x (symmetric, its eigenvalues in [0, 1]).
-// `kind` says where x went: 0 to the apex, 1 inside the cone, 2 onto its surface.
+// Where project_on_cone takes x: 0 to the apex, 1 inside the cone (x itself), 2 onto its
+// surface; `tangent` gets |x_T|.
+int cone_region(const Eigen::Vector3d& x, double mu, double& tangent) {
+  tangent = std::hypot(x(1), x(2));
+  return mu * tangent <= -x(0) ? 0 : tangent <= mu * x(0) ? 1 : 2;
+}
+
+// The derivative of project_on_cone at x (symmetric, its eigenvalues in [0, 1]) in
+// `kind`, the cone_region of x.
 Eigen::Matrix3d cone_projection_jacobian(const Eigen::Vector3d& x, double mu, int& kind) {
-  const double tangent = std::hypot(x(1), x(2));
-  if (mu * tangent <= -x(0)) return kind = 0, Eigen::Matrix3d::Zero();
-  if (tangent <= mu * x(0)) return kind = 1, Eigen::Matrix3d::Identity();
-  kind = 2;
+  double tangent;
+  kind = cone_region(x, mu, tangent);
+  if (kind == 0) return Eigen::Matrix3d::Zero();
+  if (kind == 1) return Eigen::Matrix3d::Identity();
   // onto the surface: P = (a, mu a t), a = (x_N + mu |x_T|) / (1 + mu^2), t = x_T / |x_T|
   const Eigen::Vector2d t = x.tail<2>() / tangent;
   const double k = 1.0 / (1.0 + mu * mu), a = k * (x(0) + mu * tangent);
@@ -97,8 +104,8 @@ class InnerProblem {
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& Jc() const { return Jc_; }
 
   // z_c = rb_c - (u_c + s_c) / rho_c, whose projection is the contact's impulse
-  Eigen::Vector3d argument(int c, const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s) const {
-    Eigen::Vector3d z = rb.segment<3>(3 * c) - u.segment<3>(3 * c) / rho_(c);
+  Eigen::Vector3d argument(int c, const Eigen::VectorXd& rb, const Eigen::Vector3d& uc, const Eigen::VectorXd& s) const {
+    Eigen::Vector3d z = rb.segment<3>(3 * c) - uc / rho_(c);
     z(0) -= s(c) / rho_(c);
     return z;
   }
@@ -106,7 +113,8 @@ class InnerProblem {
   // the impulses r(v) and the gradient G(v) = M (v - v_free) + Jj^T C^-1 (Jj v + b) - Jc^T r
   void gradient(const Eigen::VectorXd& v, const Eigen::VectorXd& u, const Eigen::VectorXd& rb,
                 const Eigen::VectorXd& s, Eigen::VectorXd& r, Eigen::VectorXd& G) const {
-    for (int c = 0; c < nc_; ++c) r.segment<3>(3 * c) = project_on_cone(argument(c, rb, u, s), g_.mu(c));
+    for (int c = 0; c < nc_; ++c)
+      r.segment<3>(3 * c) = project_on_cone(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c));
     G = g_.M * (v - g_.v_free) - Jc_t_ * r;
     if (g_.Jj.rows()) G += Jj_t_ * c_inv_.cwiseProduct(g_.Jj * v + g_.b);
   }
@@ -115,11 +123,8 @@ class InnerProblem {
   void kinds(const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s,
              std::vector<int>& out) const {
     out.resize(nc_);
-    for (int c = 0; c < nc_; ++c) {
-      const Eigen::Vector3d z = argument(c, rb, u, s);
-      const double tangent = std::hypot(z(1), z(2)), mu = g_.mu(c);
-      out[c] = mu * tangent <= -z(0) ? 0 : tangent <= mu * z(0) ? 1 : 2;
-    }
+    double tangent;
+    for (int c = 0; c < nc_; ++c) out[c] = cone_region(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), tangent);
   }
 
   // H = Hc + Jc^T diag(dP_c / rho_c) Jc at the current arguments; `kinds` gets where each went
@@ -129,7 +134,8 @@ class InnerProblem {
     kinds.resize(nc_);
     for (int c = 0; c < nc_; ++c) {
       const ProblemContact& k = p_.contacts[c];
-      const Eigen::Matrix3d B = cone_projection_jacobian(argument(c, rb, u, s), g_.mu(c), kinds[c]) / rho_(c);
+      const Eigen::Matrix3d B =
+          cone_projection_jacobian(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), kinds[c]) / rho_(c);
       if (kinds[c] == 0) continue;
       int at = 0;
       for (int i : {k.a, k.b})
@@ -170,9 +176,8 @@ class InnerProblem {
     double total = l.md_v + a * l.md_d;
     if (l.jj_d.size()) total += l.jj_d.dot(c_inv_.cwiseProduct(l.jj_v + a * l.jj_d));
     for (int c = 0; c < nc_; ++c) {
-      Eigen::Vector3d z = rb.segment<3>(3 * c) - (l.u.segment<3>(3 * c) + a * l.ud.segment<3>(3 * c)) / rho_(c);
-      z(0) -= s(c) / rho_(c);
-      total -= l.ud.segment<3>(3 * c).dot(project_on_cone(z, g_.mu(c)));
+      const Eigen::Vector3d uc = l.u.segment<3>(3 * c) + a * l.ud.segment<3>(3 * c);
+      total -= l.ud.segment<3>(3 * c).dot(project_on_cone(argument(c, rb, uc, s), g_.mu(c)));
     }
     return total;
   }
