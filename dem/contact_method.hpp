@@ -31,7 +31,8 @@ class ContactMethod {
 /// The methods by name: "pgs" (Bullet's projected Gauss-Seidel rows: normal rows, then
 /// each friction direction clamped on its own), "pgs_cone" (the same with Coulomb's
 /// disc: both friction rows of a contact projected together), "newton" (primal
-/// semismooth Newton, experimental: dem/contact_newton.hpp), "siconos_nsgs",
+/// Newton: dem/contact_newton.hpp), "apgd" (accelerated projected gradient, as Project
+/// Chrono's: dem/contact_apgd.hpp), "siconos_nsgs",
 /// "siconos_nsn_ac", "siconos_nsn_fb", "siconos_prox", "siconos_admm" (Siconos numerics on
 /// the Delassus form).
 /// Throws std::invalid_argument for an unknown name.

@@ -15,7 +15,7 @@ using Matrix6d = Eigen::Matrix<double, 6, 6>;
 // Where project_on_cone takes x: 0 to the apex, 1 inside the cone (x itself), 2 onto its
 // surface; `tangent` gets |x_T|.
 int cone_region(const Eigen::Vector3d& x, double mu, double& tangent) {
-  tangent = std::hypot(x(1), x(2));
+  tangent = tangential_norm(x(1), x(2));
   return mu * tangent <= -x(0) ? 0 : tangent <= mu * x(0) ? 1 : 2;
 }
 
@@ -252,7 +252,7 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
   Eigen::VectorXd u = inner.Jc() * v + g.w;
   Eigen::VectorXd s(nc);
   auto update_shift = [&] {
-    for (int c = 0; c < nc; ++c) s(c) = g.mu(c) * std::hypot(u(3 * c + 1), u(3 * c + 2));
+    for (int c = 0; c < nc; ++c) s(c) = g.mu(c) * tangential_norm(u(3 * c + 1), u(3 * c + 2));
   };
   update_shift();
 

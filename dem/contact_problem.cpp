@@ -205,21 +205,13 @@ Eigen::VectorXd velocities(const GlobalForm& g, const Eigen::VectorXd& r, const 
   return v;
 }
 
-Eigen::Vector3d project_on_cone(const Eigen::Vector3d& x, double mu) {
-  const double tangent = std::hypot(x(1), x(2));
-  if (mu * tangent <= -x(0)) return Eigen::Vector3d::Zero();  // in the polar cone
-  if (tangent <= mu * x(0)) return x;                        // inside
-  const double normal = (mu * tangent + x(0)) / (mu * mu + 1.0);
-  return {normal, mu * normal * x(1) / tangent, mu * normal * x(2) / tangent};
-}
-
-double natural_map_residual(const Eigen::VectorXd& r, const Eigen::VectorXd& u, const Eigen::VectorXd& mu,
-                            double q_norm) {
+double natural_map_residual(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
+                            const Eigen::VectorXd& mu, double q_norm) {
   double sum = 0.0;
   for (int c = 0; c < mu.size(); ++c) {
     const Eigen::Vector3d rc = r.segment<3>(3 * c), uc = u.segment<3>(3 * c);
     Eigen::Vector3d shifted = uc;
-    shifted(0) += mu(c) * std::hypot(uc(1), uc(2));
+    shifted(0) += mu(c) * tangential_norm(uc(1), uc(2));
     sum += (rc - project_on_cone(rc - shifted, mu(c))).squaredNorm();
   }
   const double scale = std::max({q_norm, r.norm(), u.norm()});

@@ -68,6 +68,7 @@ ContactProblem ContactSolver::capture_problem(const btContactSolverInfo& info) c
 
   // bodies with finite mass, in solver order
   std::vector<int> index_of(m_tmpSolverBodyPool.size(), -1);
+  p.bodies.reserve(m_tmpSolverBodyPool.size());
   for (int s = 0; s < m_tmpSolverBodyPool.size(); ++s) {
     const btSolverBody& body = m_tmpSolverBodyPool[s];
     const btRigidBody* rb = body.m_originalBody;
@@ -97,6 +98,7 @@ ContactProblem ContactSolver::capture_problem(const btContactSolverInfo& info) c
     return -(jv + c.m_rhs / c.m_jacDiagABInv);
   };
 
+  p.contacts.reserve(m_tmpSolverContactConstraintPool.size());
   for (int r = 0; r < m_tmpSolverContactConstraintPool.size(); ++r) {
     const btSolverConstraint& normal = m_tmpSolverContactConstraintPool[r];
     ProblemContact c;
@@ -118,6 +120,7 @@ ContactProblem ContactSolver::capture_problem(const btContactSolverInfo& info) c
     p.contacts.push_back(c);
   }
 
+  p.joints.reserve(m_tmpSolverNonContactConstraintPool.size());
   for (int r = 0; r < m_tmpSolverNonContactConstraintPool.size(); ++r) {
     const btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[r];
     // Bullet's unbounded is SIMD_INFINITY (DBL_MAX in double precision)

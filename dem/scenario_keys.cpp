@@ -72,12 +72,13 @@ std::vector<KeySpec> make_keys() {
                      "structure, outward and inward in turn"));
   k.push_back(real("solver.sor", "-", 1.0, 0.1, 1.9,
                    "(profile) successive over-relaxation factor of the contact rows (1: plain Gauss-Seidel)"));
-  k.push_back(choice("solver.method", "pgs", {"pgs", "pgs_cone", "newton"},
+  k.push_back(choice("solver.method", "pgs", {"pgs", "pgs_cone", "newton", "apgd"},
                      "(profile) how an island's contacts are solved: \"pgs\", projected Gauss-Seidel sweeps on "
                      "Bullet's rows (solver.iterations, solver.tolerance; friction clamped per direction, a "
                      "square); \"pgs_cone\", the same sweeps with Coulomb's disc on the island's problem; "
-                     "\"newton\", the primal Newton method on the island's whole problem, joints included; these "
-                     "two to solver.merit_tolerance (docs/model/contact_problems.md)"));
+                     "\"newton\", the primal Newton method on the island's whole problem, joints included; "
+                     "\"apgd\", accelerated projected gradient on the same problem; these three to "
+                     "solver.merit_tolerance (docs/model/contact_problems.md)"));
   k.push_back(real("solver.merit_tolerance", "-", 1e-6, 1e-14, 1.0,
                    "solver.method other than \"pgs\": an island is solved when its natural-map residual, the "
                    "merit every contact method is judged by (docs/model/contact_problems.md), is below this"));

@@ -38,7 +38,7 @@ struct SolverSettings {
   Broadphase broadphase;
   bool split_impulse;         // position correction kept out of the contact impulses
   double contact_erp;         // -, fraction of penetration corrected per step
-  std::string method;         // contact method of an island: "pgs" (the sweeps above), "pgs_cone", "newton"
+  std::string method;         // contact method of an island: "pgs" (the sweeps above), "pgs_cone", "newton", "apgd"
   double merit_tolerance;     // -, natural-map residual that ends a method's solve
   int method_iterations;      // cap of the method's iterations per island and Bullet step
 };

@@ -1,5 +1,5 @@
 // Contact problems of scenes whose answer is known, shared by the contact tests
-// (test_contact_problem.cpp, test_contact_newton.cpp): an observer that keeps a captured
+// (test_contact_problem.cpp, test_contact_newton.cpp, test_contact_apgd.cpp): an observer that keeps a captured
 // problem, a tight solver, Siconos' reference solve and the sliding row of boxes.
 #pragma once
 
@@ -13,6 +13,10 @@
 #include "dem/step.hpp"
 #include "tests/physics/breakable_scenes.hpp"
 #include "tests/support/box_world.hpp"
+
+extern "C" {
+#include <fclib.h>
+}
 
 namespace icedem::testing {
 
@@ -30,7 +34,8 @@ class Keep : public ProblemObserver {
   }
 };
 
-// `method`: "pgs", the sweeps to `tolerance`; another contact method: to a merit of `tolerance`
+// `method`: "pgs", the sweeps to `tolerance`; another contact method: to a merit of
+// `tolerance`; either at most `cap` sweeps or iterations
 inline std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, double tolerance = 1e-9,
                                                    const std::string& method = "pgs") {
   ContactSolverSettings s;
@@ -39,6 +44,7 @@ inline std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, d
   s.friction_warm_start = true;
   s.method = method;
   s.merit_tolerance = tolerance;
+  s.method_iterations = cap;
   auto solver = std::make_unique<ContactSolver>(s);
   solver->set_observer(&keep);
   return solver;
@@ -51,6 +57,22 @@ inline SolverAnswer reference(const ContactProblem& p, double tolerance = 1e-12)
   o.tolerance = tolerance;
   o.max_iterations = 200;
   return make_contact_method("siconos_prox")->solve(p, o);
+}
+
+// a contact problem of the test data (tests/physics/data/contact/: islands of the paper's
+// small-floe run that stopped at the sweep cap, written by `icedem run --export-problems`)
+inline std::string contact_data_file(const std::string& name) {
+  return std::string(ICEDEM_SOURCE_DIR) + "/tests/physics/data/contact/" + name;
+}
+
+// the reference impulses stored in a problem file (FCLIB's /solution, written by
+// `contact_problems reference`); empty if it has none
+inline Eigen::VectorXd stored_reference(const std::string& path, int rows) {
+  fclib_solution* s = fclib_read_solution(path.c_str());
+  if (!s) return {};
+  Eigen::VectorXd r = Eigen::Map<Eigen::VectorXd>(s->r, rows);
+  fclib_delete_solutions(s, 1);
+  return r;
 }
 
 // sum of the normal impulses of the contacts that pass `which`
@@ -70,16 +92,16 @@ inline constexpr double kRowMu = 0.3, kBoxMass = 1.0, kHalf = 0.05, kPlateSpeed 
 // the plate's speed, the plate touching the first. Frictionless side walls keep the row
 // from buckling. The problem of the first step is captured: its answer is known exactly,
 // where later steps depend on how well the steps before them were solved. The step is
-// solved by `method` (dem/contact_solver.hpp: "pgs" or a contact method).
+// solved by `method` (dem/contact_solver.hpp: "pgs" or a contact method) to `tolerance`.
 struct RowStep {
   ContactProblem problem;
   SolverAnswer answer;           // what the solver ended the step with
   double plate_impulse = 0;      // N s, the normal impulse Bullet's contact points on the plate hold after the step
   double box_speed_min = 0, box_speed_max = 0;  // m/s, surge velocity of the boxes after the step
 };
-inline RowStep sliding_row_step(const std::string& method) {
+inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e-9) {
   Keep keep;
-  Bench bench(tight_solver(keep, 2000, 1e-9, method));
+  Bench bench(tight_solver(keep, 2000, tolerance, method));
   auto* solver = static_cast<ContactSolver*>(bench.world().getConstraintSolver());
   bench.world().getSolverInfo().m_numIterations = 2000;
   bench.world().getSolverInfo().m_warmstartingFactor = 1.0;

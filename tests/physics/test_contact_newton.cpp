@@ -14,10 +14,6 @@
 #include "dem/contact_problem_file.hpp"
 #include "tests/physics/contact_scenes.hpp"
 
-extern "C" {
-#include <fclib.h>
-}
-
 using namespace icedem;
 using namespace icedem::testing;
 
@@ -29,19 +25,6 @@ SolverAnswer newton(const ContactProblem& p, double tolerance, int cap, bool war
   o.max_iterations = cap;
   o.warm_start = warm;
   return PrimalNewton().solve(p, o);
-}
-
-std::string data_file(const std::string& name) {
-  return std::string(ICEDEM_SOURCE_DIR) + "/tests/physics/data/contact/" + name;
-}
-
-// the reference impulses stored in a problem file (FCLIB's /solution)
-Eigen::VectorXd stored_reference(const std::string& path, int rows) {
-  fclib_solution* s = fclib_read_solution(path.c_str());
-  if (!s) return {};
-  Eigen::VectorXd r = Eigen::Map<Eigen::VectorXd>(s->r, rows);
-  fclib_delete_solutions(s, 1);
-  return r;
 }
 
 }  // namespace
@@ -102,7 +85,7 @@ TEST(ContactNewton, LatticeJointsInTheHessianGiveTheFoldedAnswer) {
 class ContactNewtonRun : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ContactNewtonRun, ReachesTheReferenceOnAJamOfThePaperRun) {
-  const std::string path = data_file(GetParam());
+  const std::string path = contact_data_file(GetParam());
   const ProblemFile file = read_problem_file(path);
   const ContactProblem& p = file.problem;
   const Eigen::VectorXd r_ref = stored_reference(path, p.contact_rows());
