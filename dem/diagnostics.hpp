@@ -21,6 +21,8 @@ struct StepDiagnostics {
   double solver_iterations = 0;     // most contact sweeps an island used (dem/contact_solver.hpp)
   double solver_residual = 0;       // largest residual an island ended its sweeps with
   double solver_capped = 0;         // 1 if an island reached solver.iterations above solver.tolerance
+  double boundary_load = 0;         // N, fixed bodies' resistance to the structure's push (dem/boundary_load.hpp)
+  double locked = 0;                // 1 if the boundaries carry kLockedShare of the surge load or more
 };
 
 /// One diagnostic: its dataset name under /diagnostics, unit and meaning.
@@ -57,6 +59,14 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      "1 if an island reached solver.iterations with its residual above solver.tolerance (another "
      "solver.method: solver.method_iterations with its merit above solver.merit_tolerance)",
      &StepDiagnostics::solver_capped},
+    {"boundary_load", "N",
+     "load the fixed bodies (walls, mother ice, frozen floes) take off the structure: their contact impulses on "
+     "the ice of the islands touching the structure, along its travel, over the step (dem/boundary_load.hpp)",
+     &StepDiagnostics::boundary_load},
+    {"locked", "1",
+     "1 if the fixed bodies carry half the structure's surge load or more: the pack is locked against a "
+     "boundary and the load is the confinement's (docs/model/contact_problems.md, \"Locked packs\")",
+     &StepDiagnostics::locked},
 };
 inline constexpr std::size_t kDiagnosticCount = std::size(kDiagnosticColumns);
 

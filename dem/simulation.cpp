@@ -78,7 +78,7 @@ std::vector<BodyPose> body_poses(const World& world) {
 // Load time series kept in memory for the statistics at the end.
 struct LoadHistory {
   std::vector<double> time, surge, heave, sway;
-  std::vector<StepDiagnostics> solver;  // the solver fields of each step's diagnostics
+  std::vector<StepDiagnostics> solver;  // each step's diagnostics (the solver's and the boundary load)
 };
 
 // sweeps and residuals over the run; capped steps also as a fraction of the analysis
@@ -103,6 +103,22 @@ SolverSummary solver_summary(const Scene& scene, const LoadHistory& h, const Run
   if (!h.solver.empty()) v.iterations_mean /= static_cast<double>(h.solver.size());
   v.capped_window_fraction = window_steps ? double(window_capped) / double(window_steps) : 0.0;
   return v;
+}
+
+// what the fixed boundaries carried over the analysis window (dem/boundary_load.hpp)
+void boundary_summary(const LoadHistory& h, RunSummary& s) {
+  if (!s.has_statistics) return;
+  double boundary = 0, surge = 0;
+  long steps = 0, locked_steps = 0;
+  for (std::size_t i = 0; i < h.solver.size(); ++i) {
+    if (h.time[i] < s.surge.window_start || h.time[i] > s.surge.window_end) continue;
+    boundary += h.solver[i].boundary_load;
+    surge += h.surge[i];
+    ++steps;
+    locked_steps += h.solver[i].locked > 0;
+  }
+  s.boundary_share = surge > 0 ? boundary / surge : 0.0;
+  s.locked_window_fraction = steps ? double(locked_steps) / double(steps) : 0.0;
 }
 
 // The analysis window starts a stated travel distance after the first ice
@@ -293,6 +309,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   for (int n : state.breaks_by_mode) summary.breaks += n;
   compute_statistics(scene, history, summary);
   summary.solver = solver_summary(scene, history, summary);
+  boundary_summary(history, summary);
   if (state.problem_export) summary.problem_files = state.problem_export->files();
   if (validation) summary.validation = validation->result(scene).to_json();
   summary.wall_time_s = wall();

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "dem/activation.hpp"
+#include "dem/boundary_load.hpp"
 #include "dem/fracture.hpp"
 #include "dem/health_check.hpp"
 #include "dem/lattice_region.hpp"
@@ -65,10 +66,19 @@ namespace {
 // Bullet: collide, solve contacts with PGS, integrate (one internal step of h)
 void advance_bullet(State& state, double h) { state.world->dynamics().stepSimulation(h, 0); }
 
-// contact impulses on the structure of the Bullet step just taken
-void read_load_cell(State& state, LoadCell& cell) {
-  cell.accumulate(*state.world->dynamics().getDispatcher(), state.world->structure(),
-                  state.structure_position);
+// contact impulses on the structure of the Bullet step just taken, and what the fixed
+// boundaries take off it
+void read_load_cell(const Scene& scene, State& state, LoadCell& cell, BoundaryLoad& boundary) {
+  const btDispatcher& dispatcher = *state.world->dynamics().getDispatcher();
+  cell.accumulate(dispatcher, state.world->structure(), state.structure_position);
+  boundary.accumulate(dispatcher, state.world->structure(), scene.structure.speed < 0 ? -1.0 : 1.0);
+}
+
+// the boundary load of the step and whether the pack is locked against a boundary
+void record_boundary_load(const Scene& scene, double boundary_load, const LoadReading& load, StepDiagnostics& d) {
+  const double surge = -load.force.x() * (scene.structure.speed < 0 ? -1.0 : 1.0);  // resisting the travel
+  d.boundary_load = boundary_load;
+  d.locked = locked(boundary_load, surge) ? 1.0 : 0.0;
 }
 
 // what the contact solver did this step, for /diagnostics and the summary
@@ -92,6 +102,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   { StageTimer t(times.activation); update_lattice_region(scene, state); }
   if (state.drag_exchange) { StageTimer t(times.coupling); state.drag_exchange->update(scene, state); }
   LoadCell cell;
+  BoundaryLoad boundary;
   state.world->solver_report().clear();
   for (int k = 1; k <= scene.time.substeps; ++k) {
     const double t_next = t0 + k * h;
@@ -100,11 +111,12 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
     if (loads) loads->apply(*state.world);
     if (state.problem_export) state.problem_export->begin_step(state.step, t_next, h);
     { StageTimer t(times.bullet); advance_bullet(state, h); }
-    { StageTimer t(times.load_cell); read_load_cell(state, cell); }
+    { StageTimer t(times.load_cell); read_load_cell(scene, state, cell, boundary); }
     state.time = t_next;
     { StageTimer t(times.fracture); check_fracture(scene, state, h); }
   }
   state.load = cell.finish(scene.time.dt);
+  const double boundary_load = boundary.finish(scene.time.dt);
   { StageTimer t(times.activation); update_activation(scene, state); }
   state.awake_floes = state.world->awake_floes();
   state.contact_points = state.world->contact_points();
@@ -112,6 +124,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   ++state.step;
   { StageTimer t(times.health); state.diagnostics = check_health(scene, state); }
   record_solver_report(state.world->solver_report(), state.diagnostics);
+  record_boundary_load(scene, boundary_load, state.load, state.diagnostics);
 }
 
 }  // namespace icedem

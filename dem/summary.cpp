@@ -91,6 +91,11 @@ std::string summary_table(const RunSummary& s) {
                      st.lowpass_hz > 0 ? fmt::format(", low-pass {} Hz", st.lowpass_hz) : "");
   out += fmt::format("  surge load (resisting towing): mean {:.2f} N   max {:.2f} N   std {:.2f} N\n",
                      st.mean, st.max, st.std);
+  // the paper's "load network to the sides and end of the channel" (its Fig. 14)
+  if (s.locked_window_fraction > 0)
+    out += fmt::format("  fixed boundaries (mother ice, walls) carry {:.0f} % of the surge load over the window; "
+                       "{:.0f} % of its steps are locked (half or more; /diagnostics/boundary_load, locked)\n",
+                       100 * s.boundary_share, 100 * s.locked_window_fraction);
   out += fmt::format("  load peaks {:d}, mean spacing {} s; breaks {:d} (compression {}, shear {}, bending {})\n",
                      st.peaks, std::isfinite(st.peak_interval_s) ? fmt::format("{:.2f}", st.peak_interval_s) : "n/a",
                      s.breaks, s.breaks_by_mode[0], s.breaks_by_mode[1], s.breaks_by_mode[2]);
@@ -215,6 +220,13 @@ const std::vector<SummaryField>& summary_fields() {
                      {"capped_steps", s.solver.capped_steps},
                      {"capped_window_fraction", s.solver.capped_window_fraction},
                      {"residual_max", num(s.solver.residual_max)}};
+       }},
+      {"boundary", "", false, false,
+       "the fixed boundaries (mother ice, walls, frozen floes) over the analysis window: share_of_surge (their "
+       "load along the structure's travel, summed, over the surge load summed; dem/boundary_load.hpp) and "
+       "locked_window_fraction (share of the window's steps where they carry half the surge load or more)",
+       [](S s) {
+         return json{{"share_of_surge", s.boundary_share}, {"locked_window_fraction", s.locked_window_fraction}};
        }},
       {"stage_time_s", "s", false, false,
        "wall time per stage of the step: structure, water, bullet, load_cell, activation, health, fracture, coupling",

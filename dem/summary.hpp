@@ -60,6 +60,10 @@ struct RunSummary {
   std::vector<double> near_structure_max_ratio;
   StageTimes stage_times;   // s of wall time per stage of step()
   SolverSummary solver;     // sweeps, residuals and capped steps of the contact solver
+  // the fixed boundaries (dem/boundary_load.hpp) over the analysis window: the share of the
+  // surge load they carry (sum of boundary load / sum of surge load) and of the steps locked
+  double boundary_share = 0;
+  double locked_window_fraction = 0;
   DiagnosticExtremes health;  // extremes of the per-step diagnostics (speeds, energy, ice mass, ...)
   std::vector<std::string> warnings;  // scene warnings (step_size_warnings), printed first
   nlohmann::json validation;  // validation block of a validation case, null otherwise

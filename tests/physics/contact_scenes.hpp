@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "dem/boundary_load.hpp"
 #include "dem/contact_method.hpp"
 #include "dem/contact_solver.hpp"
 #include "dem/initial_state.hpp"
@@ -98,6 +99,7 @@ struct RowStep {
   SolverAnswer answer;           // what the solver ended the step with
   double plate_impulse = 0;      // N s, the normal impulse Bullet's contact points on the plate hold after the step
   double box_speed_min = 0, box_speed_max = 0;  // m/s, surge velocity of the boxes after the step
+  double boundary_load = 0;      // N, what the fixed floor and walls take off the plate (dem/boundary_load.hpp)
 };
 inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e-9) {
   Keep keep;
@@ -126,6 +128,9 @@ inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e
     if (manifold->getBody0() != plate && manifold->getBody1() != plate) continue;
     for (int k = 0; k < manifold->getNumContacts(); ++k) out.plate_impulse += manifold->getContactPoint(k).getAppliedImpulse();
   }
+  BoundaryLoad boundary;
+  boundary.accumulate(dispatcher, plate, 1.0);
+  out.boundary_load = boundary.finish(kDt);
   out.box_speed_min = 1e300, out.box_speed_max = -1e300;
   for (int i = 0; i < bench.world().getNumCollisionObjects(); ++i) {
     const btRigidBody* b = btRigidBody::upcast(bench.world().getCollisionObjectArray()[i]);
