@@ -178,8 +178,8 @@ SolverAnswer AcceleratedProjectedGradient::solve(const ContactProblem& p, const 
   dual.row_velocities(x, rows);
   answer.residual = dual.merit(x, rows, q_norm);
   Eigen::VectorXd best = x;
-  // Lipschitz estimate of the scaled gradient: with D it is near 1 (exactly 1 for a
-  // single contact); the backtracking corrects it
+  // Lipschitz estimate of the scaled gradient: with D it is of order 1 (1 for a single
+  // row); the backtracking corrects it
   double L = 1.0, theta = 1.0;
   // y, the extrapolated point, and the rows' velocities there: they are affine in the
   // impulses, so the extrapolation carries them along without a product

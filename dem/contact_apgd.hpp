@@ -15,8 +15,9 @@
 // De Saxce's mu |u_T| on each normal, taken at y: without it the method solves the
 // convex relaxation of Coulomb's law (Chrono's cone complementarity problem), where a
 // sliding contact opens at mu |u_T|; with it the fixed point is Coulomb's law. The
-// extrapolation restarts when the step goes uphill (O'Donoghue and Candes). The answer
-// is the iterate with the lowest merit (natural_map_residual) seen.
+// extrapolation restarts when the step goes uphill (O'Donoghue and Candes). The merit
+// (natural_map_residual, with the joint rows' equation) is taken every 4th step, and the
+// answer is the iterate with the lowest merit seen.
 #pragma once
 
 #include "dem/contact_method.hpp"
