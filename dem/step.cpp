@@ -66,17 +66,20 @@ namespace {
 // Bullet: collide, solve contacts with PGS, integrate (one internal step of h)
 void advance_bullet(State& state, double h) { state.world->dynamics().stepSimulation(h, 0); }
 
+// +1 when the structure travels along +x, -1 along -x
+double travel(const Scene& scene) { return scene.structure.speed < 0 ? -1.0 : 1.0; }
+
 // contact impulses on the structure of the Bullet step just taken, and what the fixed
 // boundaries take off it
 void read_load_cell(const Scene& scene, State& state, LoadCell& cell, BoundaryLoad& boundary) {
   const btDispatcher& dispatcher = *state.world->dynamics().getDispatcher();
   cell.accumulate(dispatcher, state.world->structure(), state.structure_position);
-  boundary.accumulate(dispatcher, state.world->structure(), scene.structure.speed < 0 ? -1.0 : 1.0);
+  boundary.accumulate(dispatcher, state.world->structure(), travel(scene));
 }
 
 // the boundary load of the step and whether the pack is locked against a boundary
 void record_boundary_load(const Scene& scene, double boundary_load, const LoadReading& load, StepDiagnostics& d) {
-  const double surge = -load.force.x() * (scene.structure.speed < 0 ? -1.0 : 1.0);  // resisting the travel
+  const double surge = -load.force.x() * travel(scene);  // resisting the travel
   d.boundary_load = boundary_load;
   d.locked = locked(boundary_load, surge) ? 1.0 : 0.0;
 }
