@@ -11,6 +11,48 @@ namespace {
 // products; on the problem library every 4th step took 20 % less CPU than every step)
 constexpr int kCheckEvery = 4;
 
+// R rows of J on their one or two bodies (-1: none), and M^-1 J^T on each: a contact's
+// three rows (R = 3) or one joint row (R = 1)
+template <int R>
+struct Blocks {
+  int a, b;
+  Eigen::Matrix<double, R, 6> ja, jb;
+  Eigen::Matrix<double, 6, R> ma = Eigen::Matrix<double, 6, R>::Zero(), mb = Eigen::Matrix<double, 6, R>::Zero();
+
+  Blocks(int a_, int b_, const Eigen::Matrix<double, R, 6>& ja_, const Eigen::Matrix<double, R, 6>& jb_,
+         const std::vector<Eigen::Matrix<double, 6, 6>>& inv_mass)
+      : a(a_), b(b_), ja(ja_), jb(jb_) {
+    if (a >= 0) ma = inv_mass[a] * ja.transpose();
+    if (b >= 0) mb = inv_mass[b] * jb.transpose();
+  }
+  // the diagonal of these rows' block of J M^-1 J^T
+  Eigen::Matrix<double, R, 1> diagonal() const { return (ja * ma + jb * mb).diagonal(); }
+};
+
+// body += M^-1 J^T x over the blocks, whose rows start at `first` in x
+template <int R>
+void add_body_impulses(const std::vector<Blocks<R>>& blocks, int first, const Eigen::VectorXd& x,
+                       Eigen::VectorXd& body) {
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const Blocks<R>& k = blocks[i];
+    const Eigen::Matrix<double, R, 1> xi = x.segment<R>(first + R * static_cast<int>(i));
+    if (k.a >= 0) body.segment<6>(6 * k.a) += k.ma * xi;
+    if (k.b >= 0) body.segment<6>(6 * k.b) += k.mb * xi;
+  }
+}
+
+// rows += J v over the blocks, whose rows start at `first` in rows; v stacked per body
+template <int R>
+void add_row_products(const std::vector<Blocks<R>>& blocks, int first, const Eigen::VectorXd& v,
+                      Eigen::VectorXd& rows) {
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const Blocks<R>& k = blocks[i];
+    const int at = first + R * static_cast<int>(i);
+    if (k.a >= 0) rows.segment<R>(at) += k.ja * v.segment<6>(6 * k.a);
+    if (k.b >= 0) rows.segment<R>(at) += k.jb * v.segment<6>(6 * k.b);
+  }
+}
+
 // The problem's operators on the stacked impulses x = (contacts' r, joint rows' l).
 class DualProblem {
  public:
@@ -19,39 +61,32 @@ class DualProblem {
     std::vector<Eigen::Matrix<double, 6, 6>> inv_mass(nb_);
     for (int i = 0; i < nb_; ++i) inv_mass[i] = inverse_mass(p.bodies[i]);
     // J and M^-1 J^T kept as each contact's 3x6 blocks (each joint row's 1x6) on its
-    // one or two bodies: the products below are fixed-size, and this set-up, paid on
+    // one or two bodies (Blocks): the products are fixed-size, and this set-up, paid on
     // every island of every step, is a copy
-    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(size());
-    contacts_.resize(nc_);
+    Eigen::VectorXd diagonal(size());
+    contacts_.reserve(nc_);
     rows_free_.resize(size());
     mu_.resize(nc_);
     for (int c = 0; c < nc_; ++c) {
       const ProblemContact& from = p.contacts[c];
-      ContactBlocks& to = contacts_[c];
-      to.a = from.a, to.b = from.b, to.ja = from.ja, to.jb = from.jb;
-      if (to.a >= 0) to.ma = inv_mass[to.a] * to.ja.transpose();
-      if (to.b >= 0) to.mb = inv_mass[to.b] * to.jb.transpose();
-      const Eigen::Matrix3d w = to.ja * to.ma + to.jb * to.mb;  // this contact's block of J M^-1 J^T
-      diagonal.segment<3>(3 * c) = w.diagonal();
+      contacts_.emplace_back(from.a, from.b, from.ja, from.jb, inv_mass);
+      diagonal.segment<3>(3 * c) = contacts_.back().diagonal();
       rows_free_.segment<3>(3 * c) = from.w;
       mu_(c) = from.mu;
     }
-    joints_.resize(nj_);
+    joints_.reserve(nj_);
     compliance_ = Eigen::VectorXd::Zero(size());
     for (int r = 0; r < nj_; ++r) {
       const ProblemJointRow& from = p.joints[r];
-      RowBlocks& to = joints_[r];
-      to.a = from.a, to.b = from.b, to.ja = from.ja, to.jb = from.jb;
-      if (to.a >= 0) to.ma = inv_mass[to.a] * to.ja.transpose();
-      if (to.b >= 0) to.mb = inv_mass[to.b] * to.jb.transpose();
-      diagonal(3 * nc_ + r) = to.ja.dot(to.ma) + to.jb.dot(to.mb) + from.compliance;
+      joints_.emplace_back(from.a, from.b, from.ja, from.jb, inv_mass);
+      diagonal(3 * nc_ + r) = joints_.back().diagonal()(0) + from.compliance;
       rows_free_(3 * nc_ + r) = from.bias;
       compliance_(3 * nc_ + r) = from.compliance;
     }
     // the rows' velocities at x = 0
     Eigen::VectorXd v_free(6 * nb_);
     for (int i = 0; i < nb_; ++i) v_free.segment<6>(6 * i) = p.bodies[i].free_velocity;
-    add_row_products(v_free, rows_free_);
+    add_all_row_products(v_free, rows_free_);
     // the merit's scale |q|: without joints q is the contacts' free velocity; with them
     // the joints must be folded (a sparse factorisation, only for lattices)
     q_norm_ = nj_ ? local_q_norm(global_form(p)) : rows_free_.norm();
@@ -73,20 +108,10 @@ class DualProblem {
   // then the joint rows' J v + b
   void row_velocities(const Eigen::VectorXd& x, Eigen::VectorXd& rows) const {
     body_velocity_.setZero();  // M^-1 J^T x
-    for (int c = 0; c < nc_; ++c) {
-      const ContactBlocks& k = contacts_[c];
-      const Eigen::Vector3d xc = x.segment<3>(3 * c);
-      if (k.a >= 0) body_velocity_.segment<6>(6 * k.a) += k.ma * xc;
-      if (k.b >= 0) body_velocity_.segment<6>(6 * k.b) += k.mb * xc;
-    }
-    for (int r = 0; r < nj_; ++r) {
-      const RowBlocks& k = joints_[r];
-      const double xr = x(3 * nc_ + r);
-      if (k.a >= 0) body_velocity_.segment<6>(6 * k.a) += k.ma * xr;
-      if (k.b >= 0) body_velocity_.segment<6>(6 * k.b) += k.mb * xr;
-    }
+    add_body_impulses(contacts_, 0, x, body_velocity_);
+    add_body_impulses(joints_, 3 * nc_, x, body_velocity_);
     rows = rows_free_;
-    add_row_products(body_velocity_, rows);
+    add_all_row_products(body_velocity_, rows);
   }
 
   // De Saxce's shift at the rows' velocities: mu |u_T|, one per contact
@@ -124,35 +149,15 @@ class DualProblem {
   }
 
  private:
-  // J of a contact or joint row on its two bodies (-1: none) and M^-1 J^T on each
-  struct ContactBlocks {
-    int a, b;
-    ContactJacobian ja, jb;
-    Eigen::Matrix<double, 6, 3> ma = Eigen::Matrix<double, 6, 3>::Zero(), mb = Eigen::Matrix<double, 6, 3>::Zero();
-  };
-  struct RowBlocks {
-    int a, b;
-    RowJacobian ja, jb;
-    Vector6d ma = Vector6d::Zero(), mb = Vector6d::Zero();
-  };
-
   // rows += J v, v stacked per body
-  void add_row_products(const Eigen::VectorXd& v, Eigen::VectorXd& rows) const {
-    for (int c = 0; c < nc_; ++c) {
-      const ContactBlocks& k = contacts_[c];
-      if (k.a >= 0) rows.segment<3>(3 * c) += k.ja * v.segment<6>(6 * k.a);
-      if (k.b >= 0) rows.segment<3>(3 * c) += k.jb * v.segment<6>(6 * k.b);
-    }
-    for (int r = 0; r < nj_; ++r) {
-      const RowBlocks& k = joints_[r];
-      if (k.a >= 0) rows(3 * nc_ + r) += k.ja.dot(v.segment<6>(6 * k.a).transpose());
-      if (k.b >= 0) rows(3 * nc_ + r) += k.jb.dot(v.segment<6>(6 * k.b).transpose());
-    }
+  void add_all_row_products(const Eigen::VectorXd& v, Eigen::VectorXd& rows) const {
+    add_row_products(contacts_, 0, v, rows);
+    add_row_products(joints_, 3 * nc_, v, rows);
   }
 
   int nb_, nc_, nj_;
-  std::vector<ContactBlocks> contacts_;
-  std::vector<RowBlocks> joints_;
+  std::vector<Blocks<3>> contacts_;
+  std::vector<Blocks<1>> joints_;
   Eigen::VectorXd compliance_, scale_, rows_free_, mu_;
   double q_norm_ = 0;
   mutable Eigen::VectorXd body_velocity_;  // M^-1 J^T x, scratch of row_velocities
