@@ -51,13 +51,23 @@ inline std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, d
   return solver;
 }
 
+
+
+// a contact method by name (dem/contact_method.hpp) on p to `tolerance`, at most `cap`
+// iterations, warm-started from the problem's guess or not
+inline SolverAnswer solve_with(const std::string& method, const ContactProblem& p, double tolerance, int cap,
+                               bool warm = true) {
+  MethodOptions o;
+  o.tolerance = tolerance;
+  o.max_iterations = cap;
+  o.warm_start = warm;
+  return make_contact_method(method)->solve(p, o);
+}
+
 // Siconos' proximal point method (semismooth Newton inside) to `tolerance`: it solves the
 // rank-deficient problems of faces touching at several points, where plain Newton fails
 inline SolverAnswer reference(const ContactProblem& p, double tolerance = 1e-12) {
-  MethodOptions o;
-  o.tolerance = tolerance;
-  o.max_iterations = 200;
-  return make_contact_method("siconos_prox")->solve(p, o);
+  return solve_with("siconos_prox", p, tolerance, 200);
 }
 
 // a contact problem of the test data (tests/physics/data/contact/: islands of the paper's
@@ -74,6 +84,20 @@ inline Eigen::VectorXd stored_reference(const std::string& path, int rows) {
   Eigen::VectorXd r = Eigen::Map<Eigen::VectorXd>(s->r, rows);
   fclib_delete_solutions(s, 1);
   return r;
+}
+
+// How far an answer is from reference contact impulses r_ref in what is unique (a face's
+// impulses are not): the bodies' velocities and the impulse on the structure, each
+// relative to the reference's.
+struct ReferenceDistance {
+  double velocities = 0, load = 0;
+};
+inline ReferenceDistance distance_to_reference(const ContactProblem& p, const Eigen::VectorXd& r_ref,
+                                               const SolverAnswer& a) {
+  const GlobalForm g = global_form(p);
+  const Eigen::VectorXd v_ref = velocities(g, r_ref, joint_impulses(p, r_ref)), v = velocities(g, a.r, a.l);
+  const Eigen::Vector3d load_ref = structure_impulse(p, r_ref), load = structure_impulse(p, a.r);
+  return {(v - v_ref).norm() / v_ref.norm(), (load - load_ref).norm() / std::max(load_ref.norm(), 1e-9)};
 }
 
 // sum of the normal impulses of the contacts that pass `which`
