@@ -11,45 +11,60 @@ namespace {
 // products; on the problem library every 4th step took 20 % less CPU than every step)
 constexpr int kCheckEvery = 4;
 
-// R rows of J on their one or two bodies (-1: none), and M^-1 J^T on each: a contact's
-// three rows (R = 3) or one joint row (R = 1)
+inline double dot6(const double* p, const double* q) {
+  return p[0] * q[0] + p[1] * q[1] + p[2] * q[2] + p[3] * q[3] + p[4] * q[4] + p[5] * q[5];
+}
+inline void add_scaled6(double s, const double* p, double* q) {
+  for (int k = 0; k < 6; ++k) q[k] += s * p[k];
+}
+
+// R rows of J on their one or two bodies (-1: none): a contact's three rows (R = 3) or
+// one joint row (R = 1). Plain arrays of six, one per row, so that the products are dot
+// products and axpys of six the compiler unrolls (Eigen's small fixed-size products over
+// blocks of a dynamic vector were not inlined and took a third of a jammed run's CPU
+// time), and only J: M^-1 is applied per body, between the two passes, which halves the
+// memory a pass streams through
 template <int R>
 struct Blocks {
   int a, b;
-  Eigen::Matrix<double, R, 6> ja, jb;
-  Eigen::Matrix<double, 6, R> ma = Eigen::Matrix<double, 6, R>::Zero(), mb = Eigen::Matrix<double, 6, R>::Zero();
+  double ja[R][6], jb[R][6];  // J's rows on a and on b
+  double diagonal[R];         // the diagonal of these rows' block of J M^-1 J^T
 
   Blocks(int a_, int b_, const Eigen::Matrix<double, R, 6>& ja_, const Eigen::Matrix<double, R, 6>& jb_,
          const std::vector<Eigen::Matrix<double, 6, 6>>& inv_mass)
-      : a(a_), b(b_), ja(ja_), jb(jb_) {
-    if (a >= 0) ma = inv_mass[a] * ja.transpose();
-    if (b >= 0) mb = inv_mass[b] * jb.transpose();
+      : a(a_), b(b_) {
+    for (int r = 0; r < R; ++r) {
+      diagonal[r] = 0;
+      if (a >= 0) diagonal[r] += ja_.row(r).dot(inv_mass[a] * ja_.row(r).transpose());
+      if (b >= 0) diagonal[r] += jb_.row(r).dot(inv_mass[b] * jb_.row(r).transpose());
+      for (int k = 0; k < 6; ++k) ja[r][k] = ja_(r, k), jb[r][k] = jb_(r, k);
+    }
   }
-  // the diagonal of these rows' block of J M^-1 J^T
-  Eigen::Matrix<double, R, 1> diagonal() const { return (ja * ma + jb * mb).diagonal(); }
 };
 
-// body += M^-1 J^T x over the blocks, whose rows start at `first` in x
+// body += J^T x over the blocks, whose rows start at x; body stacked per body
 template <int R>
-void add_body_impulses(const std::vector<Blocks<R>>& blocks, int first, const Eigen::VectorXd& x,
-                       Eigen::VectorXd& body) {
-  for (std::size_t i = 0; i < blocks.size(); ++i) {
-    const Blocks<R>& k = blocks[i];
-    const Eigen::Matrix<double, R, 1> xi = x.segment<R>(first + R * static_cast<int>(i));
-    if (k.a >= 0) body.segment<6>(6 * k.a) += k.ma * xi;
-    if (k.b >= 0) body.segment<6>(6 * k.b) += k.mb * xi;
+void add_body_impulses(const std::vector<Blocks<R>>& blocks, const double* x, double* body) {
+  for (const Blocks<R>& k : blocks) {
+    for (int r = 0; r < R; ++r) {
+      if (k.a >= 0) add_scaled6(x[r], k.ja[r], body + 6 * k.a);
+      if (k.b >= 0) add_scaled6(x[r], k.jb[r], body + 6 * k.b);
+    }
+    x += R;
   }
 }
 
-// rows += J v over the blocks, whose rows start at `first` in rows; v stacked per body
+// rows = free + J v over the blocks, whose rows start at rows (and free); v stacked per body
 template <int R>
-void add_row_products(const std::vector<Blocks<R>>& blocks, int first, const Eigen::VectorXd& v,
-                      Eigen::VectorXd& rows) {
-  for (std::size_t i = 0; i < blocks.size(); ++i) {
-    const Blocks<R>& k = blocks[i];
-    const int at = first + R * static_cast<int>(i);
-    if (k.a >= 0) rows.segment<R>(at) += k.ja * v.segment<6>(6 * k.a);
-    if (k.b >= 0) rows.segment<R>(at) += k.jb * v.segment<6>(6 * k.b);
+void row_products(const std::vector<Blocks<R>>& blocks, const double* free, const double* v, double* rows) {
+  for (const Blocks<R>& k : blocks) {
+    for (int r = 0; r < R; ++r) {
+      double sum = free[r];
+      if (k.a >= 0) sum += dot6(k.ja[r], v + 6 * k.a);
+      if (k.b >= 0) sum += dot6(k.jb[r], v + 6 * k.b);
+      rows[r] = sum;
+    }
+    free += R, rows += R;
   }
 }
 
@@ -58,78 +73,62 @@ class DualProblem {
  public:
   explicit DualProblem(const ContactProblem& p)
       : nb_(static_cast<int>(p.bodies.size())), nc_(static_cast<int>(p.contacts.size())), nj_(p.joint_rows()) {
-    std::vector<Eigen::Matrix<double, 6, 6>> inv_mass(nb_);
-    for (int i = 0; i < nb_; ++i) inv_mass[i] = inverse_mass(p.bodies[i]);
-    // J and M^-1 J^T kept as each contact's 3x6 blocks (each joint row's 1x6) on its
-    // one or two bodies (Blocks): the products are fixed-size, and this set-up, paid on
-    // every island of every step, is a copy
-    Eigen::VectorXd diagonal(size());
+    inv_mass_.resize(nb_);
+    for (int i = 0; i < nb_; ++i) inv_mass_[i] = inverse_mass(p.bodies[i]);
+    const auto& inv_mass = inv_mass_;
+    // J kept as each contact's 3x6 blocks (each joint row's 1x6) on its one or two
+    // bodies (Blocks): this set-up, paid on every island of every step, is a copy
     contacts_.reserve(nc_);
     rows_free_.resize(size());
     mu_.resize(nc_);
+    // D: 1 / the diagonal of J M^-1 J^T + C, one value per contact (the mean of its three
+    // rows, so that the cone is unchanged by it), each joint row its own
+    scale_.resize(size());
     for (int c = 0; c < nc_; ++c) {
       const ProblemContact& from = p.contacts[c];
       contacts_.emplace_back(from.a, from.b, from.ja, from.jb, inv_mass);
-      diagonal.segment<3>(3 * c) = contacts_.back().diagonal();
+      const double* d = contacts_.back().diagonal;
+      scale_.segment<3>(3 * c).setConstant(3.0 / (d[0] + d[1] + d[2]));
       rows_free_.segment<3>(3 * c) = from.w;
       mu_(c) = from.mu;
     }
     joints_.reserve(nj_);
-    compliance_ = Eigen::VectorXd::Zero(size());
+    compliance_.resize(nj_);
     for (int r = 0; r < nj_; ++r) {
       const ProblemJointRow& from = p.joints[r];
       joints_.emplace_back(from.a, from.b, from.ja, from.jb, inv_mass);
-      diagonal(3 * nc_ + r) = joints_.back().diagonal()(0) + from.compliance;
+      scale_(3 * nc_ + r) = 1.0 / (joints_.back().diagonal[0] + from.compliance);
       rows_free_(3 * nc_ + r) = from.bias;
-      compliance_(3 * nc_ + r) = from.compliance;
+      compliance_(r) = from.compliance;
     }
     // the rows' velocities at x = 0
-    Eigen::VectorXd v_free(6 * nb_);
-    for (int i = 0; i < nb_; ++i) v_free.segment<6>(6 * i) = p.bodies[i].free_velocity;
-    add_all_row_products(v_free, rows_free_);
+    body_velocity_.resize(6 * nb_);
+    body_impulse_.resize(6 * nb_);
+    for (int i = 0; i < nb_; ++i) body_velocity_.segment<6>(6 * i) = p.bodies[i].free_velocity;
+    gather(rows_free_, rows_free_);
     // the merit's scale |q|: without joints q is the contacts' free velocity; with them
     // the joints must be folded (a sparse factorisation, only for lattices)
     q_norm_ = nj_ ? local_q_norm(global_form(p)) : rows_free_.norm();
-
-    // D: 1 / the diagonal of J M^-1 J^T + C, one value per contact (the mean of its three
-    // rows, so that the cone is unchanged by it)
-    scale_.resize(size());
-    for (int c = 0; c < nc_; ++c) scale_.segment<3>(3 * c).setConstant(3.0 / diagonal.segment<3>(3 * c).sum());
-    for (int r = 0; r < nj_; ++r) scale_(3 * nc_ + r) = 1.0 / diagonal(3 * nc_ + r);
-    body_velocity_.resize(6 * nb_);
   }
 
   int contacts() const { return nc_; }
+  int joint_rows() const { return nj_; }
   int size() const { return 3 * nc_ + nj_; }
   double q_norm() const { return q_norm_; }
+  double mu(int c) const { return mu_(c); }
   const Eigen::VectorXd& scale() const { return scale_; }
+  const Eigen::VectorXd& rows_free() const { return rows_free_; }
+  const Eigen::VectorXd& compliance() const { return compliance_; }
 
   // the rows' velocities J v(x) + (w, b), v(x) = v_free + M^-1 J^T x: the contacts' u,
   // then the joint rows' J v + b
   void row_velocities(const Eigen::VectorXd& x, Eigen::VectorXd& rows) const {
-    body_velocity_.setZero();  // M^-1 J^T x
-    add_body_impulses(contacts_, 0, x, body_velocity_);
-    add_body_impulses(joints_, 3 * nc_, x, body_velocity_);
-    rows = rows_free_;
-    add_all_row_products(body_velocity_, rows);
-  }
-
-  // De Saxce's shift at the rows' velocities: mu |u_T|, one per contact
-  void shift(const Eigen::VectorXd& rows, Eigen::VectorXd& s) const {
-    for (int c = 0; c < nc_; ++c) s(c) = mu_(c) * tangential_norm(rows(3 * c + 1), rows(3 * c + 2));
-  }
-
-  // gradient of f for a fixed shift s: J v(x) + (w, b) + C x + (s on the normals)
-  void gradient(const Eigen::VectorXd& x, const Eigen::VectorXd& rows, const Eigen::VectorXd& s,
-                Eigen::VectorXd& grad) const {
-    grad = rows + compliance_.cwiseProduct(x);
-    for (int c = 0; c < nc_; ++c) grad(3 * c) += s(c);
-  }
-  // f(x) = 1/2 x^T N x + x^T (rows_free + s), N = J M^-1 J^T + C, from the gradient at x
-  double objective(const Eigen::VectorXd& x, const Eigen::VectorXd& grad, const Eigen::VectorXd& s) const {
-    double linear = x.dot(rows_free_);
-    for (int c = 0; c < nc_; ++c) linear += x(3 * c) * s(c);
-    return 0.5 * (x.dot(grad) + linear);
+    body_impulse_.setZero();  // J^T x
+    add_body_impulses(contacts_, x.data(), body_impulse_.data());
+    add_body_impulses(joints_, x.data() + 3 * nc_, body_impulse_.data());
+    for (int i = 0; i < nb_; ++i)
+      body_velocity_.segment<6>(6 * i).noalias() = inv_mass_[i] * body_impulse_.segment<6>(6 * i);
+    gather(rows_free_, rows);
   }
 
   // each contact onto its cone; joint rows unchanged
@@ -143,25 +142,85 @@ class DualProblem {
     const double contacts = natural_map_residual(x.head(3 * nc_), rows.head(3 * nc_), mu_, q_norm);
     if (!nj_) return contacts;
     const double scale = std::max({q_norm, x.head(3 * nc_).norm(), rows.head(3 * nc_).norm()});
-    const double joints = (rows.tail(nj_) + compliance_.tail(nj_).cwiseProduct(x.tail(nj_))).norm() /
+    const double joints = (rows.tail(nj_) + compliance_.cwiseProduct(x.tail(nj_))).norm() /
                           (scale > std::numeric_limits<double>::epsilon() ? scale : 1.0);
     return std::hypot(contacts, joints);
   }
 
  private:
-  // rows += J v, v stacked per body
-  void add_all_row_products(const Eigen::VectorXd& v, Eigen::VectorXd& rows) const {
-    add_row_products(contacts_, 0, v, rows);
-    add_row_products(joints_, 3 * nc_, v, rows);
+  // rows = free + J body_velocity_ (rows may be free)
+  void gather(const Eigen::VectorXd& free, Eigen::VectorXd& rows) const {
+    row_products(contacts_, free.data(), body_velocity_.data(), rows.data());
+    row_products(joints_, free.data() + 3 * nc_, body_velocity_.data(), rows.data() + 3 * nc_);
   }
 
   int nb_, nc_, nj_;
   std::vector<Blocks<3>> contacts_;
   std::vector<Blocks<1>> joints_;
-  Eigen::VectorXd compliance_, scale_, rows_free_, mu_;
+  Eigen::VectorXd compliance_, scale_, rows_free_, mu_;  // compliance_: the joint rows' C
   double q_norm_ = 0;
-  mutable Eigen::VectorXd body_velocity_;  // M^-1 J^T x, scratch of row_velocities
+  std::vector<Eigen::Matrix<double, 6, 6>> inv_mass_;  // per body
+  // J^T x and M^-1 J^T x (v_free while set up), scratch of row_velocities
+  mutable Eigen::VectorXd body_impulse_, body_velocity_;
 };
+
+}  // namespace
+
+namespace {
+
+// De Saxce's shift at the rows' velocities: mu |u_T|, one per contact
+void shift(const DualProblem& dual, const Eigen::VectorXd& rows, Eigen::VectorXd& s) {
+  for (int c = 0; c < dual.contacts(); ++c) s(c) = dual.mu(c) * tangential_norm(rows(3 * c + 1), rows(3 * c + 2));
+}
+
+// gradient of f for a fixed shift s: J v(x) + (w, b) + C x + (s on the normals)
+void gradient(const DualProblem& dual, const Eigen::VectorXd& x, const Eigen::VectorXd& rows, const Eigen::VectorXd& s,
+              Eigen::VectorXd& grad) {
+  const int nc = dual.contacts(), nj = dual.joint_rows();
+  grad.head(3 * nc) = rows.head(3 * nc);
+  for (int c = 0; c < nc; ++c) grad(3 * c) += s(c);
+  grad.tail(nj) = rows.tail(nj) + dual.compliance().cwiseProduct(x.tail(nj));
+}
+
+// f(x) = 1/2 x^T (J M^-1 J^T + C) x + x^T (rows_free + s) from the rows' velocities at x
+// (rows = J M^-1 J^T x + rows_free): 1/2 x.(rows + rows_free) + 1/2 x.C x + x.s
+double objective(const DualProblem& dual, const Eigen::VectorXd& x, const Eigen::VectorXd& rows,
+                 const Eigen::VectorXd& s) {
+  const int nc = dual.contacts(), nj = dual.joint_rows();
+  double f = 0.5 * x.dot(rows + dual.rows_free());
+  for (int c = 0; c < nc; ++c) f += x(3 * c) * s(c);
+  return f + 0.5 * x.tail(nj).dot(dual.compliance().cwiseProduct(x.tail(nj)));
+}
+
+// the projected gradient step from y with step 1/L, into next; returns the quadratic
+// model's increase over f(y): g.(next - y) + L/2 |next - y|^2 in D^-1's metric
+double gradient_step(const DualProblem& dual, const Eigen::VectorXd& y, const Eigen::VectorXd& grad_y, double L,
+                     Eigen::VectorXd& next) {
+  const Eigen::VectorXd& D = dual.scale();
+  next = y - (1.0 / L) * D.cwiseProduct(grad_y);
+  dual.project(next);
+  double model = 0;
+  for (int i = 0; i < next.size(); ++i) {
+    const double d = next(i) - y(i);
+    model += d * (grad_y(i) + 0.5 * L * d / D(i));
+  }
+  return model;
+}
+
+// the slope of f (with the shift at x+) along the step just taken, g(x+).(x+ - x): positive
+// when the step went uphill
+double step_slope(const DualProblem& dual, const Eigen::VectorXd& next, const Eigen::VectorXd& rows_next,
+                  const Eigen::VectorXd& x) {
+  const int nc = dual.contacts(), nj = dual.joint_rows();
+  double slope = 0;
+  for (int c = 0; c < nc; ++c) {
+    const double s = dual.mu(c) * tangential_norm(rows_next(3 * c + 1), rows_next(3 * c + 2));
+    for (int k = 0; k < 3; ++k) slope += (rows_next(3 * c + k) + (k == 0 ? s : 0.0)) * (next(3 * c + k) - x(3 * c + k));
+  }
+  for (int r = 3 * nc; r < 3 * nc + nj; ++r)
+    slope += (rows_next(r) + dual.compliance()(r - 3 * nc) * next(r)) * (next(r) - x(r));
+  return slope;
+}
 
 }  // namespace
 
@@ -169,7 +228,6 @@ SolverAnswer AcceleratedProjectedGradient::solve(const ContactProblem& p, const 
   const DualProblem dual(p);
   const int n = dual.size(), nc = dual.contacts();
   const double q_norm = dual.q_norm();
-  const Eigen::VectorXd& D = dual.scale();
 
   Eigen::VectorXd x(n);
   if (options.warm_start)
@@ -189,21 +247,18 @@ SolverAnswer AcceleratedProjectedGradient::solve(const ContactProblem& p, const 
   // y, the extrapolated point, and the rows' velocities there: they are affine in the
   // impulses, so the extrapolation carries them along without a product
   Eigen::VectorXd y = x, rows_y = rows;
-  Eigen::VectorXd s(nc), grad_y(n), next(n), rows_next(n), grad_next(n);
+  Eigen::VectorXd s(nc), grad_y(n), next(n), rows_next(n);
   int steps = 0, iteration = 0;
   while (answer.residual > options.tolerance && steps < options.max_iterations) {
-    dual.shift(rows_y, s);
-    dual.gradient(y, rows_y, s, grad_y);
-    const double f_y = dual.objective(y, grad_y, s);
+    shift(dual, rows_y, s);
+    gradient(dual, y, rows_y, s, grad_y);
+    const double f_y = objective(dual, y, rows_y, s);
     // backtracking: the quadratic model with L must lie above f at the new point
     for (int trial = 0; trial < 30; ++trial) {
-      next = y - (1.0 / L) * D.cwiseProduct(grad_y);
-      dual.project(next);
+      const double model = gradient_step(dual, y, grad_y, L, next);
       dual.row_velocities(next, rows_next);
       ++steps;
-      dual.gradient(next, rows_next, s, grad_next);
-      const double f_next = dual.objective(next, grad_next, s);
-      const double model = grad_y.dot(next - y) + 0.5 * L * (next - y).cwiseAbs2().cwiseQuotient(D).sum();
+      const double f_next = objective(dual, next, rows_next, s);
       if (f_next <= f_y + model + 1e-14 * std::abs(f_y)) break;
       L *= 2.0;
     }
@@ -216,9 +271,7 @@ SolverAnswer AcceleratedProjectedGradient::solve(const ContactProblem& p, const 
     // (taken with the shift at the new point)
     const double theta_next = 0.5 * (-theta * theta + theta * std::sqrt(theta * theta + 4.0));
     const double beta = theta * (1.0 - theta) / (theta * theta + theta_next);
-    dual.shift(rows_next, s);
-    dual.gradient(next, rows_next, s, grad_next);
-    if (grad_next.dot(next - x) > 0) {
+    if (step_slope(dual, next, rows_next, x) > 0) {
       y = next, rows_y = rows_next;
       theta = 1.0;
     } else {
