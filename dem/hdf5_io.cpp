@@ -110,6 +110,17 @@ Series create_series(const H5::Group& group, const std::string& name, const H5::
   return series;
 }
 
+Series open_series(const H5::Group& group, const std::string& name) {
+  Series series;
+  series.dataset = std::make_unique<H5::DataSet>(group.openDataSet(name));
+  const H5::DataSpace space = series.dataset->getSpace();
+  std::vector<hsize_t> dims(static_cast<std::size_t>(space.getSimpleExtentNdims()));
+  space.getSimpleExtentDims(dims.data());
+  series.rows = dims.at(0);
+  series.row_shape.assign(dims.begin() + 1, dims.end());
+  return series;
+}
+
 void write_fixed(const H5::Group& group, const std::string& name, const H5::DataType& file_type,
                  const H5::DataType& mem_type, const std::vector<hsize_t>& dims,
                  const void* data, const std::string& units, const std::string& description) {

@@ -56,6 +56,9 @@ Series create_series(const H5::Group& group, const std::string& name, const H5::
                      const std::vector<hsize_t>& row_shape, hsize_t chunk_rows, const std::string& units,
                      const std::string& description);
 
+/// Opens the dataset `name` of `group` made by create_series, to append after its rows.
+Series open_series(const H5::Group& group, const std::string& name);
+
 /// Writes a fixed-size dataset in one go.
 void write_fixed(const H5::Group& group, const std::string& name, const H5::DataType& file_type,
                  const H5::DataType& mem_type, const std::vector<hsize_t>& dims, const void* data,

@@ -156,6 +156,20 @@ OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const 
   return d;
 }
 
+OutputDatasets open_output_layout(H5::H5File& file) {
+  auto open = [&](const std::string& path) {
+    return open_series(file.openGroup(split_path(path).first), split_path(path).second);
+  };
+  OutputDatasets d;
+  for (const SeriesColumn& col : series_columns()) d.series.push_back(open(col.path));
+  d.snap_time = open("/snapshots/time");
+  d.snap_position = open("/snapshots/position");
+  d.snap_orientation = open("/snapshots/orientation");
+  d.snap_awake = open("/snapshots/awake");
+  d.events = open("/fracture/events");
+  return d;
+}
+
 void write_floe_margin_datasets(H5::H5File& file, const std::vector<double>& max_ratio,
                                 const std::vector<double>& min_distance) {
   const hsize_t n = max_ratio.size();

@@ -27,6 +27,10 @@ struct OutputDatasets {
 /// so that a process killed from here on leaves a file that says what run it belongs to.
 OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const std::vector<BodyOutline>& outlines);
 
+/// The growing datasets of `file`, laid out by create_output_layout and written up to some
+/// row: a run resumed from a checkpoint appends after them.
+OutputDatasets open_output_layout(H5::H5File& file);
+
 /// The memory type of FractureEvent rows (the file's packed type is built from the same fields).
 H5::CompType fracture_event_mem_type();
 

@@ -28,6 +28,21 @@ namespace {
 // (HDF5 1.10's exit-time cleanup); Recorder::left_a_file_open() tells the program to skip it
 bool g_file_left_open = false;
 
+// how every output file is opened
+H5::FileAccPropList output_access() {
+  H5::FileAccPropList access;
+  // HDF5 1.8 format: the 1.10 superblock (v3) marks an open file and refuses to open it
+  // after a crash until `h5clear -s`; 1.8 files open normally (tested by test_recorder)
+  access.setLibverBounds(H5F_LIBVER_V18, H5F_LIBVER_V18);
+  // no file lock: readers may watch a running file (they see the last flush)
+#if H5_VERSION_GE(1, 10, 7)
+  H5Pset_file_locking(access.getId(), false, true);
+#endif
+  // closing the file closes any object still open, so finish() really releases it
+  access.setFcloseDegree(H5F_CLOSE_STRONG);
+  return access;
+}
+
 }  // namespace
 
 struct Recorder::Impl {
@@ -178,6 +193,16 @@ struct Recorder::Impl {
     }
   }
 
+  [[noreturn]] void fail_reopen(const std::string& reason) {
+    try {
+      close();
+    } catch (const H5::Exception&) {
+      // already failing; the first error is the one to report
+    }
+    throw OutputError("output file '" + path + "' is not an icedem run's output laid out as this version writes it: " +
+                      reason);
+  }
+
   // every object must be closed for the file to close: HDF5 keeps it open while any is
   void close() {
     data.close();
@@ -198,18 +223,8 @@ Recorder::Recorder(const std::string& path, const RunMeta& meta,
   impl_->require_space(0);  // a full disk: say so before the run, not after
   // create the file
   try {
-    H5::FileAccPropList access;
-    // HDF5 1.8 format: the 1.10 superblock (v3) marks an open file and refuses to open it
-    // after a crash until `h5clear -s`; 1.8 files open normally (tested by test_recorder)
-    access.setLibverBounds(H5F_LIBVER_V18, H5F_LIBVER_V18);
-    // no file lock: readers may watch a running file (they see the last flush)
-#if H5_VERSION_GE(1, 10, 7)
-    H5Pset_file_locking(access.getId(), false, true);
-#endif
-    // closing the file closes any object still open, so finish() really releases it
-    access.setFcloseDegree(H5F_CLOSE_STRONG);
-    impl_->file = std::make_unique<H5::H5File>(path, H5F_ACC_TRUNC,
-                                               H5::FileCreatPropList::DEFAULT, access);
+    impl_->file = std::make_unique<H5::H5File>(path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT,
+                                               output_access());
   } catch (const H5::Exception& e) {
     std::string reason = hdf5_reason(e);
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
@@ -231,6 +246,30 @@ Recorder::Recorder(const std::string& path, const RunMeta& meta,
       // already failing; the first error is the one to report
     }
     throw OutputError("cannot write the layout of output file '" + path + "': " + reason);
+  }
+}
+
+Recorder::Recorder(const std::string& path, Reopen) : impl_(std::make_unique<Impl>()) {
+  impl_->path = path;
+  H5::Exception::dontPrint();
+  QuietHdf5 quiet;
+  try {
+    impl_->file = std::make_unique<H5::H5File>(path, H5F_ACC_RDWR, H5::FileCreatPropList::DEFAULT, output_access());
+  } catch (const H5::Exception& e) {
+    throw OutputError("cannot open output file '" + path + "' to resume it: " + hdf5_reason(e));
+  }
+  try {
+    impl_->data = open_output_layout(*impl_->file);
+    impl_->meta = std::make_unique<H5::Group>(impl_->file->openGroup("/meta"));
+    impl_->bodies = static_cast<std::size_t>(impl_->data.snap_awake.row_shape.at(0));
+    impl_->appended_rows = static_cast<std::size_t>(impl_->data.series.at(0).rows);
+    write_attr(*impl_->meta, "status", std::string("running"));
+    write_attr(*impl_->meta, "resumed_utc", utc_now_iso8601());
+    impl_->flush_file();
+  } catch (const H5::Exception& e) {
+    impl_->fail_reopen(hdf5_reason(e));
+  } catch (const std::out_of_range& e) {  // a dataset without the row shape the layout gives it
+    impl_->fail_reopen(e.what());
   }
 }
 

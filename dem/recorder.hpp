@@ -43,6 +43,14 @@ class Recorder {
   /// snapshot. Throws std::runtime_error naming the path if the file cannot be created.
   Recorder(const std::string& path, const RunMeta& meta, const std::vector<BodyOutline>& bodies);
 
+  /// Opens the output file at `path`, written by an earlier Recorder up to some row (a
+  /// checkpoint's copy of a run's output), to append after its rows: a resumed run. Sets /meta
+  /// status "running" again and records the time of the resumption in /meta resumed_utc.
+  /// Throws OutputError naming the path if the file cannot be opened or is not laid out as
+  /// dem/output_schema.hpp says.
+  struct Reopen {};
+  Recorder(const std::string& path, Reopen);
+
   /// Buffers one load sample (call every step).
   void append(const LoadSample& sample);
 

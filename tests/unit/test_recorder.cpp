@@ -380,6 +380,60 @@ TEST(Recorder, KilledProcessLeavesFlushedRowsReadable) {
   }
 }
 
+TEST(Recorder, ReopenedFileContinuesAfterItsRows) {
+  // a writer killed after a flush (its file as a checkpoint keeps it), reopened and continued:
+  // the rows end as if written in one go, and the rows it had not flushed are not there twice
+  const std::string path = tmp_path("recorder_reopen.h5");
+  const int flushed = 1234, total = 2000;
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    try {
+      Recorder rec(path, test_meta(), test_bodies());
+      for (int i = 0; i < flushed; ++i) rec.append(sample(i));
+      rec.append_snapshot(0.5, poses(0, 3));
+      rec.append_fracture({0.5, 1, 2, 3, 1.1});
+      rec.flush();
+      for (int i = flushed; i < flushed + 100; ++i) rec.append(sample(i));  // lost with the process
+      raise(SIGKILL);
+    } catch (...) {
+      _exit(3);
+    }
+  }
+  int wstatus = 0;
+  ASSERT_EQ(waitpid(pid, &wstatus, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(wstatus) && WTERMSIG(wstatus) == SIGKILL);
+  {
+    Recorder rec(path, Recorder::Reopen{});
+    EXPECT_EQ(rec.load_rows(), std::size_t(flushed));
+    for (int i = flushed; i < total; ++i) rec.append(sample(i));
+    rec.append_snapshot(1.5, poses(1, 3));
+    EXPECT_THROW(rec.append_snapshot(2.0, poses(2, 2)), std::invalid_argument);  // the file has 3 bodies
+    rec.finish("complete", "", 1.0);
+  }
+  H5::H5File file(path, H5F_ACC_RDONLY);
+  EXPECT_EQ(string_attr(file.openGroup("/meta"), "status"), "complete");
+  EXPECT_FALSE(string_attr(file.openGroup("/meta"), "resumed_utc").empty());
+  expect_load_rows(file, total);
+  EXPECT_EQ(read_doubles(file, "/snapshots/time"), (std::vector<double>{0.5, 1.5}));
+  EXPECT_EQ(shape(file, "/snapshots/position"), (std::vector<hsize_t>{2, 3, 3}));
+  EXPECT_EQ(shape(file, "/fracture/events"), (std::vector<hsize_t>{1}));
+}
+
+TEST(Recorder, ReopeningAFileThatIsNotAnOutputNamesIt) {
+  const std::string path = tmp_path("recorder_not_output.h5");
+  { H5::H5File file(path, H5F_ACC_TRUNC); file.createGroup("/meta"); }
+  for (const std::string& p : {path, tmp_path("recorder_missing.h5")}) {
+    std::filesystem::remove(tmp_path("recorder_missing.h5"));
+    try {
+      Recorder rec(p, Recorder::Reopen{});
+      FAIL() << p << " was reopened";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(Recorder, ZeroBodiesAndNoEventsGiveEmptyDatasets) {
   const std::string path = tmp_path("recorder_empty.h5");
   {
