@@ -30,6 +30,17 @@ ContactSolver::ContactSolver(const ContactSolverSettings& settings) : settings_(
   if (settings_.method != "pgs") method_ = make_contact_method(settings_.method);
 }
 
+const btVector3* ContactSolver::remembered_friction(const btManifoldPoint* point) const {
+  const auto it = friction_current_.find(point);
+  // a point Bullet has since replaced in its slot is not the one remembered
+  if (it == friction_current_.end() || it->second.normal_impulse != point->m_appliedImpulse) return nullptr;
+  return &it->second.tangent;
+}
+
+void ContactSolver::remember_friction(const btManifoldPoint* point, const btVector3& impulse) {
+  friction_current_[point] = FrictionMemory{point->m_appliedImpulse, impulse};
+}
+
 void ContactSolver::prepareSolve(int numBodies, int numManifolds) {
   btSequentialImpulseConstraintSolver::prepareSolve(numBodies, numManifolds);
   std::swap(friction_previous_, friction_current_);

@@ -127,6 +127,14 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   /// Let `observer` (not owned; null: none) see the problems of the steps it wants.
   void set_observer(ProblemObserver* observer) { observer_ = observer; }
 
+  /// The friction impulse on body A the solver remembers for `point` from the last step
+  /// (solver.friction_warm_start), or null if it remembers none.
+  const btVector3* remembered_friction(const btManifoldPoint* point) const;
+
+  /// Remember `impulse` for `point` as if the last step had ended with it (a world rebuilt
+  /// from a checkpoint).
+  void remember_friction(const btManifoldPoint* point, const btVector3& impulse);
+
   /// Accumulated over the solves since the last clear (the owner clears it every step).
   SolverReport& report() { return report_; }
   const SolverReport& report() const { return report_; }

@@ -131,6 +131,14 @@ class World {
   /// What the contact solver did since the report was last cleared.
   SolverReport& solver_report() { return solver_->report(); }
 
+  /// The contact solver (what it remembers between steps is part of a checkpoint).
+  ContactSolver& contact_solver() { return *solver_; }
+  const ContactSolver& contact_solver() const { return *solver_; }
+
+  /// Every rigid body in the order it was made (the structure, fixed boxes, ice bodies):
+  /// the index a checkpoint names a body by.
+  const std::vector<std::unique_ptr<btRigidBody>>& bodies() const { return bodies_; }
+
   const WorldSettings& settings() const { return settings_; }
   DynamicsWorld& dynamics() { return *dynamics_; }
   const DynamicsWorld& dynamics() const { return *dynamics_; }

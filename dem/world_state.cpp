@@ -1,0 +1,208 @@
+#include "dem/world_state.hpp"
+
+#include <stdexcept>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "dem/ice_lattice.hpp"
+
+namespace icedem {
+namespace {
+
+// Bullet's own serialised layout of its types in this (double) precision: a btTransform's
+// basis rows and origin, 4 doubles each; a btVector3, 4 doubles. Bit-exact both ways
+static_assert(sizeof(btTransformData) == 16 * sizeof(double), "BodyState keeps a btTransform as 16 doubles");
+static_assert(sizeof(btVector3Data) == 4 * sizeof(double), "BodyState keeps a btVector3 as 4 doubles");
+
+void put(double* to, const btTransform& t) { t.serialize(*reinterpret_cast<btTransformData*>(to)); }
+void put(double* to, const btVector3& v) { v.serialize(*reinterpret_cast<btVector3Data*>(to)); }
+btTransform transform(const double* from) {
+  btTransform t;
+  t.deSerialize(*reinterpret_cast<const btTransformData*>(from));
+  return t;
+}
+btVector3 vector(const double* from) {
+  btVector3 v;
+  v.deSerialize(*reinterpret_cast<const btVector3Data*>(from));
+  return v;
+}
+
+// index of every collision object of the world in World::bodies()
+std::unordered_map<const btCollisionObject*, int> body_indices(const World& world) {
+  std::unordered_map<const btCollisionObject*, int> index;
+  for (std::size_t i = 0; i < world.bodies().size(); ++i) index[world.bodies()[i].get()] = static_cast<int>(i);
+  return index;
+}
+
+// the collision objects in the dynamics world
+std::unordered_map<const btCollisionObject*, bool> members(const World& world) {
+  std::unordered_map<const btCollisionObject*, bool> member;
+  const btCollisionObjectArray& objects = world.dynamics().getCollisionObjectArray();
+  for (int i = 0; i < objects.size(); ++i) member[objects[i]] = true;
+  return member;
+}
+
+// which pair of bodies a manifold joins, and which child shapes of them (the structure is a
+// compound of hull pieces, one manifold per piece it touches a floe with): Bullet marks each
+// point with the child index of each side
+using PairKey = std::tuple<int, int, int, int>;
+PairKey key(int a, int b, const btManifoldPoint& first) { return {a, b, first.m_index0, first.m_index1}; }
+PairKey swapped_key(const PairKey& k) { return {std::get<1>(k), std::get<0>(k), std::get<3>(k), std::get<2>(k)}; }
+
+// the point as Bullet would hold it had body0 and body1 been the other way round
+btManifoldPoint swapped(const btManifoldPoint& p) {
+  btManifoldPoint q = p;
+  std::swap(q.m_localPointA, q.m_localPointB);
+  std::swap(q.m_positionWorldOnA, q.m_positionWorldOnB);
+  std::swap(q.m_partId0, q.m_partId1);
+  std::swap(q.m_index0, q.m_index1);
+  q.m_normalWorldOnB = -p.m_normalWorldOnB;
+  // the friction impulses act on body A along these directions: on the other body they
+  // are the same impulses along the opposite directions
+  q.m_lateralFrictionDir1 = -p.m_lateralFrictionDir1;
+  q.m_lateralFrictionDir2 = -p.m_lateralFrictionDir2;
+  return q;
+}
+
+}  // namespace
+
+WorldState capture_world(const World& world) {
+  WorldState s;
+  std::unordered_map<const btCollisionObject*, const FloeBody*> floe_of;
+  for (const FloeBody& f : world.floes()) floe_of[f.body] = &f;
+  const auto member = members(world);
+
+  for (const auto& body : world.bodies()) {
+    BodyState b{};
+    put(b.transform, body->getWorldTransform());
+    put(b.interpolation_transform, body->getInterpolationWorldTransform());
+    put(b.linear, body->getLinearVelocity());
+    put(b.angular, body->getAngularVelocity());
+    put(b.interpolation_linear, body->getInterpolationLinearVelocity());
+    put(b.interpolation_angular, body->getInterpolationAngularVelocity());
+    b.deactivation_time = body->getDeactivationTime();
+    b.activation = body->getActivationState();
+    b.in_world = member.count(body.get()) ? 1 : 0;
+    const auto f = floe_of.find(body.get());
+    b.frozen = f != floe_of.end() && f->second->frozen ? 1 : 0;
+    b.fragment = f != floe_of.end() ? f->second->fragment : -1;
+    s.bodies.push_back(b);
+  }
+  for (const DormantLattice& l : world.lattices()) s.lattice_replaced.push_back(l.replaced ? 1 : 0);
+  for (const IceJoint& j : world.joints()) s.joint_broken.push_back(j.constraint ? 0 : 1);
+
+  const auto index = body_indices(world);
+  // Bullet has no const access to its manifolds
+  btDispatcher& dispatcher = *const_cast<btDispatcher*>(world.dynamics().getDispatcher());
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    if (manifold.getNumContacts() == 0) continue;
+    ManifoldState ms;
+    ms.body0 = index.at(manifold.getBody0());
+    ms.body1 = index.at(manifold.getBody1());
+    for (int k = 0; k < manifold.getNumContacts(); ++k) {
+      btManifoldPoint p = manifold.getContactPoint(k);
+      p.m_userPersistentData = nullptr;
+      const btVector3* memory = world.contact_solver().remembered_friction(&manifold.getContactPoint(k));
+      ms.points.push_back(p);
+      ms.has_friction_memory.push_back(memory ? 1 : 0);
+      ms.friction_memory.push_back(memory ? *memory : btVector3(0, 0, 0));
+    }
+    s.manifolds.push_back(std::move(ms));
+  }
+  return s;
+}
+
+void restore_world(World& world, const WorldState& s) {
+  const auto& bodies = world.bodies();
+  if (s.bodies.size() != bodies.size() || s.lattice_replaced.size() != world.lattices().size() ||
+      s.joint_broken.size() != world.joints().size())
+    throw std::runtime_error(fmt::format(
+        "the checkpoint holds {} bodies, {} lattices and {} joints, the scene builds {}, {} and {}: it is not this "
+        "scene's",
+        s.bodies.size(), s.lattice_replaced.size(), s.joint_broken.size(), bodies.size(), world.lattices().size(),
+        world.joints().size()));
+  // the lattices in the world and the broken joints, as the run left them
+  for (std::size_t l = 0; l < world.lattices().size(); ++l)
+    if (s.lattice_replaced[l]) wake_lattice(world, world.lattices()[l]);
+  for (std::size_t j = 0; j < world.joints().size(); ++j)
+    if (s.joint_broken[j]) break_joint(world, world.joints()[j]);
+
+  // every body where it was, awake for now: the collision pass below makes a manifold for
+  // every touching pair (Bullet skips pairs of two sleeping bodies)
+  const auto index = body_indices(world);
+  const auto member = members(world);
+  std::unordered_map<const btCollisionObject*, FloeBody*> floe_of;
+  for (FloeBody& f : world.floes()) floe_of[f.body] = &f;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    btRigidBody& body = *bodies[i];
+    const BodyState& b = s.bodies[i];
+    const auto f = floe_of.find(&body);
+    if (f != floe_of.end() && f->second->fragment != b.fragment)
+      throw std::runtime_error(fmt::format("body {}: fragment {} in the checkpoint, {} rebuilt from its broken joints",
+                                           i, b.fragment, f->second->fragment));
+    if ((member.count(&body) > 0) != (b.in_world != 0))
+      throw std::runtime_error(fmt::format("body {}: {} the world in the checkpoint, not in the rebuilt one", i,
+                                           b.in_world ? "in" : "out of"));
+    body.setWorldTransform(transform(b.transform));
+    body.setInterpolationWorldTransform(transform(b.interpolation_transform));
+    if (body.getMotionState()) body.getMotionState()->setWorldTransform(transform(b.transform));
+    body.updateInertiaTensor();
+    if (b.in_world && !body.isStaticObject()) body.forceActivationState(ACTIVE_TAG);
+  }
+  world.dynamics().performDiscreteCollisionDetection();
+
+  // the contact points of every pair as they were, in the manifold Bullet's algorithm for the
+  // pair now holds (the collision pass made one for every pair whose boxes overlap); the
+  // structure is a compound of hull pieces, with one manifold per piece touching a floe, told
+  // apart by the pieces their points name. Every other manifold is emptied
+  btDispatcher& dispatcher = *world.dynamics().getDispatcher();
+  std::unordered_map<const btPersistentManifold*, PairKey> made;  // the pass's first point of each
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    if (manifold.getNumContacts() > 0)
+      made[&manifold] = key(index.at(manifold.getBody0()), index.at(manifold.getBody1()), manifold.getContactPoint(0));
+    manifold.clearManifold();
+  }
+  btOverlappingPairCache& pairs = *world.dynamics().getBroadphase()->getOverlappingPairCache();
+  for (const ManifoldState& ms : s.manifolds) {
+    btBroadphasePair* pair =
+        pairs.findPair(bodies[ms.body0]->getBroadphaseHandle(), bodies[ms.body1]->getBroadphaseHandle());
+    if (!pair || !pair->m_algorithm) continue;  // cannot happen for bodies in touch: dropped
+    btManifoldArray candidates;
+    pair->m_algorithm->getAllContactManifolds(candidates);
+    btPersistentManifold* target = candidates.size() == 1 ? candidates[0] : nullptr;
+    const PairKey k = key(ms.body0, ms.body1, ms.points.front());
+    for (int c = 0; !target && c < candidates.size(); ++c) {
+      const auto it = made.find(candidates[c]);
+      if (it != made.end() && (it->second == k || it->second == swapped_key(k))) target = candidates[c];
+    }
+    if (!target || target->getNumContacts() > 0) continue;  // a piece no longer touching: dropped
+    const bool swap = index.at(target->getBody0()) != ms.body0;
+    for (std::size_t p = 0; p < ms.points.size(); ++p) {
+      const int at = target->addManifoldPoint(swap ? swapped(ms.points[p]) : ms.points[p]);
+      if (ms.has_friction_memory[p])
+        world.contact_solver().remember_friction(&target->getContactPoint(at),
+                                                 swap ? -ms.friction_memory[p] : ms.friction_memory[p]);
+    }
+  }
+
+  // velocities, frozen floes and sleep as they were
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    btRigidBody& body = *bodies[i];
+    const BodyState& b = s.bodies[i];
+    const auto f = floe_of.find(&body);
+    if (f != floe_of.end() && b.frozen && !f->second->frozen) world.freeze(*f->second);
+    body.setLinearVelocity(vector(b.linear));
+    body.setAngularVelocity(vector(b.angular));
+    body.setInterpolationLinearVelocity(vector(b.interpolation_linear));
+    body.setInterpolationAngularVelocity(vector(b.interpolation_angular));
+    body.forceActivationState(b.activation);
+    body.setDeactivationTime(b.deactivation_time);
+  }
+}
+
+}  // namespace icedem
