@@ -1,5 +1,7 @@
 // The `icedem` command (docs/user/commands.md):
 //   icedem run SCENARIO.toml [-o OUT.h5] [--set key.path=value ...] [--summary-json FILE]
+//   icedem resume OUT.h5 [--summary-json FILE]  continue a killed run from its checkpoint
+//   icedem info OUT.h5                          complete, killed or resumable
 //   icedem check SCENARIO.toml [--set ...]     validate only
 //   icedem keys                                 every scenario key (markdown)
 //   icedem schema                               every output: datasets, attributes, summary keys
@@ -14,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include <unistd.h>
 
@@ -24,6 +27,7 @@
 #include "coupling/foam_case.hpp"
 #include "coupling/foam_runner.hpp"
 #include "dem/calibration.hpp"
+#include "dem/checkpoint.hpp"
 #include "dem/cone_geometry.hpp"
 #include "dem/constants.hpp"
 #include "dem/errors.hpp"
@@ -33,6 +37,7 @@
 #include "dem/output_schema.hpp"
 #include "dem/recorder.hpp"
 #include "dem/scenario.hpp"
+#include "dem/scene_builder.hpp"
 #include "dem/simulation.hpp"
 #include "dem/step_size_advice.hpp"
 #include "dem/world_builder.hpp"
@@ -100,6 +105,72 @@ int run_command(const std::string& scenario_path, std::string output, const std:
     std::cout << fmt::format("{} contact problems written to {}\n", summary.problem_files.size(), problems.directory);
   if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
   return summary.status == "interrupted" ? kExitInterrupted : kExitOk;
+}
+
+// Continue a killed or interrupted run from its checkpoint (dem/checkpoint.hpp): the output
+// becomes the checkpoint's copy of it, and the run appends to it from there.
+int resume_command(const std::string& output, const std::string& summary_path, bool quiet,
+                   const std::string& command_line) {
+  if (!std::filesystem::exists(output)) throw InputError(fmt::format("{}: no such output file", output));
+  const std::string saved = checkpoint_path(output);
+  // a finished run is never touched; a file torn by the kill is replaced by the checkpoint's copy
+  std::optional<OutputMeta> meta;
+  try {
+    meta = read_output_meta(output);
+  } catch (const InputError&) {
+    if (!std::filesystem::exists(saved)) throw;
+  }
+  if (meta && meta->status == "complete")
+    throw InputError(fmt::format("{}: the run is complete (status complete): nothing to resume", output));
+  if (!std::filesystem::exists(saved))
+    throw InputError(fmt::format("{}: no checkpoint ({}): the run stopped before its first checkpoint "
+                                 "(output.checkpoint_interval) or does not write them; run it again",
+                                 output, saved));
+  const Checkpoint checkpoint = read_checkpoint(saved);
+  const OutputMeta origin = read_output_meta(saved);
+  const std::filesystem::path base = std::filesystem::path(origin.scenario_path).parent_path();
+  const Scene scene = make_scene(parse_scenario(origin.scenario_text, origin.scenario_path, base.string(), {}));
+  if (!summary_path.empty()) require_writable(summary_path, "--summary-json");
+  const OutputLock lock(output);  // one run per output file
+  // the output as it stood at the checkpoint, put in place atomically
+  const std::string restored = output + ".resume.tmp";
+  std::filesystem::copy_file(saved, restored, std::filesystem::copy_options::overwrite_existing);
+  remove_checkpoint_group(restored);
+  std::filesystem::rename(restored, output);
+  std::cerr << fmt::format("resuming {} from its checkpoint at t = {:.2f} s\n", output, checkpoint.time);
+  RunOptions options{output, !quiet, command_line, openfoam_coupling(), {}, &checkpoint};
+  const RunSummary summary = run_simulation(scene, options);
+  std::cout << summary_table(summary) << std::flush;
+  if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
+  return summary.status == "interrupted" ? kExitInterrupted : kExitOk;
+}
+
+// What state a run's output is in, and whether (and from when) it can be resumed.
+int info_command(const std::string& output) {
+  const OutputMeta meta = read_output_meta(output);
+  const std::string saved = checkpoint_path(output);
+  std::optional<double> resumable;
+  if (std::filesystem::exists(saved)) resumable = read_checkpoint(saved).time;
+  std::cout << fmt::format("{}: {}, {} steps recorded, to t = {:.2f} s\n", output, meta.status, meta.rows,
+                           meta.last_time);
+  if (!meta.message.empty()) std::cout << "  " << meta.message << "\n";
+  if (meta.status == "running") {
+    // a live run holds the file's lock (dem/output_lock.hpp): if we can take it, the writer died
+    bool alive = false;
+    try {
+      const OutputLock probe(output);
+    } catch (const InputError&) {
+      alive = true;
+    }
+    std::cout << (alive ? "  a run is writing it now\n"
+                        : fmt::format("  its writer was killed at t = {:.2f} s or up to one block of rows (10 s) "
+                                      "later\n",
+                                      meta.last_time));
+  }
+  if (meta.status != "complete")
+    std::cout << (resumable ? fmt::format("  resumable from t = {:.2f} s: icedem resume {}\n", *resumable, output)
+                            : std::string("  not resumable: it has no checkpoint\n"));
+  return kExitOk;
 }
 
 int check_command(const std::string& scenario_path, const std::vector<std::string>& sets) {
@@ -228,6 +299,14 @@ int main(int argc, char** argv) {
   run->add_option("--export-min-contacts", problems.min_contacts, "leave out islands with fewer contacts (default 1)");
   run->add_option("--export-name", problems.name, "file name prefix (default: problem)");
 
+  CLI::App* resume = app.add_subcommand("resume", "continue a killed or interrupted run from its checkpoint");
+  resume->add_option("output", output, "the run's HDF5 output file (its checkpoint is OUTPUT.checkpoint)")->required();
+  resume->add_option("--summary-json", summary_path, "write the run summary as JSON to this file");
+  resume->add_flag("-q,--quiet", quiet, "no progress line");
+
+  CLI::App* info = app.add_subcommand("info", "say whether a run's output is complete, killed or resumable");
+  info->add_option("output", output, "a run's HDF5 output file")->required();
+
   CLI::App* check = app.add_subcommand("check", "validate a scenario (and its floe layout) only");
   check->add_option("scenario", scenario, "scenario TOML file")->required();
   check->add_option("--set", sets, "override a scenario key")->take_all();
@@ -274,6 +353,8 @@ int main(int argc, char** argv) {
   try {
     if (*run)
       return run_command(scenario, output, sets, summary_path, quiet, joined_command_line(argc, argv), problems);
+    if (*resume) return resume_command(output, summary_path, quiet, joined_command_line(argc, argv));
+    if (*info) return info_command(output);
     if (*check) return check_command(scenario, sets);
     if (*stl) return stl_command(scenario, sets, output);
     if (*calibrate) return calibrate_command(scenario, sets, target_modulus, write_path);

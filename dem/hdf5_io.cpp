@@ -110,6 +110,14 @@ Series create_series(const H5::Group& group, const std::string& name, const H5::
   return series;
 }
 
+H5::FileAccPropList unlocked_access() {
+  H5::FileAccPropList access;
+#if H5_VERSION_GE(1, 10, 7)
+  H5Pset_file_locking(access.getId(), false, true);
+#endif
+  return access;
+}
+
 Series open_series(const H5::Group& group, const std::string& name) {
   Series series;
   series.dataset = std::make_unique<H5::DataSet>(group.openDataSet(name));

@@ -35,6 +35,10 @@ std::string hdf5_reason(const H5::Exception& e);
 /// Variable-length UTF-8 strings.
 H5::StrType utf8_string_type();
 
+/// File access without HDF5's file lock: a run's writer holds its own (dem/output_lock.hpp),
+/// and a reader (icedem info, resume) must be able to open the file beside it.
+H5::FileAccPropList unlocked_access();
+
 /// Scalar attributes, replaced (not rewritten) so that type and size may change.
 void write_attr(const H5::H5Object& obj, const std::string& name, const std::string& value);
 void write_attr(const H5::H5Object& obj, const std::string& name, double value);

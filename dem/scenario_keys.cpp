@@ -275,6 +275,10 @@ std::vector<KeySpec> make_keys() {
   // output
   k.push_back(real("output.snapshot_interval", "s", 1.0, 0.0, 1.0e6,
                    "interval of body-pose snapshots in the HDF5 file; 0: none"));
+  k.push_back(real("output.checkpoint_interval", "s", 30.0, 0.0, 1.0e6,
+                   "simulated time between two checkpoints (OUT.h5.checkpoint), from which `icedem resume` "
+                   "continues a killed run; 0: none. Not written for validation cases, runs exchanging drag with "
+                   "OpenFOAM (coupling.mode = \"probe\") and --export-problems runs"));
 
   // statistics
   k.push_back(real("stats.window_start_travel", "m", 2.456, 0.0, 1.0e4,

@@ -154,6 +154,7 @@ struct ActivationSettings {
 
 struct OutputSettings {
   double snapshot_interval;  // s, 0 = no snapshots
+  double checkpoint_interval;  // s, simulated, between checkpoints (dem/checkpoint.hpp); 0 = none
 };
 
 struct StatsSettings {

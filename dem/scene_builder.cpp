@@ -274,6 +274,7 @@ Scene make_scene(const Scenario& sc) {
                                     "no floe touching the structure is frozen", reach));
 
   s.output.snapshot_interval = real(sc, "output.snapshot_interval");
+  s.output.checkpoint_interval = real(sc, "output.checkpoint_interval");
   s.stats.window_start_travel = real(sc, "stats.window_start_travel");
   s.stats.window_end_travel = real(sc, "stats.window_end_travel");
   s.stats.lowpass_hz = real(sc, "stats.lowpass_hz");

@@ -5,12 +5,14 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <filesystem>
 
 #include <sys/resource.h>
 
 #include <LinearMath/btScalar.h>
 #include <fmt/format.h>
 
+#include "dem/checkpoint.hpp"
 #include "dem/errors.hpp"
 #include "dem/ice_lattice.hpp"
 #include "dem/initial_state.hpp"
@@ -75,23 +77,17 @@ std::vector<BodyPose> body_poses(const World& world) {
   return poses;
 }
 
-// Load time series kept in memory for the statistics at the end.
-struct LoadHistory {
-  std::vector<double> time, surge, heave, sway;
-  std::vector<StepDiagnostics> solver;  // each step's diagnostics (the solver's and the boundary load)
-};
-
 // sweeps and residuals over the run; capped steps also as a fraction of the analysis
 // window, where the statistics come from
-SolverSummary solver_summary(const Scene& scene, const LoadHistory& h, const RunSummary& s) {
+SolverSummary solver_summary(const Scene& scene, const RunHistory& h, const RunSummary& s) {
   SolverSummary v;
   v.method = scene.solver.method;
   const bool sweeps = scene.solver.method == "pgs";
   v.cap = sweeps ? scene.solver.iterations : scene.solver.method_iterations;
   v.tolerance = sweeps ? scene.solver.tolerance : scene.solver.merit_tolerance;
   long window_steps = 0, window_capped = 0;
-  for (std::size_t i = 0; i < h.solver.size(); ++i) {
-    const StepDiagnostics& d = h.solver[i];
+  for (std::size_t i = 0; i < h.diagnostics.size(); ++i) {
+    const StepDiagnostics& d = h.diagnostics[i];
     v.iterations_mean += d.solver_iterations;
     v.iterations_max = std::max(v.iterations_max, static_cast<int>(d.solver_iterations));
     v.residual_max = std::max(v.residual_max, d.solver_residual);
@@ -100,22 +96,22 @@ SolverSummary solver_summary(const Scene& scene, const LoadHistory& h, const Run
     window_steps += in_window;
     window_capped += in_window && d.solver_capped > 0;
   }
-  if (!h.solver.empty()) v.iterations_mean /= static_cast<double>(h.solver.size());
+  if (!h.diagnostics.empty()) v.iterations_mean /= static_cast<double>(h.diagnostics.size());
   v.capped_window_fraction = window_steps ? double(window_capped) / double(window_steps) : 0.0;
   return v;
 }
 
 // what the fixed boundaries carried over the analysis window (dem/boundary_load.hpp)
-void boundary_summary(const LoadHistory& h, RunSummary& s) {
+void boundary_summary(const RunHistory& h, RunSummary& s) {
   if (!s.has_statistics) return;
   double boundary = 0, surge = 0;
   long steps = 0, locked_steps = 0;
-  for (std::size_t i = 0; i < h.solver.size(); ++i) {
+  for (std::size_t i = 0; i < h.diagnostics.size(); ++i) {
     if (h.time[i] < s.surge.window_start || h.time[i] > s.surge.window_end) continue;
-    boundary += h.solver[i].boundary_load;
+    boundary += h.diagnostics[i].boundary_load;
     surge += h.surge[i];
     ++steps;
-    locked_steps += h.solver[i].locked > 0;
+    locked_steps += h.diagnostics[i].locked > 0;
   }
   s.boundary_share = surge > 0 ? boundary / surge : 0.0;
   s.locked_window_fraction = steps ? double(locked_steps) / double(steps) : 0.0;
@@ -124,7 +120,7 @@ void boundary_summary(const LoadHistory& h, RunSummary& s) {
 // The analysis window starts a stated travel distance after the first ice
 // contact (stats.window_start_travel; default 2 waterline breadths, cf. the
 // paper's window after the structure has advanced into the ice, Fig. 9).
-void compute_statistics(const Scene& scene, const LoadHistory& h, RunSummary& s) {
+void compute_statistics(const Scene& scene, const RunHistory& h, RunSummary& s) {
   if (s.first_contact_s < 0) {
     s.statistics_note = "the structure never touched the ice";
     return;
@@ -195,6 +191,28 @@ void record_floe_margins(const State& state, Recorder& recorder, RunSummary& sum
   recorder.write_floe_margins(ratio, distance);
 }
 
+// what a new output says of the scene's layout and of its codes
+void describe_output(const Scene& scene, const Layout& layout, Recorder& recorder) {
+  recorder.set_attributes("/layout", {{"floes", double(layout.floes.size())},
+                                      {"achieved_concentration", layout.achieved_concentration},
+                                      {"target_concentration", scene.ice.concentration},
+                                      {"channel_area_m2", layout.channel_area}});
+  recorder.set_attribute("/fracture/events", "mode_names", code_names(kFailureModes, failure_mode_name));
+  recorder.set_attribute("/fracture/events", "mechanism_names", code_names(kBreakMechanisms, break_mechanism_name));
+  recorder.set_attribute("/layout", "source", scene.layout.file.empty() ? "generated" : scene.layout.file);
+}
+
+// steps between two checkpoints; 0: none. Runs whose state lives partly outside icedem (an
+// OpenFOAM partner exchanging drag, a validation case's loads) or that export contact problems
+// do not checkpoint
+long checkpoint_steps(const Scene& scene, const RunOptions& options) {
+  const bool partner = scene.flow.model == FlowModel::kCoupled && scene.coupling.mode == CouplingMode::kProbe;
+  if (scene.output.checkpoint_interval <= 0 || scene.validation.kind != ValidationKind::kNone || partner ||
+      !options.problems.directory.empty())
+    return 0;
+  return std::max(1L, std::lround(scene.output.checkpoint_interval / scene.time.dt));
+}
+
 }  // namespace
 
 RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
@@ -207,9 +225,10 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.output = options.output;
   summary.warnings = step_size_warnings(scene);
 
-  // initial conditions
+  // initial conditions, or the state of the checkpoint the run resumes from
   const Layout layout = scene_layout(scene);
   State state = initial_state(scene, layout.floes, options.coupling);
+  if (options.resume) restore_state(*options.resume, state);
   if (!options.problems.directory.empty()) {
     state.problem_export = std::make_unique<ProblemExport>(options.problems, scene.source_path);
     state.world->set_problem_observer(state.problem_export.get());
@@ -217,27 +236,26 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.floes = static_cast<int>(layout.floes.size());
   summary.achieved_concentration = layout.achieved_concentration;
 
-  Recorder recorder(options.output, run_meta(scene, options), body_outlines(scene, *state.world));
-  recorder.set_attributes("/layout", {{"floes", double(layout.floes.size())},
-                                      {"achieved_concentration", layout.achieved_concentration},
-                                      {"target_concentration", scene.ice.concentration},
-                                      {"channel_area_m2", layout.channel_area}});
-  recorder.set_attribute("/fracture/events", "mode_names", code_names(kFailureModes, failure_mode_name));
-  recorder.set_attribute("/fracture/events", "mechanism_names", code_names(kBreakMechanisms, break_mechanism_name));
-  recorder.set_attribute("/layout", "source", scene.layout.file.empty() ? "generated" : scene.layout.file);
+  // a resumed run appends to its output as the checkpoint left it (its layout attributes too)
+  std::unique_ptr<Recorder> record_to =
+      options.resume ? std::make_unique<Recorder>(options.output, Recorder::Reopen{})
+                     : std::make_unique<Recorder>(options.output, run_meta(scene, options), body_outlines(scene, *state.world));
+  Recorder& recorder = *record_to;
+  if (!options.resume) describe_output(scene, layout, recorder);
 
   const long total_steps = step_count(scene);
   const long snapshot_every =
       scene.output.snapshot_interval > 0 ? std::max(1L, std::lround(scene.output.snapshot_interval / scene.time.dt)) : 0;
-  if (snapshot_every) recorder.append_snapshot(0.0, body_poses(*state.world));
+  if (snapshot_every && !options.resume) recorder.append_snapshot(0.0, body_poses(*state.world));
+  const long checkpoint_every = checkpoint_steps(scene, options);
 
   const std::unique_ptr<ValidationCase> validation = make_validation_case(scene, state);
-  LoadHistory history;
+  RunHistory history = options.resume ? options.resume->history : RunHistory{};
   history.time.reserve(total_steps);
   history.surge.reserve(total_steps);
   Progress progress(total_steps * scene.time.dt, options.progress);
   InterruptGuard interrupt_guard;
-  double awake_sum = 0.0, last_flush = 0.0;
+  double last_flush = 0.0;
   summary.status = "complete";
 
   // a failure mid-run: the file keeps every step so far, marked failed
@@ -265,9 +283,9 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       history.surge.push_back(sample.surge());
       history.heave.push_back(load.force.y());
       history.sway.push_back(load.force.z());
-      history.solver.push_back(state.diagnostics);
-      awake_sum += state.awake_floes;
-      summary.health.add(state.time, state.diagnostics);
+      history.diagnostics.push_back(state.diagnostics);
+      history.awake_sum += state.awake_floes;
+      history.health.add(state.time, state.diagnostics);
       for (const FractureEvent& e : state.fracture_events) recorder.append_fracture(e);
       if (snapshot_every && state.step % snapshot_every == 0)
         recorder.append_snapshot(state.time, body_poses(*state.world));
@@ -277,6 +295,17 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       if (wall() - last_flush > 5.0) {
         recorder.flush();
         last_flush = wall();
+      }
+
+      // a checkpoint, and the world rebuilt from it as a resumed run rebuilds it, so that the
+      // two go on from the same world (dem/checkpoint.hpp)
+      if (checkpoint_every && state.step % checkpoint_every == 0 && state.step < total_steps) {
+        recorder.flush();
+        const Checkpoint checkpoint = take_checkpoint(state, history);
+        write_checkpoint(options.output, checkpoint);
+        State rebuilt = initial_state(scene, layout.floes, options.coupling);
+        restore_state(checkpoint, rebuilt);
+        state = std::move(rebuilt);
       }
     }
   } catch (const NumericalError& e) {
@@ -300,7 +329,8 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
 
   summary.steps = state.step;
   summary.sim_time_s = state.time;
-  summary.mean_awake = state.step ? awake_sum / state.step : 0.0;
+  summary.mean_awake = state.step ? history.awake_sum / state.step : 0.0;
+  summary.health = history.health;
   summary.first_contact_s = state.first_contact_time ? *state.first_contact_time : -1.0;
   summary.stage_times = state.stage_times;
   summary.breaks_by_mode = state.breaks_by_mode;
@@ -316,6 +346,11 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.cpu_time_s = process_cpu_time();
   write_statistics(recorder, summary);
   recorder.finish(summary.status, summary.message, summary.wall_time_s);
+  // a finished run is never resumed: its checkpoint goes
+  if (summary.status == "complete") {
+    std::error_code ignored;
+    std::filesystem::remove(checkpoint_path(options.output), ignored);
+  }
   return summary;
 }
 

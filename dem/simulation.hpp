@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "dem/checkpoint.hpp"
 #include "dem/contact_problem_export.hpp"
 #include "dem/flow_coupling.hpp"
 #include "dem/scene.hpp"
@@ -18,6 +19,8 @@ struct RunOptions {
   std::string command_line;       // recorded in /meta
   FlowCoupling coupling;          // the OpenFOAM coupling, if the program links it (dem/flow_coupling.hpp)
   ProblemExportSettings problems; // contact problems to write (directory empty: none)
+  const Checkpoint* resume = nullptr;  // continue from this checkpoint (its output file already
+                                       // restored to `output`: dem/checkpoint.hpp); null: from t = 0
 };
 
 /// Run the scene to the end (or until interrupted). Throws NumericalError after

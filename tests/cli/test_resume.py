@@ -1,0 +1,122 @@
+#!/usr/bin/python3
+"""Runs killed with SIGKILL and resumed end bit for bit as the uninterrupted run.
+
+Usage: test_resume.py ICEDEM SOURCE_DIR WORK_DIR
+
+The short tow (40 s) with a checkpoint every 5 s: run once uninterrupted; then killed with
+SIGKILL once it has written its checkpoint at t = 5, 15 and 25 s, resumed with
+`icedem resume`, and every dataset and the /stats attributes compared, bit for bit. A kill
+during a checkpoint write is reproduced by what it leaves on the disk: a torn temporary
+checkpoint and a torn output file. `icedem info` and refusals are checked on the way.
+"""
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import h5py
+import numpy as np
+
+icedem, src, work = sys.argv[1:4]
+os.makedirs(work, exist_ok=True)
+os.chdir(work)
+os.environ["HDF5_USE_FILE_LOCKING"] = "FALSE"  # read checkpoints beside the writer
+scenario = os.path.join(src, "scenarios/examples/short_tow.toml")
+every = ["--set", "output.checkpoint_interval=5"]
+failures = []
+
+
+def check(ok, what):
+    print(("ok: " if ok else "FAILED: ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def run(*args, expect=0):
+    p = subprocess.run([icedem, *args], capture_output=True, text=True)
+    if p.returncode != expect:
+        print(p.stdout, p.stderr)
+    return p
+
+
+def contents(path):
+    """Every dataset (as bytes) and the /stats attributes of an output file."""
+    out = {}
+    with h5py.File(path, "r") as f:
+        f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()]).tobytes()) if isinstance(o, h5py.Dataset) else None)
+        # the run's statistics, all but its own run time
+        out["/stats"] = sorted((k, float(v)) for k, v in f["stats"].attrs.items() if not k.endswith("time_s"))
+        out["/meta/status"] = f["meta"].attrs["status"]
+    return out
+
+
+def checkpoint_time(path):
+    try:
+        with h5py.File(path, "r") as f:
+            return float(f["checkpoint"].attrs["time"])
+    except (OSError, KeyError):
+        return -1.0
+
+
+def killed_at(name, t):
+    """Start a run, SIGKILL it once its checkpoint has reached t; True if it was killed in time."""
+    for p in (name, name + ".checkpoint"):
+        if os.path.exists(p):
+            os.remove(p)
+    proc = subprocess.Popen([icedem, "run", scenario, "-q", "-o", name, *every],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    while proc.poll() is None and checkpoint_time(name + ".checkpoint") < t - 1e-9:
+        time.sleep(0.002)
+    if proc.poll() is not None:
+        return False
+    proc.send_signal(signal.SIGKILL)
+    proc.wait()
+    return True
+
+
+p = run("run", scenario, "-q", "-o", "full.h5", *every)
+check(p.returncode == 0 and not os.path.exists("full.h5.checkpoint"),
+      "the uninterrupted run completes and leaves no checkpoint")
+full = contents("full.h5")
+p = run("resume", "full.h5", expect=2)
+check(p.returncode == 2 and "nothing to resume" in p.stderr, "a complete run is not resumed (exit 2)")
+check(contents("full.h5") == full, "... and its file is untouched")
+
+for t in (5.0, 15.0, 25.0):
+    name = f"killed_{t:.0f}.h5"
+    check(killed_at(name, t), f"killed by SIGKILL after its checkpoint at t = {t} s")
+    info = run("info", name).stdout
+    check("running" in info and "killed" in info and f"resumable from t = {t:.2f} s" in info,
+          f"icedem info: killed, resumable from t = {t} s")
+    p = run("resume", name, "-q")
+    check(p.returncode == 0, f"resumed from t = {t} s (exit 0)")
+    same = contents(name) == full
+    check(same, f"resumed from t = {t} s: every dataset and the statistics as the uninterrupted run's")
+    check(not os.path.exists(name + ".checkpoint"), "the finished run's checkpoint is gone")
+
+# a kill during a checkpoint write: the last checkpoint is whole, its temporary file torn, and
+# the output itself may be torn too
+name = "torn.h5"
+check(killed_at(name, 15.0), "killed after its checkpoint at t = 15 s")
+with open(name + ".checkpoint.tmp", "wb") as f:
+    f.write(open(name + ".checkpoint", "rb").read()[:5000])
+with open(name, "r+b") as f:
+    f.truncate(3000)
+p = run("resume", name, "-q")
+check(p.returncode == 0 and contents(name) == full,
+      "a torn checkpoint write and a torn output: resumed from the last checkpoint, as the uninterrupted run")
+
+# a run without checkpoints cannot be resumed, and says why
+name = "no_checkpoints.h5"
+proc = subprocess.Popen([icedem, "run", scenario, "-q", "-o", name, "--set", "output.checkpoint_interval=0"],
+                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+time.sleep(0.5)
+proc.send_signal(signal.SIGKILL)
+proc.wait()
+p = run("resume", name, expect=2)
+check(p.returncode == 2 and "no checkpoint" in p.stderr, "no checkpoint: resume refuses (exit 2) and says why")
+check("not resumable" in run("info", name).stdout, "icedem info: not resumable")
+
+print(f"{len(failures)} failed")
+sys.exit(1 if failures else 0)
