@@ -30,6 +30,18 @@ ContactSolver::ContactSolver(const ContactSolverSettings& settings) : settings_(
   if (settings_.method != "pgs") method_ = make_contact_method(settings_.method);
 }
 
+// A manifold's place in the canonical order: the pair of bodies it joins (their user index 2:
+// ice bodies by their index in World::floes(), fixed ones negative), lower first, then the
+// child shapes its first point names on each (the structure's hull pieces). Bullet's own
+// order follows the history of its arrays, which a world rebuilt from a checkpoint does not
+// share; in this order the rows are the same in both.
+std::tuple<int, int, int, int> ContactSolver::canonical(const btPersistentManifold* m) {
+  const int a = m->getBody0()->getUserIndex2(), b = m->getBody1()->getUserIndex2();
+  const int ia = m->getNumContacts() ? m->getContactPoint(0).m_index0 : -1;
+  const int ib = m->getNumContacts() ? m->getContactPoint(0).m_index1 : -1;
+  return a <= b ? std::make_tuple(a, b, ia, ib) : std::make_tuple(b, a, ib, ia);
+}
+
 const btVector3* ContactSolver::remembered_friction(const btManifoldPoint* point) const {
   const auto it = friction_current_.find(point);
   // a point Bullet has since replaced in its slot is not the one remembered
@@ -52,8 +64,12 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
                                     const btContactSolverInfo& info) {
   structure_rows_.clear();
   two_directions_ = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
-  for (int m = 0; m < numManifolds; ++m) {
-    btPersistentManifold& manifold = *manifolds[m];
+  sorted_manifolds_.assign(manifolds, manifolds + numManifolds);
+  if (settings_.order != SweepOrder::kBullet)
+    std::sort(sorted_manifolds_.begin(), sorted_manifolds_.end(),
+              [](const btPersistentManifold* a, const btPersistentManifold* b) { return canonical(a) < canonical(b); });
+  for (btPersistentManifold* m : sorted_manifolds_) {
+    btPersistentManifold& manifold = *m;
     const int first = m_tmpSolverContactConstraintPool.size();
     convertContact(&manifold, info);  // Bullet's own set-up of the rows, normal impulses warm-started
     const int end = m_tmpSolverContactConstraintPool.size();
@@ -76,7 +92,12 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
 // the error read back through the joint's erp, the compliance 1 / (h^2 K) written as
 // cfm = jacDiagABInv / (h^2 K). J v_free is computed as Bullet does (convertJoint).
 void ContactSolver::convertJoints(btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info) {
-  btSequentialImpulseConstraintSolver::convertJoints(constraints, numConstraints, info);
+  sorted_joints_.assign(constraints, constraints + numConstraints);
+  if (settings_.order != SweepOrder::kBullet)
+    std::sort(sorted_joints_.begin(), sorted_joints_.end(), [](const btTypedConstraint* a, const btTypedConstraint* b) {
+      return a->getUserConstraintId() < b->getUserConstraintId();
+    });
+  btSequentialImpulseConstraintSolver::convertJoints(sorted_joints_.data(), numConstraints, info);
   const double h = info.m_timeStep;
   for (int r = 0; r < m_tmpSolverNonContactConstraintPool.size(); ++r) {
     btSolverConstraint& row = m_tmpSolverNonContactConstraintPool[r];

@@ -48,6 +48,7 @@
 #pragma once
 
 #include <algorithm>
+#include <tuple>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -57,6 +58,7 @@
 
 #include "dem/contact_method.hpp"
 #include "dem/contact_problem.hpp"
+#include "dem/scene.hpp"
 
 namespace icedem {
 
@@ -71,11 +73,6 @@ class ProblemObserver {
   virtual void solved(const ContactProblem& problem, const SolverAnswer& answer) = 0;
 };
 
-/// Order of the contact rows within a sweep.
-enum class SweepOrder {
-  kBullet,         // the order Bullet builds them (manifold by manifold)
-  kFromStructure,  // by distance from the structure axis, outward on even sweeps, inward on odd
-};
 
 struct ContactSolverSettings {
   int iterations = 10;             // cap of contact sweeps per island and Bullet step
@@ -205,6 +202,11 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   bool two_directions_ = false;               // two friction rows per contact (else one), set per group
   std::vector<int> order_;                    // contact rows of the current group, sweep order
   std::vector<BodyScale> bodies_;             // solver bodies of the current group
+  // the group's manifolds and joints in the order their rows are made: Bullet's (SweepOrder::kBullet),
+  // else canonical (sorted by the bodies and joints they act on)
+  static std::tuple<int, int, int, int> canonical(const btPersistentManifold* m);
+  std::vector<btPersistentManifold*> sorted_manifolds_;
+  std::vector<btTypedConstraint*> sorted_joints_;
   std::unordered_map<const btManifoldPoint*, FrictionMemory> friction_previous_, friction_current_;
 };
 

@@ -131,6 +131,8 @@ const std::vector<AttributeEntry>& file_attributes() {
       {"/meta", "seed", Element::i8, "1", "random seed of the layout (unsigned)"},
       {"/meta", "started_utc", Element::text, "", "start, ISO 8601"},
       {"/meta", "finished_utc", Element::text, "", "end, ISO 8601 (absent if the run did not finish)"},
+      {"/meta", "resumed_utc", Element::text, "",
+       "when `icedem resume` last continued the run from its checkpoint, ISO 8601 (absent if never)"},
       {"/meta", "wall_time_s", Element::f8, "s", "wall time so far (updated at every flush)"},
       {"/meta", "status", Element::text, "",
        "running while running (a file left running was killed), then complete, interrupted, failed or "
@@ -188,6 +190,19 @@ std::string output_markdown() {
   for (const SummaryField& f : summary_fields())
     if (f.stats)
       md += fmt::format("| `/stats` | `{}` | f8 | {} | as the summary key (below), when not null |\n", f.key, f.unit);
+  md += "\n## Checkpoint (`OUT.h5.checkpoint`)\n\n"
+        "Every `output.checkpoint_interval` of simulated time (30 s by default; not for validation cases, runs\n"
+        "exchanging drag with OpenFOAM or exporting contact problems) a run writes `OUT.h5.checkpoint` beside\n"
+        "its output: a copy of the output as it stands, with a group `/checkpoint` holding everything the run\n"
+        "needs to go on (every body's pose, velocities and sleep, the lattices and broken joints, every contact\n"
+        "point with its warm-start impulses, the run's clock, break counts and load history). It is written to\n"
+        "`OUT.h5.checkpoint.tmp` and renamed into place, so a kill during the write leaves the previous one\n"
+        "whole. `icedem info OUT.h5` says whether a run is complete, being written, or was killed and from\n"
+        "when it can be resumed; `icedem resume OUT.h5` puts the checkpoint's copy in place of the output\n"
+        "(a file torn by the kill is no loss) and continues the run to its end, appending to it. The resumed\n"
+        "run ends bit for bit as the uninterrupted one. A complete run's checkpoint is deleted, and a complete\n"
+        "file is never resumed. `/checkpoint` holds this build's records as bytes: only the icedem version\n"
+        "that wrote it reads it.\n";
   md += "\n## Summary (`--summary-json FILE`)\n\n"
         "Statistics are `null` when the analysis window holds no data (`statistics_note` says why).\n\n"
         "| key | unit | meaning |\n|---|---|---|\n";

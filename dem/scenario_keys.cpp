@@ -67,9 +67,11 @@ std::vector<KeySpec> make_keys() {
                    "(profile) fraction of the last step's contact impulses a step starts from (Bullet: 0.85)"));
   k.push_back(boolean("solver.friction_warm_start", true,
                       "(profile) warm-start friction impulses too (Bullet starts them from zero)"));
-  k.push_back(choice("solver.order", "bullet", {"bullet", "structure"},
-                     "(profile) order of the contact rows in a sweep: Bullet's, or by distance from the "
-                     "structure, outward and inward in turn"));
+  k.push_back(choice("solver.order", "canonical", {"bullet", "canonical", "structure"},
+                     "(profile) order of the rows in a sweep: Bullet's (its arrays' history; the paper "
+                     "profile), canonical (by the bodies and joints they act on, so that a world rebuilt "
+                     "from a checkpoint solves as the original), or canonical and then by distance from "
+                     "the structure, outward and inward in turn"));
   k.push_back(real("solver.sor", "-", 1.0, 0.1, 1.9,
                    "(profile) successive over-relaxation factor of the contact rows (1: plain Gauss-Seidel)"));
   k.push_back(choice("solver.method", "pgs", {"pgs", "pgs_cone", "newton", "apgd"},

@@ -28,12 +28,22 @@ struct TimeSettings {
 };
 
 enum class Broadphase { kDbvt, kSweepAndPrune };
+
+/// Order of the rows within a sweep.
+enum class SweepOrder {
+  kBullet,         // the order Bullet builds them (manifold by manifold): its arrays' history
+  kCanonical,      // by the bodies (contacts) and joints (joint rows) they act on: the same in a
+                   // world rebuilt from a checkpoint (dem/world_state.hpp)
+  kFromStructure,  // canonical, then the contacts by distance from the structure axis, outward
+                   // on even sweeps, inward on odd
+};
+
 struct SolverSettings {
   int iterations;             // cap of PGS sweeps over the contacts per island and Bullet step
   double tolerance;           // -, residual that ends an island's sweeps early; 0 = never
   double warm_start;          // -, fraction of the last step's impulses a step starts from
   bool friction_warm_start;   // friction impulses warm-started too
-  bool order_from_structure;  // contact rows by distance from the structure, out and in by turns
+  SweepOrder order;           // of the rows in a sweep
   double sor;                 // -, over-relaxation of the contact rows
   Broadphase broadphase;
   bool split_impulse;         // position correction kept out of the contact impulses

@@ -100,7 +100,9 @@ Scene make_scene(const Scenario& sc) {
   s.solver.tolerance = real(sc, "solver.tolerance");
   s.solver.warm_start = real(sc, "solver.warm_start");
   s.solver.friction_warm_start = get<bool>(sc, "solver.friction_warm_start");
-  s.solver.order_from_structure = choice<bool>(sc, "solver.order", {{"bullet", false}, {"structure", true}});
+  s.solver.order = choice<SweepOrder>(
+      sc, "solver.order",
+      {{"bullet", SweepOrder::kBullet}, {"canonical", SweepOrder::kCanonical}, {"structure", SweepOrder::kFromStructure}});
   s.solver.sor = real(sc, "solver.sor");
   s.solver.broadphase =
       choice<Broadphase>(sc, "solver.broadphase", {{"dbvt", Broadphase::kDbvt}, {"sap", Broadphase::kSweepAndPrune}});

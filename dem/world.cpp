@@ -63,7 +63,7 @@ World::World(const WorldSettings& settings)
   contact.iterations = solver.iterations;
   contact.tolerance = solver.tolerance;
   contact.friction_warm_start = solver.friction_warm_start;
-  contact.order = solver.order_from_structure ? SweepOrder::kFromStructure : SweepOrder::kBullet;
+  contact.order = solver.order;
   contact.crushing_force = settings.crushing_force;
   contact.method = solver.method;
   contact.merit_tolerance = solver.merit_tolerance;
@@ -140,6 +140,7 @@ void World::add_structure(std::unique_ptr<btCollisionShape> shape, const Eigen::
   body->setFriction(friction);
   body->setRestitution(0);
   body->setUserIndex(kStructure);
+  body->setUserIndex2(-1);  // its place in the solver's canonical order (ContactSolver)
   dynamics_->addRigidBody(body.get());
   structure_ = body.get();
   solver_->set_structure(structure_);
@@ -161,6 +162,9 @@ btRigidBody* World::add_static_box(const Eigen::Vector3d& centre, const Eigen::V
   body->setFriction(friction);
   body->setRestitution(0);
   body->setUserIndex(material);
+  // fixed bodies are numbered -2, -3, ... in the order they are made (ice bodies 0, 1, ...):
+  // every body's place in the solver's canonical order (ContactSolver)
+  body->setUserIndex2(-2 - fixed_boxes_++);
   dynamics_->addRigidBody(body.get());
   btRigidBody* raw = body.get();
   static_shapes_.push_back(std::move(shape));
@@ -198,6 +202,8 @@ int World::add_body(const FloeShape& shape, const btTransform& pose, int floe_id
 }
 
 int World::add_joint(IceJoint joint, bool in_world) {
+  // its index, for the solver's canonical order and the contact problems' joint rows
+  joint.constraint->setUserConstraintId(static_cast<int>(joints_.size()));
   if (in_world) dynamics_->addConstraint(joint.constraint.get(), false);  // the fragment filter handles collisions
   joints_.push_back(std::move(joint));
   return static_cast<int>(joints_.size()) - 1;

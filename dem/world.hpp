@@ -187,6 +187,7 @@ class World {
   std::vector<DormantLattice> lattices_;
   std::unique_ptr<btOverlapFilterCallback> fragment_filter_;
   btRigidBody* structure_ = nullptr;
+  int fixed_boxes_ = 0;  // fixed boxes made so far
 };
 
 }  // namespace icedem

@@ -7,7 +7,8 @@ The short tow (40 s) with a checkpoint every 5 s: run once uninterrupted; then k
 SIGKILL once it has written its checkpoint at t = 5, 15 and 25 s, resumed with
 `icedem resume`, and every dataset and the /stats attributes compared, bit for bit. A kill
 during a checkpoint write is reproduced by what it leaves on the disk: a torn temporary
-checkpoint and a torn output file. `icedem info` and refusals are checked on the way.
+checkpoint and a torn output file. Then a run of breakable floes killed between two groups
+of breaks. `icedem info` and refusals are checked on the way.
 """
 import os
 import signal
@@ -59,12 +60,12 @@ def checkpoint_time(path):
         return -1.0
 
 
-def killed_at(name, t):
+def killed_at(name, t, scene=scenario, options=every):
     """Start a run, SIGKILL it once its checkpoint has reached t; True if it was killed in time."""
     for p in (name, name + ".checkpoint"):
         if os.path.exists(p):
             os.remove(p)
-    proc = subprocess.Popen([icedem, "run", scenario, "-q", "-o", name, *every],
+    proc = subprocess.Popen([icedem, "run", scene, "-q", "-o", name, *options],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     while proc.poll() is None and checkpoint_time(name + ".checkpoint") < t - 1e-9:
         time.sleep(0.002)
@@ -106,6 +107,23 @@ with open(name, "r+b") as f:
 p = run("resume", name, "-q")
 check(p.returncode == 0 and contents(name) == full,
       "a torn checkpoint write and a torn output: resumed from the last checkpoint, as the uninterrupted run")
+
+# breakable ice: the 0.20 m lattices of the bench field (50 s) with the default solver, a
+# checkpoint every 9.75 s; their joints break at 38.8-38.9 s and 39.1-39.2 s, around the
+# checkpoint at 39.0 s where the run is killed
+lattices = os.path.join(src, "scenarios/bench/large_breakable_short.toml")
+lattice_options = ["--set", "solver.profile=converged", "--set", "time.duration=50",
+                   "--set", "output.checkpoint_interval=9.75"]
+p = run("run", lattices, "-q", "-o", "lattice_full.h5", *lattice_options)
+lattice_full = contents("lattice_full.h5")
+with h5py.File("lattice_full.h5", "r") as f:
+    breaks = f["fracture/events"]["time"]
+    check((breaks < 39.0).any() and (breaks > 39.0).any(),
+          f"the lattice run breaks joints before and after t = 39 s ({list(np.round(breaks, 2))})")
+check(killed_at("lattice_killed.h5", 39.0, lattices, lattice_options), "the lattice run killed after t = 39 s")
+p = run("resume", "lattice_killed.h5", "-q")
+check(p.returncode == 0 and contents("lattice_killed.h5") == lattice_full,
+      "the lattice run resumed from t = 39 s: every dataset, the breaks and the statistics as uninterrupted")
 
 # a run without checkpoints cannot be resumed, and says why
 name = "no_checkpoints.h5"

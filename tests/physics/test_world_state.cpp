@@ -58,9 +58,8 @@ long points(const WorldState& s) {
   return n;
 }
 
-TEST(WorldState, ARebuiltWorldHoldsTheStateItWasBuiltFrom) {
-  const Scene scene = short_tow();
-  const State run = advanced(scene, 1200);  // 24 s: the cone is in the ice, a pack in front of it
+void expect_rebuilt_state(const Scene& scene, long steps) {
+  const State run = advanced(scene, steps);
   const WorldState taken = capture_world(*run.world);
   ASSERT_GT(points(taken), 100) << "the scene should hold a pack in contact";
 
@@ -104,6 +103,15 @@ TEST(WorldState, ARebuiltWorldHoldsTheStateItWasBuiltFrom) {
   EXPECT_EQ(kept, points(taken)) << "of " << points(taken) << " points, " << kept << " kept";
 }
 
+TEST(WorldState, ARebuiltWorldHoldsTheStateItWasBuiltFrom) {
+  expect_rebuilt_state(short_tow(), 1200);  // 24 s: the cone is in the ice, a pack in front of it
+}
+
+TEST(WorldState, ARebuiltLatticeWorldHoldsTheStateItWasBuiltFrom) {
+  expect_rebuilt_state(load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/bench/large_breakable_short.toml",
+                                  {"solver.profile=converged"}), 1800);
+}
+
 TEST(WorldState, ARebuiltWorldContinuesAsTheOriginal) {
   const Scene scene = short_tow();
   State run = advanced(scene, 1200);
@@ -127,6 +135,48 @@ TEST(WorldState, ARebuiltWorldContinuesAsTheOriginal) {
               -load_run / 250, -load_copy / 250);
   EXPECT_LT(largest_gap, 1e-6);
   EXPECT_NEAR(load_copy, load_run, 0.01 * std::abs(load_run));
+}
+
+}  // namespace
+}  // namespace icedem
+
+namespace icedem {
+namespace {
+
+// the largest distance between the bodies of two runs after `steps` more steps
+double gap_after(const Scene& scene, State& run, State& copy, int steps) {
+  for (int k = 0; k < steps; ++k) {
+    step(scene, run);
+    step(scene, copy);
+  }
+  double gap = 0;
+  for (std::size_t i = 0; i < run.world->floes().size(); ++i)
+    gap = std::max(gap, (run.world->floes()[i].body->getCenterOfMassPosition() -
+                         copy.world->floes()[i].body->getCenterOfMassPosition())
+                            .length());
+  return gap;
+}
+
+TEST(WorldState, ARebuiltLatticeWorldContinuesAsTheOriginal) {
+  // 0.20 m lattices in the structure's path, some of them woken from their stand-ins; the
+  // joints' rows too are made in the canonical order (solver.order; the paper profile keeps
+  // Bullet's, whose rebuilt world departs at once)
+  const std::string path = std::string(ICEDEM_SOURCE_DIR) + "/scenarios/bench/large_breakable_short.toml";
+  // without friction warm starting the rebuilt world continues bit for bit (measured over 5 s)
+  {
+    const Scene scene = load_scene(path, {"solver.profile=converged", "solver.friction_warm_start=false"});
+    State run = advanced(scene, 1800);
+    State copy = rebuilt(scene, run);
+    EXPECT_EQ(gap_after(scene, run, copy, 250), 0.0);
+  }
+  // with it (the default) a position differs in its last bit after 9 steps (measured
+  // 2026-11-25, 1.7e-18 m; the cause is not found yet), and the chaotic pack grows that as it
+  // grows any round-off: 0.1 m and 7 % of the mean load after 5 s. A resumed run is not
+  // affected: it rebuilds from the checkpoint as the run that wrote it did
+  const Scene scene = load_scene(path, {"solver.profile=converged"});  // the scenario has the paper's
+  State run = advanced(scene, 1800);
+  State copy = rebuilt(scene, run);
+  EXPECT_LT(gap_after(scene, run, copy, 25), 1e-12);
 }
 
 }  // namespace
