@@ -12,7 +12,8 @@
 //   icedem foam-solve SCENARIO.toml             solve it into the cache (flow.model = "coupled")
 //   icedem flow SCENARIO.toml -o OUT.csv        the flow model's water velocity at sample points
 // Exit codes (dem/errors.hpp): 0 success, 2 bad input, 3 numerical failure, 4 OpenFOAM coupling
-// failure, 5 output not written (disk full), 130 interrupted, 1 other.
+// failure, 5 output not written (disk full), 130 interrupted by SIGINT, 143 by SIGTERM, 1 other.
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -87,6 +88,12 @@ void write_json(const std::string& path, const nlohmann::json& j) {
   out << j.dump(2) << "\n";
 }
 
+// 0, or 128 + the signal that interrupted the run (130 for Ctrl-C, 143 for SIGTERM)
+int exit_code(const RunSummary& summary) {
+  if (summary.status != "interrupted") return kExitOk;
+  return summary.signal == SIGTERM ? kExitTerminated : kExitInterrupted;
+}
+
 int run_command(const std::string& scenario_path, std::string output, const std::vector<std::string>& sets,
                 const std::string& summary_path, bool quiet, const std::string& command_line,
                 const ProblemExportSettings& problems) {
@@ -104,7 +111,7 @@ int run_command(const std::string& scenario_path, std::string output, const std:
   if (!problems.directory.empty())
     std::cout << fmt::format("{} contact problems written to {}\n", summary.problem_files.size(), problems.directory);
   if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
-  return summary.status == "interrupted" ? kExitInterrupted : kExitOk;
+  return exit_code(summary);
 }
 
 // Continue a killed or interrupted run from its checkpoint (dem/checkpoint.hpp): the output
@@ -142,7 +149,7 @@ int resume_command(const std::string& output, const std::string& summary_path, b
   const RunSummary summary = run_simulation(scene, options);
   std::cout << summary_table(summary) << std::flush;
   if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
-  return summary.status == "interrupted" ? kExitInterrupted : kExitOk;
+  return exit_code(summary);
 }
 
 // What state a run's output is in, and whether (and from when) it can be resumed.

@@ -26,7 +26,8 @@ enum ExitCode : int {
   kExitNumerical = 3,   // NumericalError
   kExitCoupling = 4,    // CouplingError
   kExitOutput = 5,      // OutputError
-  kExitInterrupted = 130,  // Ctrl-C, file kept and marked incomplete
+  kExitInterrupted = 130,  // Ctrl-C (SIGINT), file kept and marked interrupted
+  kExitTerminated = 143,   // SIGTERM (kill, Slurm's preemption): as SIGINT, 128 + the signal
 };
 
 /// A problem with user input. `what()` is the full, user-facing message.

@@ -26,14 +26,14 @@
 namespace icedem {
 namespace {
 
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_interrupt(int) { g_interrupted = true; }
+std::atomic<int> g_interrupted{0};  // the signal that asked the run to stop, 0: none
+extern "C" void on_interrupt(int signal) { g_interrupted = signal; }
 
 // Ctrl-C ends the step loop cleanly instead of killing the process mid-write
 class InterruptGuard {
  public:
   InterruptGuard() {
-    g_interrupted = false;
+    g_interrupted = 0;
     previous_ = std::signal(SIGINT, on_interrupt);
     previous_term_ = std::signal(SIGTERM, on_interrupt);
   }
@@ -229,6 +229,9 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   const Layout layout = scene_layout(scene);
   State state = initial_state(scene, layout.floes, options.coupling);
   if (options.resume) restore_state(*options.resume, state);
+  // a new run: a checkpoint left by an earlier run of this output is not its
+  std::error_code no_checkpoint;
+  if (!options.resume) std::filesystem::remove(checkpoint_path(options.output), no_checkpoint);
   if (!options.problems.directory.empty()) {
     state.problem_export = std::make_unique<ProblemExport>(options.problems, scene.source_path);
     state.world->set_problem_observer(state.problem_export.get());
@@ -269,7 +272,12 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
     while (state.step < total_steps) {
       if (g_interrupted) {
         summary.status = "interrupted";
-        summary.message = fmt::format("interrupted at t = {:.2f} s; the file holds the run so far", state.time);
+        summary.signal = g_interrupted;
+        summary.message = fmt::format("interrupted ({}) at t = {:.2f} s; the file holds the run so far{}",
+                                      g_interrupted == SIGTERM ? "SIGTERM" : "SIGINT", state.time,
+                                      checkpoint_every && state.time >= scene.output.checkpoint_interval
+                                          ? "; icedem resume continues it from its last checkpoint"
+                                          : "");
         break;
       }
       advance(scene, state, validation.get());

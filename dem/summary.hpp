@@ -36,6 +36,7 @@ struct RunSummary {
   std::string output;    // HDF5 path
   std::string status;    // complete | interrupted | failed
   std::string message;   // error or note, "" if none
+  int signal = 0;        // the signal that interrupted the run (SIGINT, SIGTERM), else 0
 
   bool has_statistics = false;  // false if the window held no data
   std::string statistics_note;  // why there are no statistics

@@ -120,6 +120,17 @@ assert f['/meta'].attrs['status'] == 'interrupted', f['/meta'].attrs['status']
 assert f['/load/time'].shape[0] > 10
 " && ok "interrupted file readable and marked" || fail "interrupted file"
 
+# 5b. SIGTERM (kill, a Slurm preemption): as Ctrl-C, exit 143 (128 + 15)
+"$icedem" run "$src/scenarios/examples/short_tow.toml" -o term.h5 -q --set time.duration=100000 >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 120); do
+  sleep 0.5
+  $py -c "import h5py, sys; sys.exit(0 if h5py.File('term.h5', 'r')['/load/time'].shape[0] > 10 else 1)" 2>/dev/null && break
+done
+kill -TERM $pid
+wait $pid; code=$?
+[ $code -eq 143 ] && ok "SIGTERM exits 143" || fail "SIGTERM exit code $code"
+
 # 6. a numerical blow-up: a time step far beyond the buoyancy's stability limit
 #    (omega dt = 17.9 rad/s x 0.5 s >> 2): exit 3, a message naming step, floe and
 #    quantity, and the file holds the steps before it, marked failed

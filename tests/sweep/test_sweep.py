@@ -407,6 +407,48 @@ class Execution(unittest.TestCase):
         self.assertIn("2 failed", p.stdout)
         self.assertEqual(p.stdout.count("FAILED"), 2)
 
+    def test_a_sweep_killed_mid_run_resumes_its_runs_from_their_checkpoints(self):
+        # the tiny sweep with a checkpoint every 5 s, once whole and once killed (SIGKILL to the
+        # whole sweep, as a lost node) when two runs have checkpointed: rerun, the killed runs
+        # resume from their checkpoints and every run ends as in the whole sweep, bit for bit
+        import signal
+        import time
+        import h5py
+        import numpy as np
+        text = TINY.replace('"output.snapshot_interval=0"]', '"output.snapshot_interval=0", "output.checkpoint_interval=5"]')
+        path = sweep_file(text)
+        _, runs = spec.load(path)
+        whole, killed = tempfile.mkdtemp(dir=WORK), tempfile.mkdtemp(dir=WORK)
+        self.assertEqual([s.state for s in execute.run_parallel(runs, whole, ICEDEM, jobs=2)], ["done"] * 4)
+        proc = subprocess.Popen([os.path.join(ROOT, "scripts", "sweep"), "run", path, "--out", killed, "--jobs", "2",
+                                 "--icedem", ICEDEM], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                start_new_session=True)
+        checkpoints = lambda: [r for r in runs if os.path.exists(os.path.join(killed, r.path, "run.h5.checkpoint"))]
+        deadline = time.time() + 120
+        while len(checkpoints()) < 2 and proc.poll() is None and time.time() < deadline:
+            time.sleep(0.01)
+        # every process of the sweep's session (GNU parallel puts its jobs in groups of their own)
+        subprocess.run(["pkill", "-KILL", "-s", str(proc.pid)], check=False)
+        proc.wait()
+        while subprocess.run(["pgrep", "-s", str(proc.pid)], stdout=subprocess.DEVNULL).returncode == 0:
+            time.sleep(0.01)
+        resumable = checkpoints()
+        self.assertGreaterEqual(len(resumable), 2, "two runs should have been killed after a checkpoint")
+        self.assertTrue(all(execute.status(r, killed).state == "pending" for r in resumable))
+        self.assertEqual([s.state for s in execute.run_parallel(runs, killed, ICEDEM, jobs=2)], ["done"] * 4)
+        for r in resumable:
+            self.assertIn("resuming", read(os.path.join(killed, r.path, "log.txt")))
+
+        def datasets(p):
+            out = {}
+            with h5py.File(p, "r") as f:
+                f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()]).tobytes())
+                             if isinstance(o, h5py.Dataset) else None)
+            return out
+        for r in runs:
+            self.assertEqual(datasets(os.path.join(killed, r.path, "run.h5")),
+                             datasets(os.path.join(whole, r.path, "run.h5")), r.path)
+
     def test_report_sets_the_sweep_beside_the_paper(self):
         # the paper's scenario names on the short channel: small and large rigid floes
         path = sweep_file("""

@@ -7,14 +7,14 @@ exit_code, written last. A run is finished when exit_code is 0 and
 summary.json exists, or when the sweep keeps records and its record exists
 (spec.py: it was finished, perhaps on another machine); failed when exit_code
 is not 0 (its error is the last "error" line of log.txt); pending otherwise
-(never started, or killed).
+(never started, or killed: a rerun resumes it from its checkpoint, run.h5.checkpoint).
 """
 import os
 import shlex
 import subprocess
 from dataclasses import dataclass
 
-from .runner import RUN_FILES, run_args
+from .runner import RUN_FILES, resume_args, run_args
 from .spec import ROOT
 
 DEFAULT_ICEDEM = os.path.join(ROOT, "build", "dem", "icedem")
@@ -29,11 +29,18 @@ class Status:
 
 
 def command(run, out_dir, icedem):
-    """The shell command that runs `run` in its directory and records its exit code."""
+    """The shell command that runs `run` in its directory and records its exit code. A run that
+    was killed (a lost node, a preempted or cancelled job) and left a checkpoint is resumed from
+    it, its log appended to; one whose checkpoint cannot be resumed (exit 2: written by another
+    version) starts over."""
     d = os.path.join(out_dir, run.path)
-    args = run_args(icedem, run.scenario_file, RUN_FILES["h5"], RUN_FILES["summary"], run.sets)
-    return (f"mkdir -p {shlex.quote(d)} && cd {shlex.quote(d)} && rm -f exit_code {RUN_FILES['summary']} && "
-            f"{shlex.join(args)} > {RUN_FILES['log']} 2>&1; code=$?; echo $code > exit_code; exit $code")
+    h5, summary, log = RUN_FILES["h5"], RUN_FILES["summary"], RUN_FILES["log"]
+    start = shlex.join(run_args(icedem, run.scenario_file, h5, summary, run.sets))
+    resume = shlex.join(resume_args(icedem, h5, summary))
+    return (f"mkdir -p {shlex.quote(d)} && cd {shlex.quote(d)} && rm -f exit_code {summary} && "
+            f"if [ -f {h5}.checkpoint ]; then {resume} >> {log} 2>&1; code=$?; else code=2; rm -f {log}; fi; "
+            f"if [ $code -eq 2 ]; then {start} >> {log} 2>&1; code=$?; fi; "
+            f"echo $code > exit_code; exit $code")
 
 
 def finished_here(run, out_dir):
@@ -130,6 +137,11 @@ def slurm_script(runs, out_dir, icedem, name):
 #SBATCH --array=0-{max(len(todo) - 1, 0)}
 #SBATCH --cpus-per-task=1
 #SBATCH --output={sdir}/task-%a.out
+#SBATCH --open-mode=append
+# a preempted or failed node's task goes back in the queue, and resumes its run from the
+# checkpoint it left (icedem stops at SIGTERM; the checkpoint is at most
+# output.checkpoint_interval behind)
+#SBATCH --requeue
 line=$(sed -n "$((SLURM_ARRAY_TASK_ID + 1))p" {shlex.quote(jobs_file)})
 exec bash -c "$line"
 """)

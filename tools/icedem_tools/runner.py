@@ -53,6 +53,12 @@ def run_args(icedem, scenario, h5, summary, sets=()):
     return [icedem, "run", scenario, "-q", "-o", h5, "--summary-json", summary] + sets_args(sets)
 
 
+def resume_args(icedem, h5, summary):
+    """The argv of `icedem resume H5 -q --summary-json SUMMARY`: a killed run continued from its
+    checkpoint (H5.checkpoint)."""
+    return [icedem, "resume", h5, "-q", "--summary-json", summary]
+
+
 def execute(scenario, directory, sets=(), icedem=DEFAULT_ICEDEM, env=None, args=()):
     """Runs `icedem run scenario -q -o DIR/run.h5 --summary-json DIR/summary.json --set ...` (and
     `args`) in `directory`, its output in DIR/log.txt; never raises for a failed run."""
