@@ -24,4 +24,44 @@ echo "$out"
 [ "$rc" -eq 1 ]
 grep -q "2 finished, 2 failed" <<<"$out"
 [ "$(grep -c "FAILED .*friction.ice_structure=7.0.*expected a number" <<<"$out")" -eq 2 ]
+# preemption: the array's tasks requeued mid-run (scontrol requeue: SIGTERM, then back in the
+# queue) resume their runs from their checkpoints, and every run ends as in a sweep without faults
+sed 's/"output.snapshot_interval=0"\]/"output.snapshot_interval=0", "output.checkpoint_interval=5"]/' \
+  "$src/sweeps/ci_tiny.toml" >"$work/ck.toml"
+grep -q checkpoint_interval "$work/ck.toml"
+"$src/scripts/sweep" run "$work/ck.toml" --out "$work/whole" --icedem "$icedem" --jobs 2 >/dev/null
+"$src/scripts/sweep" slurm "$work/ck.toml" --out "$work/requeued" --icedem "$icedem" >/dev/null
+job="$(sbatch --parsable "$work/requeued/slurm/array.sh")"
+for _ in $(seq 600); do   # until a task has checkpointed (at most a minute)
+  ls "$work"/requeued/*/*/*/run.h5.checkpoint >/dev/null 2>&1 && break
+  sleep 0.1
+done
+ls "$work"/requeued/*/*/*/run.h5.checkpoint
+for task in $(squeue -h -j "$job" -t R -o %i); do scontrol requeue "$task"; done  # the running ones
+sleep 1
+# Slurm holds a requeued job back for a while (its begin time); let it start again now
+for task in $(squeue -h -j "$job" -t PD -o %i); do scontrol update JobId="$task" StartTime=now || true; done
+for _ in $(seq 1200); do  # until the array is done (at most two minutes)
+  [ -z "$(squeue -h -j "$job" 2>/dev/null)" ] && break
+  sleep 0.1
+done
+out="$("$src/scripts/sweep" status "$work/ck.toml" --out "$work/requeued")"
+echo "$out"
+grep -q "4 runs: 4 finished, 0 failed, 0 pending" <<<"$out"
+grep -l "resuming" "$work"/requeued/*/*/*/log.txt
+/usr/bin/python3 - "$work/whole" "$work/requeued" <<'PY'
+import glob, os, sys
+import h5py, numpy as np
+def datasets(p):
+    out = {}
+    with h5py.File(p, "r") as f:
+        f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()]).tobytes()) if isinstance(o, h5py.Dataset) else None)
+    return out
+whole, requeued = sys.argv[1:]
+runs = sorted(os.path.relpath(p, whole) for p in glob.glob(os.path.join(whole, "*", "*", "*", "run.h5")))
+assert len(runs) == 4, runs
+for r in runs:
+    assert datasets(os.path.join(whole, r)) == datasets(os.path.join(requeued, r)), r
+print("requeued runs equal the uninterrupted sweep's, bit for bit")
+PY
 echo "slurm sweep test passed"
