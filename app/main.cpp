@@ -53,13 +53,40 @@ std::string joined_command_line(int argc, char** argv) {
   return s;
 }
 
-// -o must not name an input: the run would overwrite the scenario or its layout file
-void refuse_input_as_output(const std::string& output, const std::vector<std::string>& inputs) {
+// two paths naming one file (the same path once resolved, or one file under two names)
+bool same_file(const std::string& a, const std::string& b) {
   std::error_code ec;
-  for (const std::string& input : inputs)
-    if (!input.empty() && std::filesystem::equivalent(output, input, ec))
-      throw InputError(fmt::format("-o {}: that is an input of the run ({}); choose another output file", output,
-                                   input));
+  if (std::filesystem::equivalent(a, b, ec)) return true;
+  const auto resolved = [](const std::string& p) {
+    std::error_code e;
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(p), e);
+  };
+  return resolved(a) == resolved(b);
+}
+
+// Every file a run writes goes through here before the run starts: it must not be an input of
+// the run (the scenario, its layout file, a checkpoint it resumes from), nor another of its
+// outputs, nor a directory, and its directory must exist
+void guard_outputs(const std::vector<std::pair<std::string, std::string>>& outputs,
+                   const std::vector<std::string>& inputs) {
+  std::error_code ec;
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const auto& [option, path] = outputs[i];
+    if (path.empty()) continue;
+    if (std::filesystem::is_directory(path, ec))
+      throw InputError(fmt::format("{} {}: that is a directory; give a file name", option, path));
+    const std::filesystem::path dir = std::filesystem::absolute(path).parent_path();
+    if (!std::filesystem::is_directory(dir, ec))
+      throw InputError(fmt::format("{} {}: the directory {} does not exist", option, path, dir.string()));
+    for (const std::string& input : inputs)
+      if (!input.empty() && same_file(path, input))
+        throw InputError(fmt::format("{} {}: that is an input of the run ({}); choose another file", option, path,
+                                     input));
+    for (std::size_t j = 0; j < i; ++j)
+      if (!outputs[j].second.empty() && same_file(path, outputs[j].second))
+        throw InputError(fmt::format("{} {}: the run writes that file already ({}); choose another file", option,
+                                     path, outputs[j].first));
+  }
 }
 
 // a file the run will write at its end must be writable before the run starts
@@ -99,10 +126,8 @@ int run_command(const std::string& scenario_path, std::string output, const std:
                 const ProblemExportSettings& problems) {
   const Scene scene = load_scene(scenario_path, sets);
   if (output.empty()) output = std::filesystem::path(scenario_path).stem().string() + ".h5";
-  const std::filesystem::path dir = std::filesystem::absolute(output).parent_path();
-  if (!std::filesystem::is_directory(dir))
-    throw InputError(fmt::format("-o {}: the directory {} does not exist", output, dir.string()));
-  refuse_input_as_output(output, {scenario_path, scene.layout.file});
+  guard_outputs({{"-o", output}, {"its checkpoint", checkpoint_path(output)}, {"--summary-json", summary_path}},
+                {scenario_path, scene.layout.file});
   if (!summary_path.empty()) require_writable(summary_path, "--summary-json");
   const OutputLock lock(output);  // one run per output file
   RunOptions options{output, !quiet, command_line, openfoam_coupling(), problems};
@@ -137,6 +162,8 @@ int resume_command(const std::string& output, const std::string& summary_path, b
   const OutputMeta origin = read_output_meta(saved);
   const std::filesystem::path base = std::filesystem::path(origin.scenario_path).parent_path();
   const Scene scene = make_scene(parse_scenario(origin.scenario_text, origin.scenario_path, base.string(), {}));
+  guard_outputs({{"the output", output}, {"--summary-json", summary_path}},
+                {saved, origin.scenario_path, scene.layout.file});
   if (!summary_path.empty()) require_writable(summary_path, "--summary-json");
   const OutputLock lock(output);  // one run per output file
   // the output as it stood at the checkpoint, put in place atomically

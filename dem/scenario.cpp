@@ -159,6 +159,11 @@ std::string unknown_key_message(const std::string& where, const std::string& pat
 // Set one key from a TOML node, or throw naming where it came from.
 void assign(Scenario& sc, const std::string& path, const toml::node& node, const std::string& where) {
   const KeySpec* spec = find_key(path);
+  // a section's name given a value ("structure = 3"): it is a section, not an unknown key
+  if (!spec && is_section(path))
+    throw InputError(fmt::format("{}: '{}' is a section: write its keys under [{}] (`icedem keys` lists them), "
+                                 "not '{} = {}'",
+                                 excerpt(where), path, path, path, show(node)));
   if (!spec) throw InputError(unknown_key_message(where, path, false));
   auto value = convert(*spec, node);
   if (!value)
@@ -226,10 +231,15 @@ void apply_override(Scenario& sc, const std::string& text) {
 
 }  // namespace
 
-// `text` cut to kMaxQuote characters, saying how long it was
+// `text` cut to kMaxQuote characters, saying how long it was, its control characters written
+// as escapes (a NUL would end the message where it stands)
 std::string excerpt(const std::string& text) {
-  if (text.size() <= kMaxQuote) return text;
-  return fmt::format("{}... ({} characters)", text.substr(0, kMaxQuote), text.size());
+  std::string shown;
+  for (char c : text.size() <= kMaxQuote ? text : text.substr(0, kMaxQuote))
+    shown += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? fmt::format("\\x{:02x}", static_cast<unsigned char>(c))
+                                                                 : std::string(1, c);
+  if (text.size() <= kMaxQuote) return shown;
+  return fmt::format("{}... ({} characters)", shown, text.size());
 }
 
 // Why `path` is not a readable regular file ("" if it is): missing, a directory or a device

@@ -147,5 +147,26 @@ assert 'blow-up' in f['/meta'].attrs['message']
 assert f['/load/time'].shape[0] >= 1
 " && ok "failed run's file readable and marked" || fail "failed run's file"
 
+# 7. every output goes through one guard: never an input, never another output, never a directory
+cp "$src/scenarios/examples/short_tow.toml" guard.toml
+before=$(md5sum guard.toml)
+mkdir -p a_directory
+for args in "-o guard.h5 --summary-json guard.toml" "-o guard.h5 --summary-json guard.h5" \
+            "-o guard.h5 --summary-json guard.h5.checkpoint" "-o guard.toml" "-o a_directory"; do
+  msg=$("$icedem" run guard.toml $args -q --set time.duration=1 2>&1); code=$?
+  [ $code -eq 2 ] && ok "refused with exit 2: run $args" || fail "run $args: exit $code: $msg"
+done
+[ "$before" = "$(md5sum guard.toml)" ] && ok "the scenario was never overwritten" || fail "guard.toml changed"
+
+# 8. a section given a value, and a NUL in a string: messages that say what is wrong, whole
+printf 'structure = 3\n' > section.toml
+msg=$("$icedem" check section.toml 2>&1); code=$?
+[ $code -eq 2 ] && echo "$msg" | grep -q "'structure' is a section" && ! echo "$msg" | grep -q "did you mean" \
+  && ok "a section given a value is named a section" || fail "section given a value: $msg"
+printf '[layout]\nfile = "a\\u0000b.csv"\n' > nul.toml
+msg=$("$icedem" check nul.toml 2>&1); code=$?
+[ $code -eq 2 ] && echo "$msg" | grep -q 'a\\x00b.csv": no such file' \
+  && ok "a NUL in a string is shown escaped, the message whole" || fail "NUL in a string: $msg"
+
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]
