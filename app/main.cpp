@@ -220,6 +220,7 @@ int check_command(const std::string& scenario_path, const std::vector<std::strin
                            layout.floes.size(), 100 * layout.achieved_concentration, scene.time.duration,
                            scene.time.dt);
   for (const std::string& w : step_size_warnings(scene)) std::cout << "warning: " << w << "\n";
+  for (const std::string& w : layout_warnings(scene, layout)) std::cout << "warning: " << w << "\n";
   return kExitOk;
 }
 

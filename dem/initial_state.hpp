@@ -4,6 +4,8 @@
 
 #include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "dem/floe_layout.hpp"
 #include "dem/flow_coupling.hpp"
@@ -16,8 +18,13 @@ namespace icedem {
 /// The floe field of the scene's channel.
 Channel scene_channel(const Scene& scene);
 
-/// The floes: read from layout.file, or generated at ice.concentration.
+/// The floes: read from layout.file, or generated at ice.concentration. Throws InputError if
+/// one overlaps the structure at t = 0.
 Layout scene_layout(const Scene& scene);
+
+/// Warnings about floes the scene will not hold well: floes too narrow for their thickness to
+/// float flat (they turn over). Empty if none.
+std::vector<std::string> layout_warnings(const Scene& scene, const Layout& layout);
 
 /// The water velocity model of flow.model ("coupled" from `coupling`).
 std::unique_ptr<FlowField> make_flow(const Scene& scene, const FlowCoupling& coupling = {});

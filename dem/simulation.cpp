@@ -237,6 +237,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
     state.world->set_problem_observer(state.problem_export.get());
   }
   summary.floes = static_cast<int>(layout.floes.size());
+  for (const std::string& w : layout_warnings(scene, layout)) summary.warnings.push_back(w);
   summary.achieved_concentration = layout.achieved_concentration;
 
   // a resumed run appends to its output as the checkpoint left it (its layout attributes too)

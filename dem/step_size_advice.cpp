@@ -1,5 +1,6 @@
 #include "dem/step_size_advice.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -33,6 +34,19 @@ std::vector<std::string> step_size_warnings(const Scene& scene) {
         "out low (-19 % at 0.72 on the short tow; a blow-up above about 1.24, dem/step_size_advice.hpp); "
         "{}",
         h, scene.ice.thickness, omega, omega * h, kMaxHeaveStep, advice(dt, kMaxHeaveStep / omega)));
+  // the water's damping is explicit too: semi-implicit Euler on x'' = -omega^2 x - 2 zeta omega x'
+  // has eigenvalues inside the unit circle only while (omega h)^2 + 4 zeta omega h < 4 (Jury's
+  // conditions); omega bounds the roll and pitch frequencies as well (a floe's pitch inertia only
+  // adds to its mass's)
+  const double zeta = std::max(scene.water.heave_damping_ratio, scene.water.roll_pitch_damping_ratio);
+  const double wh = omega * h;
+  if (wh * wh + 4 * zeta * wh >= 4)
+    out.push_back(fmt::format(
+        "the floes' water damping cannot be integrated at this step: with damping ratio {:.3g} "
+        "(water.heave_damping_ratio, water.roll_pitch_damping_ratio) and omega h = {:.2f}, (omega h)^2 + 4 "
+        "zeta omega h = {:.2f} is not below 4, and the floating floes' motion grows without bound (a "
+        "blow-up, dem/step_size_advice.cpp); {}",
+        zeta, wh, wh * wh + 4 * zeta * wh, advice(dt, 0.9 * 2 * (std::sqrt(zeta * zeta + 1) - zeta) / omega)));
   const double travel = scene.structure.speed * h / scene.ice.thickness;
   if (travel > kMaxTravelPerStep)
     out.push_back(fmt::format(

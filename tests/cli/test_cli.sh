@@ -168,5 +168,19 @@ msg=$("$icedem" check nul.toml 2>&1); code=$?
 [ $code -eq 2 ] && echo "$msg" | grep -q 'a\\x00b.csv": no such file' \
   && ok "a NUL in a string is shown escaped, the message whole" || fail "NUL in a string: $msg"
 
+# 9. scenes that cannot run right are refused or warned about by check (and run)
+tow="$src/scenarios/examples/short_tow.toml"
+msg=$("$icedem" check "$tow" --set structure.start_x=7 2>&1); code=$?
+[ $code -eq 2 ] && echo "$msg" | grep -q "overlaps the structure at t = 0" \
+  && ok "check refuses a floe inside the structure at t = 0" || fail "floe in the structure (check): $code $msg"
+rm -f overlap.h5
+"$icedem" run "$tow" --set structure.start_x=7 -o overlap.h5 -q >/dev/null 2>&1; code=$?
+[ $code -eq 2 ] && [ ! -e overlap.h5 ] && ok "run refuses it too, writing nothing" || fail "floe in the structure (run): $code"
+"$icedem" check "$tow" --set water.roll_pitch_damping_ratio=10 | grep -q "water damping cannot be integrated" \
+  && ok "check warns of water damping the step cannot integrate" || fail "no warning for damping ratio 10"
+"$icedem" check "$tow" --set ice.floe_size=0.02 --set channel.length=0.5 --set channel.width=0.5 \
+  | grep -q "narrower than 0.0206 m" && ok "check warns of floes too narrow to float flat" \
+  || fail "no warning for 0.02 m floes of 33 mm ice"
+
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]
