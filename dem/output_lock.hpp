@@ -1,9 +1,13 @@
 // One writer per output file: a run holds an exclusive lock (flock) on its
 // HDF5 file for as long as it runs, so that a second run given the same -o is
 // refused instead of mixing its results into the first one's file. The lock is
-// taken before the file is truncated, and released when the process ends.
+// taken before the file is truncated, and released when the process ends. While it is held,
+// a Ctrl-C or SIGTERM before the run loop takes them over (set-up can take long) ends the
+// process with a message and exit code 128 + the signal, removing the file if the lock
+// created it and nothing was written to it.
 #pragma once
 
+#include <csignal>
 #include <string>
 
 namespace icedem {
@@ -23,6 +27,8 @@ class OutputLock {
   std::string path_;
   int fd_ = -1;
   bool created_ = false;
+  void (*previous_int_)(int) = SIG_DFL;   // the signal handlers before the lock
+  void (*previous_term_)(int) = SIG_DFL;
 };
 
 }  // namespace icedem

@@ -68,6 +68,7 @@ PY
 # first runs (the first completes); -o onto the scenario is refused; an unwritable
 # --summary-json is refused before the run
 # (the first run is long enough, 200 s simulated, to be still running on a loaded machine)
+rm -f same.h5  # a file left by an earlier run of this test would let the second start first
 "$icedem" run "$src/scenarios/examples/short_tow.toml" -o same.h5 -q --set time.duration=200 >first.log 2>&1 &
 first=$!
 for _ in $(seq 300); do [ -s same.h5 ] && break; sleep 0.1; done
@@ -181,6 +182,20 @@ rm -f overlap.h5
 "$icedem" check "$tow" --set ice.floe_size=0.02 --set channel.length=0.5 --set channel.width=0.5 \
   | grep -q "narrower than 0.0206 m" && ok "check warns of floes too narrow to float flat" \
   || fail "no warning for 0.02 m floes of 33 mm ice"
+
+# 10. a signal during set-up (675,000 floes to lay out: seconds) ends the run with a message,
+#     exit 128 + the signal, and no empty file left at a new output path
+for sig in INT TERM; do
+  rm -f setup.h5
+  "$icedem" run "$tow" --set channel.length=3000 --set ice.floe_size=0.1 -o setup.h5 -q >setup.log 2>&1 &
+  pid=$!
+  sleep 1
+  kill -$sig $pid
+  wait $pid; code=$?
+  want=$([ $sig = INT ] && echo 130 || echo 143)
+  [ $code -eq $want ] && [ ! -e setup.h5 ] && grep -q "interrupted before the run started" setup.log \
+    && ok "SIG$sig during set-up: exit $want, a message, no file" || fail "SIG$sig during set-up: exit $code, $(cat setup.log)"
+done
 
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]
