@@ -40,6 +40,10 @@
 
 namespace icedem {
 
+/// Largest count of Monte-Carlo moves (layout.sweeps x floes) a generated layout may take:
+/// at about 0.5 us a move, some 25 s of set-up.
+constexpr double kMaxLayoutMoves = 5e7;
+
 /// One rigid ice floe seen from above.
 struct Floe {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // m, (x, z) of the area centroid, tank frame

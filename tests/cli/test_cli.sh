@@ -183,6 +183,11 @@ rm -f overlap.h5
   | grep -q "narrower than 0.0206 m" && ok "check warns of floes too narrow to float flat" \
   || fail "no warning for 0.02 m floes of 33 mm ice"
 
+# 9b. a layout that would take minutes to relax is refused at once, with its cost
+msg=$(timeout 20 "$icedem" check "$tow" --set layout.sweeps=100000 --set ice.floe_size=0.1 --set channel.length=3 2>&1); code=$?
+[ $code -eq 2 ] && echo "$msg" | grep -q "Monte-Carlo moves, about 34 s of set-up" \
+  && ok "a layout beyond the set-up bound is refused with its cost" || fail "layout bound: $code $msg"
+
 # 10. a signal during set-up (675,000 floes to lay out: seconds) ends the run with a message,
 #     exit 128 + the signal, and no empty file left at a new output path
 for sig in INT TERM; do
