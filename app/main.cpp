@@ -143,12 +143,14 @@ int run_command(const std::string& scenario_path, std::string output, const std:
 // becomes the checkpoint's copy of it, and the run appends to it from there.
 int resume_command(const std::string& output, const std::string& summary_path, bool quiet,
                    const std::string& command_line) {
-  if (!std::filesystem::exists(output)) throw InputError(fmt::format("{}: no such output file", output));
   const std::string saved = checkpoint_path(output);
-  // a finished run is never touched; a file torn by the kill is replaced by the checkpoint's copy
+  if (!std::filesystem::exists(output) && !std::filesystem::exists(saved))
+    throw InputError(fmt::format("{}: no such output file, and no checkpoint of it ({})", output, saved));
+  // a finished run is never touched; a file torn by the kill (or lost) is replaced by the
+  // checkpoint's copy
   std::optional<OutputMeta> meta;
   try {
-    meta = read_output_meta(output);
+    if (std::filesystem::exists(output)) meta = read_output_meta(output);
   } catch (const InputError&) {
     if (!std::filesystem::exists(saved)) throw;
   }
@@ -166,11 +168,10 @@ int resume_command(const std::string& output, const std::string& summary_path, b
                 {saved, origin.scenario_path, scene.layout.file});
   if (!summary_path.empty()) require_writable(summary_path, "--summary-json");
   const OutputLock lock(output);  // one run per output file
-  // the output as it stood at the checkpoint, put in place atomically
-  const std::string restored = output + ".resume.tmp";
-  std::filesystem::copy_file(saved, restored, std::filesystem::copy_options::overwrite_existing);
-  remove_checkpoint_group(restored);
-  std::filesystem::rename(restored, output);
+  // the output as it stood at the checkpoint, copied into the locked file itself (a rename
+  // would put an unlocked file in its place); a kill during the copy leaves the checkpoint whole
+  std::filesystem::copy_file(saved, output, std::filesystem::copy_options::overwrite_existing);
+  remove_checkpoint_group(output);
   std::cerr << fmt::format("resuming {} from its checkpoint at t = {:.2f} s\n", output, checkpoint.time);
   RunOptions options{output, !quiet, command_line, openfoam_coupling(), {}, &checkpoint};
   const RunSummary summary = run_simulation(scene, options);

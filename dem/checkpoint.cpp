@@ -292,7 +292,8 @@ OutputMeta read_output_meta(const std::string& path) {
 void remove_checkpoint_group(const std::string& path) {
   QuietHdf5 quiet;
   try {
-    H5::H5File file(path, H5F_ACC_RDWR);
+    // the file is locked by its run (dem/output_lock.hpp), not by HDF5
+    H5::H5File file(path, H5F_ACC_RDWR, H5::FileCreatPropList::DEFAULT, unlocked_access());
     if (file.nameExists(kGroup)) file.unlink(kGroup);
   } catch (const H5::Exception& e) {
     throw OutputError(fmt::format("{}: cannot remove the checkpoint group: {}", path, hdf5_reason(e)));

@@ -125,6 +125,13 @@ p = run("resume", "lattice_killed.h5", "-q")
 check(p.returncode == 0 and contents("lattice_killed.h5") == lattice_full,
       "the lattice run resumed from t = 39 s: every dataset, the breaks and the statistics as uninterrupted")
 
+# an output lost after the kill: its checkpoint alone resumes it
+name = "lost.h5"
+check(killed_at(name, 25.0), "killed after its checkpoint at t = 25 s")
+os.remove(name)
+p = run("resume", name, "-q")
+check(p.returncode == 0 and contents(name) == full, "the output deleted after the kill: resumed from its checkpoint alone")
+
 # a run without checkpoints cannot be resumed, and says why
 name = "no_checkpoints.h5"
 proc = subprocess.Popen([icedem, "run", scenario, "-q", "-o", name, "--set", "output.checkpoint_interval=0"],
