@@ -341,31 +341,38 @@ TEST(Recorder, DestroyedDuringExceptionLeavesIncompleteFileWithAllRows) {
   EXPECT_EQ(shape(file, "/fracture/events"), (std::vector<hsize_t>{1}));
 }
 
+// A child process writes `flushed` rows, a snapshot and a break to `path`, flushes, buffers
+// 100 rows more and dies: by SIGKILL, or by _exit (no destructors: a crash that runs no
+// cleanup). Returns its wait status.
+int write_and_die(const std::string& path, int flushed, bool sigkill) {
+  const pid_t pid = fork();
+  if (pid < 0) return -1;
+  if (pid == 0) {
+    // child: no gtest assertions here, only the exit status reports
+    try {
+      Recorder rec(path, test_meta(), test_bodies());
+      for (int i = 0; i < flushed; ++i) rec.append(sample(i));
+      rec.append_snapshot(0.5, poses(0, 3));
+      rec.append_fracture({0.5, 1, 2, 3, 1.1});
+      rec.flush();
+      for (int i = flushed; i < flushed + 100; ++i) rec.append(sample(i));
+      if (sigkill) raise(SIGKILL);
+      _exit(0);
+    } catch (...) {
+      _exit(3);
+    }
+  }
+  int wstatus = 0;
+  return waitpid(pid, &wstatus, 0) == pid ? wstatus : -1;
+}
+
 TEST(Recorder, KilledProcessLeavesFlushedRowsReadable) {
   // the child writes, flushes, buffers more and dies; the parent reads what was flushed
   for (const bool sigkill : {true, false}) {
     SCOPED_TRACE(sigkill ? "SIGKILL" : "_exit");
     const std::string path = tmp_path(sigkill ? "recorder_sigkill.h5" : "recorder_exit.h5");
-    const int flushed = 1234, unflushed = 100;
-    const pid_t pid = fork();
-    ASSERT_GE(pid, 0);
-    if (pid == 0) {
-      // child: no gtest assertions here, only the exit status reports
-      try {
-        Recorder rec(path, test_meta(), test_bodies());
-        for (int i = 0; i < flushed; ++i) rec.append(sample(i));
-        rec.append_snapshot(0.5, poses(0, 3));
-        rec.append_fracture({0.5, 1, 2, 3, 1.1});
-        rec.flush();
-        for (int i = flushed; i < flushed + unflushed; ++i) rec.append(sample(i));
-        if (sigkill) raise(SIGKILL);
-        _exit(0);  // no destructors: like a crash that runs no cleanup
-      } catch (...) {
-        _exit(3);
-      }
-    }
-    int wstatus = 0;
-    ASSERT_EQ(waitpid(pid, &wstatus, 0), pid);
+    const int flushed = 1234;
+    const int wstatus = write_and_die(path, flushed, sigkill);
     if (sigkill) {
       ASSERT_TRUE(WIFSIGNALED(wstatus) && WTERMSIG(wstatus) == SIGKILL);
     } else {
@@ -385,23 +392,7 @@ TEST(Recorder, ReopenedFileContinuesAfterItsRows) {
   // the rows end as if written in one go, and the rows it had not flushed are not there twice
   const std::string path = tmp_path("recorder_reopen.h5");
   const int flushed = 1234, total = 2000;
-  const pid_t pid = fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    try {
-      Recorder rec(path, test_meta(), test_bodies());
-      for (int i = 0; i < flushed; ++i) rec.append(sample(i));
-      rec.append_snapshot(0.5, poses(0, 3));
-      rec.append_fracture({0.5, 1, 2, 3, 1.1});
-      rec.flush();
-      for (int i = flushed; i < flushed + 100; ++i) rec.append(sample(i));  // lost with the process
-      raise(SIGKILL);
-    } catch (...) {
-      _exit(3);
-    }
-  }
-  int wstatus = 0;
-  ASSERT_EQ(waitpid(pid, &wstatus, 0), pid);
+  const int wstatus = write_and_die(path, flushed, true);  // its 100 unflushed rows are lost
   ASSERT_TRUE(WIFSIGNALED(wstatus) && WTERMSIG(wstatus) == SIGKILL);
   {
     Recorder rec(path, Recorder::Reopen{});

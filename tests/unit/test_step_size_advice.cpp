@@ -33,6 +33,18 @@ TEST(StepSizeAdvice, BeyondTheLargestSubstepCountItNamesTheTimeStep) {
   // 10 m/s with 1 mm ice: a Bullet step of 1.2e-5 s, 42,000 substeps at dt 0.5 s, more than
   // time.substeps allows (1000): the advice is a shorter time.dt instead
   const auto w = step_size_warnings(scene_from("", {"structure.speed=10", "ice.thickness=0.001", "time.dt=0.5"}));
-  ASSERT_EQ(w.size(), 2u);
-  EXPECT_NE(w[1].find("time.dt <= 0.012 s with time.substeps = 1000"), std::string::npos) << w[1];
+  ASSERT_EQ(w.size(), 3u);  // accuracy, the damping's stability (omega h = 49) and the travel
+  EXPECT_NE(w[2].find("time.dt <= 0.012 s with time.substeps = 1000"), std::string::npos) << w[2];
+}
+
+TEST(StepSizeAdvice, WaterDampingTheStepCannotIntegrateIsABlowUpWarned) {
+  // damping ratio 10 at the paper's step: omega h = 0.36, (omega h)^2 + 4 zeta omega h = 14.4,
+  // beyond semi-implicit Euler's bound of 4; at 4 substeps 3.6, within it
+  const auto w = step_size_warnings(scene_from("", {"water.roll_pitch_damping_ratio=10"}));
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("blow-up"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("time.substeps >= 4"), std::string::npos) << w[0];
+  EXPECT_TRUE(step_size_warnings(scene_from("", {"water.roll_pitch_damping_ratio=10", "time.substeps=4"})).empty());
+  // the bound itself: damping ratio 0.5 warns of accuracy (0.6) long before omega h = 1.24
+  EXPECT_EQ(step_size_warnings(scene_from("", {"water.heave_damping_ratio=5"})).size(), 1u);  // 0.13 + 7.2
 }
