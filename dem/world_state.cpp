@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include <fmt/format.h>
@@ -38,10 +39,10 @@ std::unordered_map<const btCollisionObject*, int> body_indices(const World& worl
 }
 
 // the collision objects in the dynamics world
-std::unordered_map<const btCollisionObject*, bool> members(const World& world) {
-  std::unordered_map<const btCollisionObject*, bool> member;
+std::unordered_set<const btCollisionObject*> members(const World& world) {
+  std::unordered_set<const btCollisionObject*> member;
   const btCollisionObjectArray& objects = world.dynamics().getCollisionObjectArray();
-  for (int i = 0; i < objects.size(); ++i) member[objects[i]] = true;
+  for (int i = 0; i < objects.size(); ++i) member.insert(objects[i]);
   return member;
 }
 
