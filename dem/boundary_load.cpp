@@ -6,6 +6,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "dem/bullet_eigen.hpp"
+#include "dem/contact_solver.hpp"
 
 namespace icedem {
 namespace {
@@ -30,12 +31,22 @@ void BoundaryLoad::accumulate(const btDispatcher& dispatcher, const btRigidBody*
   }
   if (islands.empty()) return;
   std::sort(islands.begin(), islands.end());
+  // the manifolds between those islands' ice and fixed bodies, added in the solver's canonical
+  // order (the sum does not depend on the order of Bullet's arrays)
+  std::vector<const btPersistentManifold*> boundary;
   for (int i = 0; i < n; ++i) {
     const btPersistentManifold* m = d.getManifoldByIndexInternal(i);
     const bool wall0 = fixed(m->getBody0(), structure), wall1 = fixed(m->getBody1(), structure);
     if (wall0 == wall1) continue;  // ice on ice, or two fixed bodies
     const btCollisionObject* ice = wall0 ? m->getBody1() : m->getBody0();
     if (ice == structure || !std::binary_search(islands.begin(), islands.end(), ice->getIslandTag())) continue;
+    boundary.push_back(m);
+  }
+  std::sort(boundary.begin(), boundary.end(), [](const btPersistentManifold* a, const btPersistentManifold* b) {
+    return ContactSolver::canonical(a) < ContactSolver::canonical(b);
+  });
+  for (const btPersistentManifold* m : boundary) {
+    const bool wall0 = fixed(m->getBody0(), structure);
     // impulses act on body 0: the ice gets +j when it is body 0, -j when it is body 1
     const double sign = wall0 ? -1.0 : 1.0;
     for (int k = 0; k < m->getNumContacts(); ++k)

@@ -132,6 +132,11 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   /// from a checkpoint).
   void remember_friction(const btManifoldPoint* point, const btVector3& impulse);
 
+  /// A manifold's place in the canonical order (SweepOrder::kCanonical): the bodies it joins,
+  /// then the child shapes its first point names. Sums over manifolds in this order do not
+  /// depend on the order of Bullet's arrays (the load cell's, in a world rebuilt from a checkpoint).
+  static std::tuple<int, int, int, int> canonical(const btPersistentManifold* m);
+
   /// Accumulated over the solves since the last clear (the owner clears it every step).
   SolverReport& report() { return report_; }
   const SolverReport& report() const { return report_; }
@@ -204,7 +209,6 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   std::vector<BodyScale> bodies_;             // solver bodies of the current group
   // the group's manifolds and joints in the order their rows are made: Bullet's (SweepOrder::kBullet),
   // else canonical (sorted by the bodies and joints they act on)
-  static std::tuple<int, int, int, int> canonical(const btPersistentManifold* m);
   std::vector<btPersistentManifold*> sorted_manifolds_;
   std::vector<btTypedConstraint*> sorted_joints_;
   std::unordered_map<const btManifoldPoint*, FrictionMemory> friction_previous_, friction_current_;

@@ -14,10 +14,13 @@
 // no position-correction push.
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Core>
 
 class btDispatcher;
 class btRigidBody;
+class btPersistentManifold;
 
 namespace icedem {
 
@@ -42,6 +45,7 @@ class LoadCell {
   Eigen::Vector3d impulse_ = Eigen::Vector3d::Zero();         // N s
   Eigen::Vector3d angular_impulse_ = Eigen::Vector3d::Zero(); // N m s
   int contacts_ = 0;
+  std::vector<const btPersistentManifold*> touching_;  // scratch: the structure's manifolds
 };
 
 }  // namespace icedem
