@@ -31,8 +31,8 @@ namespace {
 
 // the layout floe a collision object belongs to, or -1 if it is no floe body
 int floe_of(const World& world, const btCollisionObject* object) {
-  if (object->getUserIndex() != kIce) return -1;
-  return world.floes()[object->getUserIndex2()].floe_id;
+  const FloeBody* f = world.ice_body(object);
+  return f ? f->floe_id : -1;
 }
 
 }  // namespace

@@ -35,11 +35,20 @@ ContactSolver::ContactSolver(const ContactSolverSettings& settings) : settings_(
 // child shapes its first point names on each (the structure's hull pieces). Bullet's own
 // order follows the history of its arrays, which a world rebuilt from a checkpoint does not
 // share; in this order the rows are the same in both.
-std::tuple<int, int, int, int> ContactSolver::canonical(const btPersistentManifold* m) {
-  const int a = m->getBody0()->getUserIndex2(), b = m->getBody1()->getUserIndex2();
-  const int ia = m->getNumContacts() ? m->getContactPoint(0).m_index0 : -1;
-  const int ib = m->getNumContacts() ? m->getContactPoint(0).m_index1 : -1;
+namespace {
+std::tuple<int, int, int, int> ordered(int a, int b, int ia, int ib) {
   return a <= b ? std::make_tuple(a, b, ia, ib) : std::make_tuple(b, a, ib, ia);
+}
+}  // namespace
+
+std::tuple<int, int, int, int> ContactSolver::canonical(const btPersistentManifold* m) {
+  if (!m->getNumContacts()) return ordered(m->getBody0()->getUserIndex2(), m->getBody1()->getUserIndex2(), -1, -1);
+  return canonical(m->getBody0(), m->getBody1(), m->getContactPoint(0));
+}
+
+std::tuple<int, int, int, int> ContactSolver::canonical(const btCollisionObject* a, const btCollisionObject* b,
+                                                        const btManifoldPoint& first) {
+  return ordered(a->getUserIndex2(), b->getUserIndex2(), first.m_index0, first.m_index1);
 }
 
 const btVector3* ContactSolver::remembered_friction(const btManifoldPoint* point) const {

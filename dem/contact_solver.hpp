@@ -136,6 +136,9 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   /// then the child shapes its first point names. Sums over manifolds in this order do not
   /// depend on the order of Bullet's arrays (the load cell's, in a world rebuilt from a checkpoint).
   static std::tuple<int, int, int, int> canonical(const btPersistentManifold* m);
+  /// The same for the points of a manifold joining `a` and `b`, the first of them `first`.
+  static std::tuple<int, int, int, int> canonical(const btCollisionObject* a, const btCollisionObject* b,
+                                                  const btManifoldPoint& first);
 
   /// Accumulated over the solves since the last clear (the owner clears it every step).
   SolverReport& report() { return report_; }

@@ -30,14 +30,11 @@ bool g_file_left_open = false;
 
 // how every output file is opened
 H5::FileAccPropList output_access() {
-  H5::FileAccPropList access;
+  // no file lock: readers may watch a running file (they see the last flush)
+  H5::FileAccPropList access = unlocked_access();
   // HDF5 1.8 format: the 1.10 superblock (v3) marks an open file and refuses to open it
   // after a crash until `h5clear -s`; 1.8 files open normally (tested by test_recorder)
   access.setLibverBounds(H5F_LIBVER_V18, H5F_LIBVER_V18);
-  // no file lock: readers may watch a running file (they see the last flush)
-#if H5_VERSION_GE(1, 10, 7)
-  H5Pset_file_locking(access.getId(), false, true);
-#endif
   // closing the file closes any object still open, so finish() really releases it
   access.setFcloseDegree(H5F_CLOSE_STRONG);
   return access;

@@ -243,10 +243,17 @@ void World::unfreeze(FloeBody& floe) {
   floe.frozen = false;
 }
 
+FloeBody* World::ice_body(const btCollisionObject* object) {
+  return object->getUserIndex() == kIce ? &floes_[object->getUserIndex2()] : nullptr;
+}
+
+const FloeBody* World::ice_body(const btCollisionObject* object) const {
+  return object->getUserIndex() == kIce ? &floes_[object->getUserIndex2()] : nullptr;
+}
+
 FloeBody* World::frozen_floe(const btCollisionObject* object) {
-  if (object->getUserIndex() != kIce) return nullptr;
-  FloeBody& f = floes_[object->getUserIndex2()];
-  return f.frozen ? &f : nullptr;
+  FloeBody* f = ice_body(object);
+  return f && f->frozen ? f : nullptr;
 }
 
 int World::contact_points() const {

@@ -163,6 +163,10 @@ class World {
   /// Make a frozen floe dynamic again, at rest and awake.
   void unfreeze(FloeBody& floe);
 
+  /// The ice body (floe or element) of a collision object, else nullptr.
+  FloeBody* ice_body(const btCollisionObject* object);
+  const FloeBody* ice_body(const btCollisionObject* object) const;
+
   /// The floe of a collision object if it is a frozen floe, else nullptr.
   FloeBody* frozen_floe(const btCollisionObject* object);
 

@@ -46,13 +46,6 @@ std::unordered_set<const btCollisionObject*> members(const World& world) {
   return member;
 }
 
-// which pair of bodies a manifold joins, and which child shapes of them (the structure is a
-// compound of hull pieces, one manifold per piece it touches a floe with): Bullet marks each
-// point with the child index of each side
-using PairKey = std::tuple<int, int, int, int>;
-PairKey key(int a, int b, const btManifoldPoint& first) { return {a, b, first.m_index0, first.m_index1}; }
-PairKey swapped_key(const PairKey& k) { return {std::get<1>(k), std::get<0>(k), std::get<3>(k), std::get<2>(k)}; }
-
 // the point as Bullet would hold it had body0 and body1 been the other way round
 btManifoldPoint swapped(const btManifoldPoint& p) {
   btManifoldPoint q = p;
@@ -72,8 +65,6 @@ btManifoldPoint swapped(const btManifoldPoint& p) {
 
 WorldState capture_world(const World& world) {
   WorldState s;
-  std::unordered_map<const btCollisionObject*, const FloeBody*> floe_of;
-  for (const FloeBody& f : world.floes()) floe_of[f.body] = &f;
   const auto member = members(world);
 
   for (const auto& body : world.bodies()) {
@@ -87,9 +78,9 @@ WorldState capture_world(const World& world) {
     b.deactivation_time = body->getDeactivationTime();
     b.activation = body->getActivationState();
     b.in_world = member.count(body.get()) ? 1 : 0;
-    const auto f = floe_of.find(body.get());
-    b.frozen = f != floe_of.end() && f->second->frozen ? 1 : 0;
-    b.fragment = f != floe_of.end() ? f->second->fragment : -1;
+    const FloeBody* f = world.ice_body(body.get());
+    b.frozen = f && f->frozen ? 1 : 0;
+    b.fragment = f ? f->fragment : -1;
     s.bodies.push_back(b);
   }
   for (const DormantLattice& l : world.lattices()) s.lattice_replaced.push_back(l.replaced ? 1 : 0);
@@ -136,15 +127,13 @@ void restore_world(World& world, const WorldState& s) {
   // every touching pair (Bullet skips pairs of two sleeping bodies)
   const auto index = body_indices(world);
   const auto member = members(world);
-  std::unordered_map<const btCollisionObject*, FloeBody*> floe_of;
-  for (FloeBody& f : world.floes()) floe_of[f.body] = &f;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     btRigidBody& body = *bodies[i];
     const BodyState& b = s.bodies[i];
-    const auto f = floe_of.find(&body);
-    if (f != floe_of.end() && f->second->fragment != b.fragment)
+    const FloeBody* f = world.ice_body(&body);
+    if (f && f->fragment != b.fragment)
       throw std::runtime_error(fmt::format("body {}: fragment {} in the checkpoint, {} rebuilt from its broken joints",
-                                           i, b.fragment, f->second->fragment));
+                                           i, b.fragment, f->fragment));
     if ((member.count(&body) > 0) != (b.in_world != 0))
       throw std::runtime_error(fmt::format("body {}: {} the world in the checkpoint, not in the rebuilt one", i,
                                            b.in_world ? "in" : "out of"));
@@ -159,13 +148,14 @@ void restore_world(World& world, const WorldState& s) {
   // the contact points of every pair as they were, in the manifold Bullet's algorithm for the
   // pair now holds (the collision pass made one for every pair whose boxes overlap); the
   // structure is a compound of hull pieces, with one manifold per piece touching a floe, told
-  // apart by the pieces their points name. Every other manifold is emptied
+  // apart by the pieces their points name (the solver's canonical key, which is the same
+  // whichever way round Bullet holds the pair). Every other manifold is emptied
   btDispatcher& dispatcher = *world.dynamics().getDispatcher();
-  std::unordered_map<const btPersistentManifold*, PairKey> made;  // the pass's first point of each
+  using Key = std::tuple<int, int, int, int>;
+  std::unordered_map<const btPersistentManifold*, Key> made;  // by the pass's first point of each
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
-    if (manifold.getNumContacts() > 0)
-      made[&manifold] = key(index.at(manifold.getBody0()), index.at(manifold.getBody1()), manifold.getContactPoint(0));
+    if (manifold.getNumContacts() > 0) made[&manifold] = ContactSolver::canonical(&manifold);
     manifold.clearManifold();
   }
   btOverlappingPairCache& pairs = *world.dynamics().getBroadphase()->getOverlappingPairCache();
@@ -176,10 +166,10 @@ void restore_world(World& world, const WorldState& s) {
     btManifoldArray candidates;
     pair->m_algorithm->getAllContactManifolds(candidates);
     btPersistentManifold* target = candidates.size() == 1 ? candidates[0] : nullptr;
-    const PairKey k = key(ms.body0, ms.body1, ms.points.front());
+    const Key k = ContactSolver::canonical(bodies[ms.body0].get(), bodies[ms.body1].get(), ms.points.front());
     for (int c = 0; !target && c < candidates.size(); ++c) {
       const auto it = made.find(candidates[c]);
-      if (it != made.end() && (it->second == k || it->second == swapped_key(k))) target = candidates[c];
+      if (it != made.end() && it->second == k) target = candidates[c];
     }
     if (!target || target->getNumContacts() > 0) continue;  // a piece no longer touching: dropped
     const bool swap = index.at(target->getBody0()) != ms.body0;
@@ -195,8 +185,8 @@ void restore_world(World& world, const WorldState& s) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     btRigidBody& body = *bodies[i];
     const BodyState& b = s.bodies[i];
-    const auto f = floe_of.find(&body);
-    if (f != floe_of.end() && b.frozen && !f->second->frozen) world.freeze(*f->second);
+    FloeBody* f = world.ice_body(&body);
+    if (f && b.frozen && !f->frozen) world.freeze(*f);
     body.setLinearVelocity(vector(b.linear));
     body.setAngularVelocity(vector(b.angular));
     body.setInterpolationLinearVelocity(vector(b.interpolation_linear));
