@@ -284,26 +284,27 @@ int calibrate_command(const std::string& scenario_path, const std::vector<std::s
                       const std::string& write_path) {
   const Scene scene = load_scene(scenario_path, sets);
   if (target <= 0) target = scene.ice.elastic_modulus;
-  std::cout << fmt::format("calibrating fracture.cfm for E = {:.1f} MPa: {} m plate of {} m elements, "
-                           "{} joint iterations, time.dt = {} s\n",
-                           target / 1e6, scene.validation.plate_size, scene.fracture.element_size,
-                           joint_sweeps(scene), scene.time.dt);
-  const CalibrationResult r = calibrate_cfm(scene, target);
-  std::cout << "      cfm    w0/P mm/N    E MPa\n";
+  const std::string key = scene.fracture.elastic_joints ? "fracture.stiffness_scale" : "fracture.cfm";
+  std::cout << fmt::format("calibrating {} for E = {:.1f} MPa: {} m plate of {} m elements, "
+                           "time.dt = {} s, {} substeps\n",
+                           key, target / 1e6, scene.validation.plate_size, scene.fracture.element_size, scene.time.dt,
+                           scene.time.substeps);
+  const CalibrationResult r = calibrate_joints(scene, target);
+  std::cout << fmt::format("  {:>24}  {:>10}  {:>8}\n", key, "w0/P mm/N", "E MPa");
   for (const CalibrationPoint& p : r.points)
-    std::cout << fmt::format("  {:9.3g}  {:10.4f}  {:8.2f}\n", p.cfm, p.compliance * 1e3, p.modulus / 1e6);
+    std::cout << fmt::format("  {:24.4g}  {:10.4f}  {:8.2f}\n", p.value, p.compliance * 1e3, p.modulus / 1e6);
   if (!r.reached) {
     std::cerr << "calibration not reached: " << r.note << "\n";
     return kExitRuntime;
   }
-  std::cout << fmt::format("fracture.cfm = {:.6g} gives E = {:.2f} MPa\n", r.cfm, r.modulus / 1e6);
+  std::cout << fmt::format("{} = {:.6g} gives E = {:.2f} MPa\n", r.key, r.value, r.modulus / 1e6);
   if (!write_path.empty()) {
-    std::vector<std::string> with_cfm = sets;
-    with_cfm.push_back(fmt::format("fracture.cfm={:.6g}", r.cfm));
+    std::vector<std::string> with_value = sets;
+    with_value.push_back(fmt::format("{}={:.6g}", r.key, r.value));
     std::ofstream out(write_path);
     if (!out) throw std::runtime_error(fmt::format("{}: cannot write the calibrated scenario", write_path));
     out << "# calibrated by: icedem calibrate " << scenario_path << "\n"
-        << read_scenario(scenario_path, with_cfm).resolved_text();
+        << read_scenario(scenario_path, with_value).resolved_text();
     std::cout << "wrote " << write_path << "\n";
   }
   return kExitOk;
@@ -373,11 +374,12 @@ int main(int argc, char** argv) {
   double target_modulus = 0;
   std::string write_path;
   CLI::App* calibrate = app.add_subcommand(
-      "calibrate", "find the joint CFM that gives a plate-deflection scenario its target elastic modulus");
+      "calibrate", "find the joints' stiffness scale (elastic joints) or CFM (Bullet's) that gives a plate-deflection "
+                   "scenario its target elastic modulus");
   calibrate->add_option("scenario", scenario, "plate-deflection validation scenario")->required();
   calibrate->add_option("--set", sets, "override a scenario key")->take_all();
   calibrate->add_option("--target-modulus", target_modulus, "Pa (default: ice.elastic_modulus)");
-  calibrate->add_option("--write", write_path, "write the scenario with the calibrated fracture.cfm");
+  calibrate->add_option("--write", write_path, "write the scenario with the calibrated key");
 
   try {
     app.parse(argc, argv);

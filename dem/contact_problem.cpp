@@ -185,7 +185,9 @@ double local_q_norm(const ContactProblem& p) { return local_q_norm(global_form(p
 
 double local_q_norm(const GlobalForm& g) {
   if (g.Jc.rows() == 0) return 0.0;
-  if (g.Jj.rows() == 0) return (g.Jc * g.v_free + g.w).norm();
+  // rigid joint rows (a clamp, compliance 0) have no folded form: the scale is then the
+  // contacts' free velocity with the joints left out, as without joints
+  if (g.Jj.rows() == 0 || (g.compliance.array() <= 0).any()) return (g.Jc * g.v_free + g.w).norm();
   // Mt^-1 ft by a sparse factorisation of Mt, not by folding the joints into a dense
   // inverse per lattice (fold_joints), which costs the cube of its size
   const FoldedMassMatrix folded = folded_mass_matrix(g);

@@ -135,7 +135,8 @@ struct LocalForm {
 };
 LocalForm local_form(const ContactProblem& p);
 
-/// |q| of the local form, computed without forming W (the merit's scale).
+/// |q| of the local form, computed without forming W (the merit's scale). With a rigid
+/// joint row (no local form) |J_c v_free + w|, the joints left out.
 double local_q_norm(const ContactProblem& p);
 double local_q_norm(const GlobalForm& g);
 

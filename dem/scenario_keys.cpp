@@ -52,15 +52,17 @@ std::vector<KeySpec> make_keys() {
   // scenario does not set it (dem/solver_profile.cpp); the default shown is that of the
   // default profile, "converged".
   k.push_back(choice("solver.profile", "converged", {"converged", "paper"},
-                     "solver settings as a set (dem/solver_profile.cpp): \"converged\" = warm-started "
-                     "normal and friction impulses, sweeps until the residual is below 0.01 or 160 sweeps "
-                     "(the convergence study's choice, docs/model/convergence.md); \"paper\" = the seed paper's "
-                     "numerics, 10 PGS sweeps a step on Bullet's solver as it comes"));
+                     "solver settings as a set (dem/solver_profile.cpp): \"converged\" = every island solved "
+                     "whole by the accelerated projected gradient to a merit of 1e-3, warm-started (the "
+                     "work-precision benchmark's choice, docs/model/contact_problems.md); \"paper\" = the seed "
+                     "paper's numerics, 10 PGS sweeps a step on Bullet's solver as it comes, Bullet's CFM "
+                     "joints"));
   k.push_back(integer("solver.iterations", 160, 1, 100000,
-                      "(profile) cap of projected Gauss-Seidel sweeps over the contacts per island and "
-                      "Bullet step"));
+                      "(profile) solver.method = \"pgs\": cap of projected Gauss-Seidel sweeps over the contacts per "
+                      "island and Bullet step; every method: cap of the split-impulse position sweeps"));
   k.push_back(real("solver.tolerance", "-", 0.01, 0.0, 1.0,
-                   "(profile) an island stops sweeping once its residual, the relative error of its "
+                   "(profile) solver.method = \"pgs\" (and the split-impulse position sweeps): an island stops "
+                   "sweeping once its residual, the relative error of its "
                    "bodies' net impulses and of its load on the structure estimated from the last two "
                    "sweeps, is below this (dem/contact_solver.hpp); 0: always solver.iterations"));
   k.push_back(real("solver.warm_start", "-", 1.0, 0.0, 1.0,
@@ -74,17 +76,17 @@ std::vector<KeySpec> make_keys() {
                      "the structure, outward and inward in turn"));
   k.push_back(real("solver.sor", "-", 1.0, 0.1, 1.9,
                    "(profile) successive over-relaxation factor of the contact rows (1: plain Gauss-Seidel)"));
-  k.push_back(choice("solver.method", "pgs", {"pgs", "pgs_cone", "newton", "apgd"},
+  k.push_back(choice("solver.method", "apgd", {"pgs", "pgs_cone", "newton", "apgd"},
                      "(profile) how an island's contacts are solved: \"pgs\", projected Gauss-Seidel sweeps on "
                      "Bullet's rows (solver.iterations, solver.tolerance; friction clamped per direction, a "
                      "square); \"pgs_cone\", the same sweeps with Coulomb's disc on the island's problem; "
                      "\"newton\", the primal Newton method on the island's whole problem, joints included; "
                      "\"apgd\", accelerated projected gradient on the same problem; these three to "
                      "solver.merit_tolerance (docs/model/contact_problems.md)"));
-  k.push_back(real("solver.merit_tolerance", "-", 1e-6, 1e-14, 1.0,
+  k.push_back(real("solver.merit_tolerance", "-", 1e-3, 1e-14, 1.0,
                    "solver.method other than \"pgs\": an island is solved when its natural-map residual, the "
                    "merit every contact method is judged by (docs/model/contact_problems.md), is below this"));
-  k.push_back(integer("solver.method_iterations", 300, 1, 100000,
+  k.push_back(integer("solver.method_iterations", 1000, 1, 100000,
                       "solver.method other than \"pgs\": cap of the method's iterations per island and Bullet "
                       "step (Newton steps, or sweeps)"));
   k.push_back(choice("solver.broadphase", "dbvt", {"dbvt", "sap"},
@@ -230,14 +232,15 @@ std::vector<KeySpec> make_keys() {
                    "time.dt or time.substeps change"));
   k.push_back(real("fracture.erp", "-", 0.8, 0.0, 1.0,
                    "error reduction of the element joints (paper: 0.8); fracture.joint_stiffness = \"cfm\" only"));
-  k.push_back(choice("fracture.joint_stiffness", "cfm", {"cfm", "elastic"},
+  k.push_back(choice("fracture.joint_stiffness", "elastic", {"cfm", "elastic"},
                      "what sets the element joints' stiffness: \"cfm\", fracture.cfm and fracture.erp in Bullet's "
                      "units (the stiffness then grows as 1/step^2); \"elastic\", each joint row a spring of the "
                      "ice between two element centres (ice.elastic_modulus, ice.poisson_ratio, ice.thickness, "
                      "fracture.element_size; docs/model/breakage.md), the same at any step"));
   k.push_back(real("fracture.stiffness_scale", "-", 1.0, 1.0e-3, 1.0e3,
                    "fracture.joint_stiffness = \"elastic\": factor on every joint row's stiffness, calibrated "
-                   "once on the plate-deflection test"));
+                   "once per element size on the plate-deflection test (icedem calibrate; 0.751 for 0.15 m, "
+                   "0.621 for 0.20 m elements: a lattice of rigid squares is stiffer than the plate it stands for)"));
   k.push_back(integer("fracture.joint_iterations", 0, 0, 100000,
                       "PGS iterations for the element joints (Bullet's per-constraint override; "
                       "contacts keep solver.iterations); 0: solver.iterations"));

@@ -15,12 +15,11 @@ using Settings = std::vector<std::pair<std::string, KeyValue>>;
 // 3.24's solver as it comes (warm start 0.85, friction from zero, its row order), with
 // no early stop, no checkpoints: results of this profile are those of icedem before the
 // convergence work, bit for bit.
-// "converged" (the default): the solver keys' own defaults (dem/scenario_keys.cpp), so it
-// sets nothing: full warm starting of normal and friction impulses, and sweeps until the
-// residual is below 1 % or 160 sweeps. Chosen by the convergence study
-// (scripts/convergence, docs/model/convergence.md): against a reference at dt/2 and 4x the
-// sweeps it is within 5 % on the mean and 10 % on p99 and the mean of maxima for small
-// rigid floes and 0.20 m lattices; 0.15 m lattices remain low on the peaks.
+// "converged" (the default): the keys' own defaults (dem/scenario_keys.cpp), so it sets
+// nothing: every island solved whole (contacts with Coulomb's disc, joints as elastic
+// springs of the ice) by the accelerated projected gradient to a merit of 1e-3, warm-started
+// from the last step. Chosen by the work-precision benchmark on the contact problem library
+// (docs/model/contact_problems.md) and checked on full runs (docs/model/convergence.md).
 const std::map<std::string, Settings>& profiles() {
   static const std::map<std::string, Settings> table{
       {"paper",
@@ -31,6 +30,8 @@ const std::map<std::string, Settings>& profiles() {
         {"solver.order", KeyValue{std::string("bullet")}},
         {"solver.sor", KeyValue{1.0}},
         {"solver.method", KeyValue{std::string("pgs")}},
+        // the paper's joints: Bullet's CFM and ERP (their stiffness depends on the step)
+        {"fracture.joint_stiffness", KeyValue{std::string("cfm")}},
         // a world rebuilt from a checkpoint holds Bullet's arrays in another order, and this
         // profile's rows follow that order: checkpoints would move its results
         {"output.checkpoint_interval", KeyValue{0.0}}}},

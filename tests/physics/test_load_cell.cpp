@@ -74,7 +74,10 @@ class LoadCellRestingBox : public ::testing::TestWithParam<bool> {};
 
 TEST_P(LoadCellRestingBox, ReadsMinusMgAndItsMoment) {
   const bool split = GetParam();
-  const Scene scene = scene_from(kBench, {std::string("solver.split_impulse=") + (split ? "true" : "false")});
+  // the load cell is under test, not the solve: the solve is tightened below the 1e-6 asserted
+  // (at the default merit of 1e-3 the weight read is within 2e-5 of m g)
+  const Scene scene = scene_from(kBench, {std::string("solver.split_impulse=") + (split ? "true" : "false"),
+                                          "solver.merit_tolerance=1e-10"});
   // a kinematic plate 0.5 m above the water, a 0.3 m ice box resting 0.2 m off its centre
   const Eigen::Vector3d plate(0.0, 0.5, 0.0);
   State state = bench_with_plate(scene, plate, {1.0, 0.01, 1.0}, {square_floe(0.2, 0.0)});

@@ -63,9 +63,13 @@ TEST(Breakable, CantileverBreaksInBendingAtTheRootAtTheBendingStrength) {
 
 TEST(Breakable, FloatingCantileverPushedDownBreaksAtTheBendingStrengthByEquationSix) {
   // scenarios/validation/cantilever_floating_015.toml, the paper's test: the tip pushed down
-  // at 5 mm/s; 10 % is the validation target's tolerance on sigma' = 6 (P_c - P_b) l / (L_e T_e^2)
-  const Scene scene =
-      load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/cantilever_floating_015.toml");
+  // at 5 mm/s; 10 % is the validation target's tolerance on sigma' = 6 (P_c - P_b) l / (L_e T_e^2).
+  // With the paper's joints (Bullet's CFM, swept): eq. 6 reads P_b as the push 0.5-1.5 s after
+  // the break, which grows with the tip's depth at the break, so the check holds only for
+  // joints as stiff in this test as the paper's. The elastic joints (the default) reach the
+  // breaking moment at 3.9 mm instead of 2.2 mm and miss it (next test)
+  const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/cantilever_floating_015.toml",
+                                 {"fracture.joint_stiffness=cfm", "solver.method=pgs"});
   const RunSummary s =
       run_simulation(scene, test_run("cantilever_floating.h5"));
   ASSERT_FALSE(s.validation.is_null());
@@ -83,4 +87,23 @@ TEST(Breakable, FloatingCantileverPushedDownBreaksAtTheBendingStrengthByEquation
   const auto& p = v["history"]["tip_load_N"];
   for (std::size_t i = 0; i < t.size() && t[i].get<double>() < v["time_of_failure_s"].get<double>(); ++i)
     EXPECT_LE(p[i].get<double>(), pc + 1e-9) << "t = " << t[i];
+}
+
+TEST(Breakable, FloatingCantileverWithElasticJointsBreaksAtTheRootInBending) {
+  // the same test at the default (elastic joints, the accelerated projected gradient): the
+  // root joint fails in bending when its stress reaches sigma_b, but eq. 6 applied to the
+  // push gives far less (measured 15.0 kPa, -59 %: the fragment's P_b is read 0.5-1.5 s
+  // after a later, deeper break). A known miss of the paper's data reduction with these
+  // joints, stated in docs/model/validation_targets.md; asserted here so it cannot change
+  // unseen: the root stress at failure within 1 % of sigma_b (the break criterion on the
+  // joint's decomposed loads, docs/model/breakage.md), and eq. 6 below the target
+  const Scene scene =
+      load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/cantilever_floating_015.toml");
+  const RunSummary s = run_simulation(scene, test_run("cantilever_floating_elastic.h5"));
+  ASSERT_FALSE(s.validation.is_null());
+  const auto& v = s.validation;
+  EXPECT_EQ(v["failure_mode"], "bending") << v.dump();
+  EXPECT_TRUE(v["at_root"].get<bool>());
+  EXPECT_NEAR(v["root_joint_stress_at_failure_kPa"].get<double>(), 36.4, 0.01 * 36.4);
+  EXPECT_LT(v["rel_error"].get<double>(), -0.10) << "eq. 6 now meets the target: update validation_targets.md";
 }

@@ -72,7 +72,7 @@ TEST(ShortTow, LoadIsFiniteNonZeroAndPlausible) {
 
 TEST(ShortTow, SolverReportsItsSweepsAndStopsEarlyWithATolerance) {
   Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml",
-                           {"solver.tolerance=0.01", "solver.iterations=60", "solver.warm_start=1",
+                           {"solver.method=pgs", "solver.tolerance=0.01", "solver.iterations=60", "solver.warm_start=1",
                             "solver.friction_warm_start=true"});
   const RunSummary s = run_simulation(scene, icedem::testing::test_run("tolerance.h5"));
   ASSERT_EQ(s.status, "complete");
