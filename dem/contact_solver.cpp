@@ -288,7 +288,7 @@ void ContactSolver::solveGroupCacheFriendlySplitImpulseIterations(btCollisionObj
   const int n = static_cast<int>(order_.size());
   // the position pass: pseudo-impulses that remove penetration, swept like the contacts
   double previous = 0.0;
-  for (int iteration = 0; iteration < info.m_numIterations; ++iteration) {
+  for (int iteration = 0; iteration < settings_.position_iterations; ++iteration) {
     const bool reverse = settings_.order == SweepOrder::kFromStructure && iteration % 2 == 1;
     double change = 0.0, largest = 0.0;
     for (int k = 0; k < n; ++k) {

@@ -86,6 +86,9 @@ struct ContactSolverSettings {
   std::string method = "pgs";
   double merit_tolerance = 1e-6;
   int method_iterations = 300;
+  // cap of the split-impulse position sweeps (pseudo-impulses that push penetrating contacts
+  // apart, apart from the contact impulses); they stop earlier at `tolerance`
+  int position_iterations = 10;
 };
 
 /// What the solver did during one time step (all islands, all substeps).

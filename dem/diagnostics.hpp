@@ -18,6 +18,7 @@ struct StepDiagnostics {
   double ice_mass = 0;              // kg, ice in the Bullet world with its centre inside the tank
   double max_joint_gap = 0;         // m, widest separation of an intact joint's two anchors
   double max_cone_penetration = 0;  // m, deepest ice vertex inside the structure hull (radial)
+  double max_contact_penetration = 0;  // m, deepest contact point of the step's manifolds (overlap of two bodies)
   double solver_iterations = 0;     // most contact sweeps an island used (dem/contact_solver.hpp)
   double solver_residual = 0;       // largest residual an island ended its sweeps with
   double solver_capped = 0;         // 1 if an island reached solver.iterations above solver.tolerance
@@ -45,6 +46,10 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      &StepDiagnostics::max_joint_gap},
     {"max_cone_penetration", "m", "deepest ice vertex inside the structure hull, radially (tunnelling shows here)",
      &StepDiagnostics::max_cone_penetration},
+    {"max_contact_penetration", "m",
+     "deepest contact point of any two bodies in Bullet's manifolds after the step (their overlap; the "
+     "split-impulse position sweeps push it out, solver.position_iterations)",
+     &StepDiagnostics::max_contact_penetration},
     {"solver_iterations", "1",
      "most PGS sweeps over the contacts any island used in the step (the cap is solver.iterations); with "
      "another solver.method, most of its iterations (cap solver.method_iterations)",

@@ -98,6 +98,13 @@ StepDiagnostics check_health(const Scene& scene, const State& state) {
     d.kinetic_energy += kinetic_energy(floe);
     d.max_cone_penetration = std::max(d.max_cone_penetration, cone_penetration(scene, state, floe, hull_reach));
   }
+  // the deepest overlap of two touching bodies (Bullet's distance is negative inside)
+  btDispatcher& dispatcher = *state.world->dynamics().getDispatcher();
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold.getNumContacts(); ++p)
+      d.max_contact_penetration = std::max(d.max_contact_penetration, -double(manifold.getContactPoint(p).getDistance()));
+  }
   for (const IceJoint& joint : state.world->joints())
     if (joint.constraint && liveness(*state.world->floes()[joint.body_a].body) != Liveness::kOutside)
       d.max_joint_gap = std::max(d.max_joint_gap, joint_gap(joint));

@@ -89,6 +89,11 @@ std::vector<KeySpec> make_keys() {
   k.push_back(integer("solver.method_iterations", 1000, 1, 100000,
                       "solver.method other than \"pgs\": cap of the method's iterations per island and Bullet "
                       "step (Newton steps, or sweeps)"));
+  k.push_back(integer("solver.position_iterations", 30, 1, 100000,
+                      "(profile) cap of the split-impulse position sweeps per island and Bullet step: they push "
+                      "penetrating contacts apart by solver.contact_erp of their depth, apart from the contact "
+                      "impulses the loads are read from, and stop earlier at solver.tolerance; what they leave is "
+                      "pushed again the next step (/diagnostics/max_contact_penetration shows the depth)"));
   k.push_back(choice("solver.broadphase", "dbvt", {"dbvt", "sap"},
                      "Bullet broadphase: dynamic AABB tree, or 3-axis sweep and prune over the tank"));
   k.push_back(boolean("solver.split_impulse", true,

@@ -51,6 +51,7 @@ struct SolverSettings {
   std::string method;         // contact method of an island: "pgs" (the sweeps above), "pgs_cone", "newton", "apgd"
   double merit_tolerance;     // -, natural-map residual that ends a method's solve
   int method_iterations;      // cap of the method's iterations per island and Bullet step
+  int position_iterations;    // cap of the split-impulse position sweeps per island and Bullet step
 };
 
 struct StructureSettings {

@@ -111,6 +111,7 @@ Scene make_scene(const Scenario& sc) {
   s.solver.method = get<std::string>(sc, "solver.method");
   s.solver.merit_tolerance = real(sc, "solver.merit_tolerance");
   s.solver.method_iterations = integer(sc, "solver.method_iterations");
+  s.solver.position_iterations = integer(sc, "solver.position_iterations");
 
   // structure profile: y strictly increasing, radii >= 0, some radius > 0
   s.structure.speed = real(sc, "structure.speed");

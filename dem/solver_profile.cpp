@@ -24,6 +24,7 @@ const std::map<std::string, Settings>& profiles() {
   static const std::map<std::string, Settings> table{
       {"paper",
        {{"solver.iterations", KeyValue{std::int64_t{10}}},
+        {"solver.position_iterations", KeyValue{std::int64_t{10}}},
         {"solver.tolerance", KeyValue{0.0}},
         {"solver.warm_start", KeyValue{0.85}},
         {"solver.friction_warm_start", KeyValue{false}},

@@ -68,6 +68,7 @@ World::World(const WorldSettings& settings)
   contact.method = solver.method;
   contact.merit_tolerance = solver.merit_tolerance;
   contact.method_iterations = solver.method_iterations;
+  contact.position_iterations = solver.position_iterations;
   solver_ = std::make_unique<ContactSolver>(contact);
   dynamics_ = std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                               collision_config_.get());

@@ -83,6 +83,7 @@ ChainResult push_chain(std::unique_ptr<btSequentialImpulseConstraintSolver> solv
 std::unique_ptr<ContactSolver> converging_solver(int cap, double tolerance) {
   ContactSolverSettings s;
   s.iterations = cap;
+  s.position_iterations = cap;  // the position sweeps converged too, as the contact sweeps
   s.tolerance = tolerance;
   s.friction_warm_start = true;
   return std::make_unique<ContactSolver>(s);
