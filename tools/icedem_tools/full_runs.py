@@ -15,7 +15,7 @@ the half-width of its 95 % confidence interval), breaks per run, the share of th
 window's steps whose solve stopped at the cap above tolerance, iterations per
 step and CPU time per run. A variant passes against the reference when its mean
 is within 3 %, its p99 within 5 %, its mean of maxima within 10 %, and its breaks
-per run inside the reference's 95 % interval (the issue's criteria; the
+per run inside the reference's 95 % interval (the criteria a default must meet; the
 confidence intervals say how much of a difference the seeds can resolve).
 Writes the tables to the report (default bench/results/full-runs-<date>.md) and
 prints them.
