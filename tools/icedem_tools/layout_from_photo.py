@@ -3,21 +3,24 @@ says how): PHOTO in, LAYOUT.csv out (the CSV that layout.file reads), with a
 PNG of the detected outlines over the photo to check them, and the floe count,
 concentration and area distribution.
 
-    scripts/layout_from_photo PHOTO -o LAYOUT.csv --floe-size L
+    scripts/layout_from_photo PHOTO -o LAYOUT.csv [--floe-size L]
         (--metres-per-pixel S [--origin X,Z] | --reference "u,v,x,z;u,v,x,z;u,v,x,z;u,v,x,z")
         [--channel X0,X1,Z0,Z1] [--min-area A] [--ice bright|dark] [--overlay PNG]
 
 Scale and placement: pixel (u, v), u to the right and v down, maps to
 x = X + S u, z = Z - S v (the towing direction to the right); or four reference
 points "u,v,x,z" (pixel and tank coordinates, m) fit a projective transform, for a
-photo taken at an angle. --floe-size, the typical floe side in m, sets the scale of
-the lighting correction and of the floe separation. --channel keeps the floes whose
+photo taken at an angle. The typical floe side sets the scale of the lighting
+correction and of the floe separation; without --floe-size (m) the tool finds it
+from the photo (photolayout.segment: the pattern spectrum's estimate, refined to the
+median size of the floes found) and reports it. --channel keeps the floes whose
 centroid lies in the region (m; the concentration is taken over it, default the
 photo's extent); --min-area drops smaller segments (m^2, default a tenth of a floe).
 Non-convex segments become their convex hull (icedem floes are convex): the area
 this adds is reported. Hulls of touching floes that overlap a neighbour (their
-shared boundary is seldom straight) are shrunk about their centroids until they
-only touch, as icedem requires; the count is reported.
+shared boundary is seldom straight) are cut apart along a straight line through
+the middle of the overlap, as icedem requires; the count and the area cut are
+reported.
 """
 import argparse
 import json
@@ -38,7 +41,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("photo")
     ap.add_argument("-o", "--output", required=True)
-    ap.add_argument("--floe-size", type=float, required=True, help="typical floe side, m")
+    ap.add_argument("--floe-size", type=float, help="typical floe side, m (default: found from the photo)")
     ap.add_argument("--metres-per-pixel", type=float)
     ap.add_argument("--origin", type=pair, default=(0.0, 0.0), help="X,Z of pixel (0, 0), m")
     ap.add_argument("--reference", help="four 'u,v,x,z' points separated by ';'")
@@ -63,32 +66,36 @@ def main(argv=None):
         return 2
     gray = photolayout.to_gray(image)
     to_tank = photolayout.pixel_to_tank(a.metres_per_pixel, a.origin, reference)
-    # the floe size in pixels, from the scale at the photo's centre
+    # metres per pixel at the photo's centre
     h, w = gray.shape
     x0, z0 = to_tank(np.array([w / 2]), np.array([h / 2]))
     x1, z1 = to_tank(np.array([w / 2 + 10]), np.array([h / 2]))
-    floe_px = a.floe_size / (np.hypot(x1 - x0, z1 - z0)[0] / 10)
-
-    mask = photolayout.ice_mask(gray, floe_px, a.ice)
-    labels = photolayout.split_floes(mask, floe_px)
+    m_per_px = np.hypot(x1 - x0, z1 - z0)[0] / 10
+    given_px = a.floe_size / m_per_px if a.floe_size else None
+    labels, floe_px, estimates = photolayout.segment(gray, a.ice, given_px)
+    floe_size = floe_px * m_per_px
     if a.channel:
         region = tuple(float(v) for v in a.channel.split(","))
     else:
         xs, zs = to_tank(np.array([0, w, w, 0]), np.array([0, 0, h, h]))
         region = (xs.min(), xs.max(), zs.min(), zs.max())
-    min_area = a.min_area if a.min_area is not None else 0.1 * a.floe_size ** 2
+    min_area = a.min_area if a.min_area is not None else 0.1 * floe_size ** 2
     floes = photolayout.floes_from_labels(labels, to_tank, min_area, region)
-    shrunk = photolayout.separate(floes)
+    cut = photolayout.separate(floes)
     photolayout.write_csv(floes, a.output)
     area = (region[1] - region[0]) * (region[3] - region[2])
     s = photolayout.summary(floes, area)
     overlay = a.overlay or os.path.splitext(a.output)[0] + ".png"
     photolayout.draw_overlay(image, floes, overlay)
+    how = "given" if a.floe_size else ("found from the photo: " + " -> ".join(f"{e * m_per_px:.3f}" for e in estimates)
+                                       + " m")
+    s["floe_size_m"] = floe_size
+    print(f"typical floe side {floe_size:.3f} m ({how})")
     print(f"{a.output}: {s['floes']} floes, concentration {100 * s['concentration']:.1f} % of "
           f"{area:.2f} m^2; floe area min {s['area_m2']['min']:.4f}, median {s['area_m2']['median']:.4f}, "
           f"max {s['area_m2']['max']:.4f} m^2; convex hulls add {100 * s['hull_added_fraction']['median']:.1f} % "
-          f"(median), at most {100 * s['hull_added_fraction']['max']:.1f} %, to the segments' pixels; {len(shrunk)} "
-          f"outlines shrunk, by at most {100 * (1 - min(shrunk.values(), default=1.0)):.1f} %, to stop overlapping a "
+          f"(median), at most {100 * s['hull_added_fraction']['max']:.1f} %, to the segments' pixels; {len(cut)} "
+          f"outlines cut, by at most {100 * max(cut.values(), default=0.0):.1f} % of their area, to stop overlapping a "
           f"neighbour; outlines over the photo: {overlay}")
     print(json.dumps(s))
     return 0
