@@ -2,13 +2,15 @@
 // whose answer is known (the same as the Newton method's tests):
 //  - the sliding row of 20 boxes (contact_scenes.hpp): the plate carries all their
 //    friction, n mu m g h;
-//  - two lattices pushed together: the joint rows are unknowns of the method beside
-//    the contacts, and the answer is Siconos' on the form with the joints folded;
+//  - two lattices pushed together: the method folds the joints into the lattices' mass
+//    matrices, the answer is Siconos' on the same folded form, and the joint rows hold;
 //  - two islands of the paper's small-floe run that stopped at today's sweep cap, with
 //    their stored reference solutions (Siconos to about 1e-11).
 // APGD is a first-order method: it is run to the merits a run uses (1e-6 and looser),
 // and the tolerances below follow from the merit reached, as stated at each.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include "dem/contact_problem_file.hpp"
 #include "tests/physics/contact_scenes.hpp"
@@ -59,6 +61,10 @@ TEST(ContactApgd, LatticeJointRowsGiveTheFoldedAnswer) {
   // rows are stiff: C ~ 1e-3 of the rows' inverse mass, so a velocity error carries a
   // thousandfold into the joint impulses, which are left to the merit)
   EXPECT_LT((v - v_folded).norm(), 1e-5 * v_folded.norm());
+  // the joints are folded into the lattices' mass matrices and their impulses follow from the
+  // velocities: the joint rows J v + b + C l = 0 hold to round-off, whatever the merit
+  const Eigen::VectorXd Jv = g.Jj * v, Cl = g.compliance.cwiseProduct(a.l);
+  EXPECT_LT((Jv + g.b + Cl).norm(), 1e-9 * std::max({g.b.norm(), Jv.norm(), Cl.norm()}));
   std::printf("pushed lattices: %zu contacts, %d joint rows; %d gradient steps to %.1e\n", p.contacts.size(),
               p.joint_rows(), a.sweeps, a.residual);
 }
