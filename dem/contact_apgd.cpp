@@ -14,6 +14,11 @@ namespace {
 // products; on the problem library every 4th step took 20 % less CPU than every step)
 constexpr int kCheckEvery = 4;
 
+// the largest group of bodies joined by joints that is folded into its mass matrix (a dense
+// inverse of 6 x 24 = 144 rows: a 0.6 m floe of 0.15 m elements has 16); an island with a
+// larger one keeps its joint rows as unknowns
+constexpr int kMaxFoldedBodies = 24;
+
 inline double dot6(const double* p, const double* q) {
   return p[0] * q[0] + p[1] * q[1] + p[2] * q[2] + p[3] * q[3] + p[4] * q[4] + p[5] * q[5];
 }
@@ -81,7 +86,8 @@ void row_products(const std::vector<Blocks<R>>& blocks, const double* free, cons
 // impulse follows from the velocities, l = -(Jj v + b) / C. Stiff springs beside the
 // contacts were what the iteration converged slowly on: on islands of the 0.20 m lattices
 // the rows as unknowns took 180-350 steps to a merit of 1e-3, the folded form 36-68.
-// A rigid joint row (compliance 0) cannot be folded: then every row stays an unknown.
+// A rigid joint row (compliance 0) cannot be folded, nor a lattice of more than
+// kMaxFoldedBodies elements be inverted every step: then every row stays an unknown.
 class DualProblem {
  public:
   explicit DualProblem(const ContactProblem& p)
@@ -91,10 +97,10 @@ class DualProblem {
     body_velocity_.resize(6 * nb_);
     body_impulse_.resize(6 * nb_);
     for (int i = 0; i < nb_; ++i) body_velocity_.segment<6>(6 * i) = p.bodies[i].free_velocity;
-    folded_ = nj_all_ > 0 && std::all_of(p.joints.begin(), p.joints.end(),
-                                         [](const ProblemJointRow& j) { return j.compliance > 0; });
+    const bool soft = nj_all_ > 0 && std::all_of(p.joints.begin(), p.joints.end(),
+                                                 [](const ProblemJointRow& j) { return j.compliance > 0; });
+    folded_ = soft && fold(p);  // also puts each folded body's v_free_t in body_velocity_
     nj_ = folded_ ? 0 : nj_all_;
-    if (folded_) fold(p);  // also puts each folded body's v_free_t in body_velocity_
     start_velocity_ = body_velocity_;
     // the inverse masses the contacts' scaling sees: a folded body's block of Mt^-1
     std::vector<Eigen::Matrix<double, 6, 6>> scaling = inv_mass_;
@@ -208,7 +214,9 @@ class DualProblem {
     Eigen::MatrixXd inverse;                    // Mt^-1 over the group's bodies
     mutable Eigen::VectorXd impulse, velocity;  // scratch of row_velocities
   };
-  void fold(const ContactProblem& p) {
+  // false (and nothing folded) if a group has more than kMaxFoldedBodies: its dense inverse
+  // would cost the cube of its size every step (a 2.7 m validation plate of 324 elements)
+  bool fold(const ContactProblem& p) {
     // the groups: bodies joined by joint rows (union-find)
     std::vector<int> parent(nb_);
     for (int i = 0; i < nb_; ++i) parent[i] = i;
@@ -231,6 +239,12 @@ class DualProblem {
       group_of_[i] = g;
       groups_[g].bodies.push_back(i);
     }
+    for (const Group& group : groups_)
+      if (static_cast<int>(group.bodies.size()) > kMaxFoldedBodies) {
+        groups_.clear();
+        group_of_.clear();
+        return false;
+      }
     // a group's bodies in the order of their index in the run (the elements'), not of the
     // island's, which follows Bullet's arrays: a world rebuilt from a checkpoint then
     // factorises the same matrix in the same order, bit for bit
@@ -283,6 +297,7 @@ class DualProblem {
       group.impulse.resize(Mt[g].rows());
       group.velocity.resize(Mt[g].rows());
     }
+    return true;
   }
 
   int nb_, nc_, nj_all_, nj_ = 0;  // nj_: joint rows among the unknowns (0 when folded)
