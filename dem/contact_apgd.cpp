@@ -85,7 +85,7 @@ void row_products(const std::vector<Blocks<R>>& blocks, const double* free, cons
 // elements a side). The iteration then runs on the contacts alone, and each joint row's
 // impulse follows from the velocities, l = -(Jj v + b) / C. Stiff springs beside the
 // contacts were what the iteration converged slowly on: on islands of the 0.20 m lattices
-// the rows as unknowns took 180-350 steps to a merit of 1e-3, the folded form 36-68.
+// the rows as unknowns took 180-350 steps to a merit of 1e-3, the folded form 5-49.
 // A rigid joint row (compliance 0) cannot be folded, nor a lattice of more than
 // kMaxFoldedBodies elements be inverted every step: then every row stays an unknown.
 class DualProblem {
@@ -133,8 +133,8 @@ class DualProblem {
       if (!folded_) {
         scale_(3 * nc_ + r) = 1.0 / (joints_.back().diagonal[0] + from.compliance);
         rows_free_(3 * nc_ + r) = from.bias;
+        compliance_(r) = from.compliance;
       }
-      if (!folded_) compliance_(r) = from.compliance;
       all_compliance_(r) = from.compliance;
       bias_(r) = from.bias;
     }
