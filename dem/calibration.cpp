@@ -18,22 +18,26 @@ double measure_plate_compliance(const Scene& scene) {
   return *r.value / 1e3;  // mm/N -> m/N
 }
 
+namespace {
+// one plate run with the calibrated key (a field of `scene`) at `value`, recorded in result.points
+CalibrationPoint evaluate(Scene& scene, double& key, double value, double finite_factor, CalibrationResult& result) {
+  key = value;
+  const double w = measure_plate_compliance(scene);
+  result.points.push_back(CalibrationPoint{value, w, modulus_from_compliance(scene, w, finite_factor)});
+  return result.points.back();
+}
+}  // namespace
+
 CalibrationResult calibrate_cfm(const Scene& plate_scene, double target, double tolerance, double cfm_min,
                                 double cfm_max, int max_evaluations) {
   CalibrationResult result;
   result.key = "fracture.cfm";
   Scene scene = plate_scene;
   const double factor = plate_finite_factor(scene);
-  auto evaluate = [&](double cfm) {
-    scene.fracture.cfm = cfm;
-    const double w = measure_plate_compliance(scene);
-    const CalibrationPoint p{cfm, w, modulus_from_compliance(scene, w, factor)};
-    result.points.push_back(p);
-    return p;
-  };
+  auto evaluate_at = [&](double cfm) { return evaluate(scene, scene.fracture.cfm, cfm, factor, result); };
 
   // a larger CFM is a softer joint: E falls as the CFM grows
-  const CalibrationPoint stiff = evaluate(cfm_min);
+  const CalibrationPoint stiff = evaluate_at(cfm_min);
   if (stiff.modulus < target) {
     result.note = fmt::format("even the stiffest joints (fracture.cfm = {:g}) give E = {:.1f} MPa < {:.1f} MPa at "
                               "{} joint iterations: the plate's softness is PGS non-convergence; raise "
@@ -43,7 +47,7 @@ CalibrationResult calibrate_cfm(const Scene& plate_scene, double target, double 
     result.modulus = stiff.modulus;
     return result;
   }
-  const CalibrationPoint soft = evaluate(cfm_max);
+  const CalibrationPoint soft = evaluate_at(cfm_max);
   if (soft.modulus > target) {
     result.note = fmt::format("even fracture.cfm = {:g} gives E = {:.1f} MPa > {:.1f} MPa", cfm_max,
                               soft.modulus / 1e6, target / 1e6);
@@ -56,7 +60,7 @@ CalibrationResult calibrate_cfm(const Scene& plate_scene, double target, double 
   CalibrationPoint best = std::abs(stiff.modulus - target) < std::abs(soft.modulus - target) ? stiff : soft;
   for (int i = 2; i < max_evaluations && std::abs(best.modulus - target) > tolerance * target; ++i) {
     const double mid = (lo + hi) / 2;
-    const CalibrationPoint p = evaluate(std::pow(10.0, mid));
+    const CalibrationPoint p = evaluate_at(std::pow(10.0, mid));
     if (std::abs(p.modulus - target) < std::abs(best.modulus - target)) best = p;
     (p.modulus > target ? lo : hi) = mid;
   }
@@ -78,18 +82,14 @@ CalibrationResult calibrate_stiffness_scale(const Scene& plate_scene, double tar
   result.key = "fracture.stiffness_scale";
   Scene scene = plate_scene;
   const double factor = plate_finite_factor(scene);
-  auto evaluate = [&](double scale) {
-    scene.fracture.stiffness_scale = scale;
-    const double w = measure_plate_compliance(scene);
-    const CalibrationPoint p{scale, w, modulus_from_compliance(scene, w, factor)};
-    result.points.push_back(p);
-    return p;
+  auto evaluate_at = [&](double scale) {
+    return evaluate(scene, scene.fracture.stiffness_scale, scale, factor, result);
   };
   // The modulus inferred from the centre deflection grows with the scale, nearly in
   // proportion (the water under the plate and the elements' rigidity make it a little less:
   // 0.87 times the scale gave 0.90 times the modulus on a 1.5 m plate). The first step
   // assumes proportion; later ones take the secant through the last two points.
-  CalibrationPoint best = evaluate(plate_scene.fracture.stiffness_scale);
+  CalibrationPoint best = evaluate_at(plate_scene.fracture.stiffness_scale);
   for (int i = 1; i < max_evaluations && std::abs(best.modulus - target) > tolerance * target; ++i) {
     const CalibrationPoint& last = result.points.back();
     if (!(last.modulus > 0)) break;
@@ -100,7 +100,7 @@ CalibrationResult calibrate_stiffness_scale(const Scene& plate_scene, double tar
       if (slope > 0) next = last.value + (target - last.modulus) / slope;
     }
     if (!(next > 0)) break;
-    const CalibrationPoint p = evaluate(next);
+    const CalibrationPoint p = evaluate_at(next);
     if (std::abs(p.modulus - target) < std::abs(best.modulus - target)) best = p;
   }
   result.reached = std::abs(best.modulus - target) <= tolerance * target;

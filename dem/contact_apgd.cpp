@@ -102,11 +102,16 @@ class DualProblem {
     folded_ = soft && fold(p);  // also puts each folded body's v_free_t in body_velocity_
     nj_ = folded_ ? 0 : nj_all_;
     start_velocity_ = body_velocity_;
-    // the inverse masses the contacts' scaling sees: a folded body's block of Mt^-1
-    std::vector<Eigen::Matrix<double, 6, 6>> scaling = inv_mass_;
-    for (const Group& g : groups_)
-      for (std::size_t k = 0; k < g.bodies.size(); ++k)
-        scaling[g.bodies[k]] = g.inverse.block<6, 6>(6 * k, 6 * k);
+    // the inverse masses the contacts' scaling sees: a folded body's block of Mt^-1 (a copy
+    // only for islands with folded lattices; every island of every step pays this set-up)
+    std::vector<Eigen::Matrix<double, 6, 6>> folded_inv_mass;
+    if (!groups_.empty()) {
+      folded_inv_mass = inv_mass_;
+      for (const Group& g : groups_)
+        for (std::size_t k = 0; k < g.bodies.size(); ++k)
+          folded_inv_mass[g.bodies[k]] = g.inverse.block<6, 6>(6 * k, 6 * k);
+    }
+    const auto& scaling = groups_.empty() ? inv_mass_ : folded_inv_mass;
     // J kept as each contact's 3x6 blocks (each joint row's 1x6) on its one or two
     // bodies (Blocks): this set-up, paid on every island of every step, is a copy
     contacts_.reserve(nc_);

@@ -25,40 +25,10 @@ from .spec import ROOT
 SUPERSAMPLE = 4
 
 
-def square_layout(rng, nx, nz, cell, concentration, touching=0.3):
-    """Floes of about one size at a chosen concentration: in each cell of the grid (m) a
-    quadrilateral to octagon near a square of side sqrt(concentration / 0.97) cell, its
-    corners moved by up to 8 % and its edges' midpoints by up to 4 % of the cell, turned
-    by up to 10 degrees, and kept inside its cell (a gap of at least 2 % of a cell to the
-    next floe, unless they touch); a `touching` share of them reach across to their right-hand
-    neighbour's cell edge over 30 % of it, so the photo shows both as one segment."""
-    side = min(0.98, np.sqrt(concentration / 0.97)) * cell
-    touch_right = rng.random((nx, nz)) < touching
-    touch_right[-1, :] = False
-    floes = []
-    for i in range(nx):
-        for k in range(nz):
-            h = side / 2
-            corners = np.array([[-h, -h], [h, -h], [h, h], [-h, h]]) + rng.uniform(-0.08, 0.08, (4, 2)) * cell
-            mids = 0.5 * (corners + np.roll(corners, -1, axis=0)) + rng.uniform(-0.04, 0.0, (4, 2)) * cell * np.sign(
-                0.5 * (corners + np.roll(corners, -1, axis=0)))
-            pts = np.vstack([corners, mids[rng.random(4) < 0.5]])
-            a = np.radians(rng.uniform(-10, 10))
-            pts = pts @ np.array([[np.cos(a), np.sin(a)], [-np.sin(a), np.cos(a)]])
-            pts = np.clip(pts, -0.49 * cell, 0.49 * cell)  # inside its cell: floes never overlap
-            for sgn, touches in ((0.5, touch_right[i, k]), (-0.5, i > 0 and touch_right[i - 1, k])):
-                if touches:
-                    z = 0.15 * cell
-                    pts = np.vstack([pts, [[sgn * cell, -z], [sgn * cell, z]]])
-            hull = pts[ConvexHull(pts).vertices]
-            floes.append(hull + np.array([(i + 0.5) * cell, (k + 0.5) * cell]))
-    return floes
-
-
-def known_layout(rng, nx, nz, cell, touching=0.3):
-    """Irregular convex floes on a grid of cells (m): each the hull of 12-24 random points
-    in its cell; a `touching` share of the cells' floes share a stretch of edge with
-    their right-hand neighbour (both reach the cell boundary over the same z range), so
+def grid_layout(rng, nx, nz, cell, floe_points, touching=0.3):
+    """One convex floe per cell of a grid (m): the hull of floe_points(rng, cell) (points
+    about the cell's centre); a `touching` share of the floes share a stretch of edge with
+    their right-hand neighbour (both reach the cell boundary over the same 30 % of it), so
     the photo shows them as one bright segment that the watershed must split. Returns a
     list of (n x 2) polygons in the tank frame."""
     touch_right = rng.random((nx, nz)) < touching
@@ -66,7 +36,7 @@ def known_layout(rng, nx, nz, cell, touching=0.3):
     floes = []
     for i in range(nx):
         for k in range(nz):
-            pts = rng.uniform(-0.47, 0.47, size=(rng.integers(12, 25), 2)) * cell
+            pts = floe_points(rng, cell)
             for side, touches in ((0.5, touch_right[i, k]), (-0.5, i > 0 and touch_right[i - 1, k])):
                 if touches:  # a shared stretch of the cell boundary, the same for both floes
                     z = 0.15 * cell
@@ -74,6 +44,32 @@ def known_layout(rng, nx, nz, cell, touching=0.3):
             hull = pts[ConvexHull(pts).vertices]
             floes.append(hull + np.array([(i + 0.5) * cell, (k + 0.5) * cell]))
     return floes
+
+
+def square_layout(rng, nx, nz, cell, concentration, touching=0.3):
+    """Floes of about one size at a chosen concentration (grid_layout): in each cell a
+    quadrilateral to octagon near a square of side sqrt(concentration / 0.97) cell, its
+    corners moved by up to 8 % and its edges' midpoints by up to 4 % of the cell, turned
+    by up to 10 degrees, and kept inside its cell (a gap of at least 2 % of a cell to the
+    next floe, unless they touch)."""
+    h = min(0.98, np.sqrt(concentration / 0.97)) * cell / 2
+
+    def points(rng, cell):
+        corners = np.array([[-h, -h], [h, -h], [h, h], [-h, h]]) + rng.uniform(-0.08, 0.08, (4, 2)) * cell
+        mids = 0.5 * (corners + np.roll(corners, -1, axis=0))
+        mids = mids + rng.uniform(-0.04, 0.0, (4, 2)) * cell * np.sign(mids)  # inward
+        pts = np.vstack([corners, mids[rng.random(4) < 0.5]])
+        a = np.radians(rng.uniform(-10, 10))
+        pts = pts @ np.array([[np.cos(a), np.sin(a)], [-np.sin(a), np.cos(a)]])
+        return np.clip(pts, -0.49 * cell, 0.49 * cell)  # inside its cell: floes never overlap
+
+    return grid_layout(rng, nx, nz, cell, points, touching)
+
+
+def known_layout(rng, nx, nz, cell, touching=0.3):
+    """Irregular convex floes (grid_layout): each the hull of 12-24 random points in its cell."""
+    return grid_layout(rng, nx, nz, cell,
+                       lambda rng, cell: rng.uniform(-0.47, 0.47, size=(rng.integers(12, 25), 2)) * cell, touching)
 
 
 def render(floes, width_m, height_m, m_per_px, scheme, rng):
