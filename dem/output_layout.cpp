@@ -94,7 +94,8 @@ H5::CompType fracture_event_mem_type() {
   return type;
 }
 
-OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const std::vector<BodyOutline>& outlines) {
+OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const std::vector<BodyOutline>& outlines,
+                                    const std::vector<JointRecord>& joints) {
   OutputDatasets d;
   d.series.resize(series_columns().size());
   // metadata first: a file killed at any later point says what run it belongs to
@@ -141,6 +142,22 @@ OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const 
   schema_fixed(file, "/bodies/thickness", f8, H5::PredType::NATIVE_DOUBLE, {nb}, thickness.data());
   schema_fixed(file, "/bodies/vertex_offset", H5::PredType::STD_I64LE, H5::PredType::NATIVE_INT64, {nb + 1}, offset.data());
   schema_fixed(file, "/bodies/vertices", f8, H5::PredType::NATIVE_DOUBLE, {nv, 2}, vertices.data());
+
+  // the joints of breakable floes (all of them from the start: dormant lattices' joints exist too)
+  const hsize_t nj = joints.size();
+  std::vector<int> joint_bodies, joint_floe, joint_index;
+  std::vector<double> joint_midpoint;
+  for (const JointRecord& j : joints) {
+    joint_bodies.insert(joint_bodies.end(), {j.body_a, j.body_b});
+    joint_floe.push_back(j.floe);
+    joint_index.push_back(j.index);
+    joint_midpoint.insert(joint_midpoint.end(), {j.midpoint_a.x(), j.midpoint_a.y(), j.midpoint_a.z()});
+  }
+  const H5::DataType& i4 = H5::PredType::STD_I32LE;
+  schema_fixed(file, "/joints/bodies", i4, H5::PredType::NATIVE_INT, {nj, 2}, joint_bodies.data());
+  schema_fixed(file, "/joints/floe", i4, H5::PredType::NATIVE_INT, {nj}, joint_floe.data());
+  schema_fixed(file, "/joints/index", i4, H5::PredType::NATIVE_INT, {nj}, joint_index.data());
+  schema_fixed(file, "/joints/midpoint", f8, H5::PredType::NATIVE_DOUBLE, {nj, 3}, joint_midpoint.data());
 
   // snapshots: chunks of whole snapshots, sized so that a chunk stays near kSnapshotChunkBytes
   const std::size_t snapshot_bytes = std::max<std::size_t>(bodies, 1) * 4 * sizeof(double);

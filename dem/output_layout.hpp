@@ -25,7 +25,8 @@ struct OutputDatasets {
 
 /// Lays out `file` (new and empty) for a run with one body per outline, flushing it at the end
 /// so that a process killed from here on leaves a file that says what run it belongs to.
-OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const std::vector<BodyOutline>& outlines);
+OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const std::vector<BodyOutline>& outlines,
+                                    const std::vector<JointRecord>& joints);
 
 /// The growing datasets of `file`, laid out by create_output_layout and written up to some
 /// row: a run resumed from a checkpoint appends after them.

@@ -21,6 +21,16 @@ struct BodyOutline {
   double thickness;                       // m
 };
 
+/// A joint of a breakable floe as it is stored under /joints: the two bodies it glues
+/// (output body indices, the /bodies order) and where, so that a reader can draw the
+/// glued face at any snapshot and mark it once /fracture/events says it broke.
+struct JointRecord {
+  int body_a, body_b;          // output body indices
+  int floe;                    // floe id (as /bodies/floe_id)
+  int index;                   // joint index within its floe (as the `joint` field of /fracture/events)
+  Eigen::Vector3d midpoint_a;  // m, joint midpoint in body A's frame
+};
+
 /// Run metadata written under /meta when the file is created.
 struct RunMeta {
   std::string scenario_text;   // resolved scenario (TOML text, overrides applied)

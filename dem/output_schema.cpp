@@ -62,6 +62,14 @@ const std::vector<DatasetEntry>& other_datasets() {
       {"/bodies/vertex_offset", "nb + 1", Element::i8, "1",
        "outline of body i is vertices[vertex_offset[i]:vertex_offset[i+1]]"},
       {"/bodies/vertices", "nv x 2", Element::f8, "m", "outline vertices in the body frame (x, z)"},
+      {"/joints/bodies", "nj x 2", Element::i4, "1",
+       "the two bodies (rows of /bodies) each joint of a breakable floe glues; empty for rigid floes"},
+      {"/joints/floe", "nj", Element::i4, "1", "floe id of each joint"},
+      {"/joints/index", "nj", Element::i4, "1",
+       "joint index within its floe: a break in /fracture/events names its joint by (floe, joint)"},
+      {"/joints/midpoint", "nj x 3", Element::f8, "m",
+       "joint midpoint in the frame of its first body: the glued face is the edge of that body's outline "
+       "nearest to it"},
       {"/snapshots/time", "k", Element::f8, "s", "snapshot time (every output.snapshot_interval)"},
       {"/snapshots/position", "k x nb x 3", Element::f8, "m", "body origin, tank frame"},
       {"/snapshots/orientation", "k x nb x 4", Element::f8, "1",
@@ -169,14 +177,17 @@ std::string output_markdown() {
       "## HDF5 file\n\n"
       "Every dataset has `units` (\"1\" for counts, flags and ratios) and `description` attributes.\n"
       "Shapes: n = steps, nb = bodies (rigid floes and ice elements), nv = outline vertices,\n"
-      "k = snapshots, e = breaks, f = layout floes. The file is written in the HDF5 1.8 format and\n"
-      "flushed every few seconds of wall time, so it stays readable after a crash or a kill.\n\n"
+      "nj = joints of breakable floes, k = snapshots, e = breaks, f = layout floes. The file is\n"
+      "written in the HDF5 1.8 format and flushed every few seconds of wall time, so it stays\n"
+      "readable after a crash or a kill. `scripts/xdmf_snapshots.py OUT.h5` makes a view of the\n"
+      "snapshots for ParaView, with the joints' faces, broken or not, beside the floes\n"
+      "(docs/user/sweeps.md).\n\n"
       "### Per-step series\n\n"
       "| path | shape | type | unit | meaning |\n|---|---|---|---|---|\n";
   for (const SeriesColumn& c : series_columns())
     md += fmt::format("| `{}` | {} | {} | {} | {} |\n", c.path, c.width == 1 ? "n" : fmt::format("n x {}", c.width),
                       element_name(c.element), c.unit, cell(c.description));
-  md += "\n### Bodies, snapshots and breaks\n\n| path | shape | type | unit | meaning |\n|---|---|---|---|---|\n";
+  md += "\n### Bodies, joints, snapshots and breaks\n\n| path | shape | type | unit | meaning |\n|---|---|---|---|---|\n";
   for (const DatasetEntry& e : other_datasets())
     md += fmt::format("| `{}` | {} | {} | {} | {} |\n", e.path, e.shape, element_name(e.element), e.unit,
                       cell(e.description));

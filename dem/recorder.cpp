@@ -209,8 +209,8 @@ struct Recorder::Impl {
   }
 };
 
-Recorder::Recorder(const std::string& path, const RunMeta& meta,
-                   const std::vector<BodyOutline>& bodies)
+Recorder::Recorder(const std::string& path, const RunMeta& meta, const std::vector<BodyOutline>& bodies,
+                   const std::vector<JointRecord>& joints)
     : impl_(std::make_unique<Impl>()) {
   impl_->path = path;
   // HDF5's own error printing off for the process: every failure becomes one message of ours
@@ -232,7 +232,7 @@ Recorder::Recorder(const std::string& path, const RunMeta& meta,
   }
   // lay it out
   try {
-    impl_->data = create_output_layout(*impl_->file, meta, bodies);
+    impl_->data = create_output_layout(*impl_->file, meta, bodies, joints);
     impl_->meta = std::make_unique<H5::Group>(impl_->file->openGroup("/meta"));
     impl_->bodies = bodies.size();
   } catch (const H5::Exception& e) {

@@ -38,10 +38,11 @@ class Recorder {
   /// Snapshot buffer size that triggers a block write, bytes.
   static constexpr std::size_t kSnapshotBufferBytes = std::size_t(4) << 20;
 
-  /// Creates (truncates) the file at `path`, writes /meta (status "running") and /bodies, and
-  /// creates the empty time-series datasets. The body order of `bodies` is the order of every
+  /// Creates (truncates) the file at `path`, writes /meta (status "running"), /bodies and
+  /// /joints (`joints`' bodies index `bodies`), and creates the empty time-series datasets. The body order of `bodies` is the order of every
   /// snapshot. Throws std::runtime_error naming the path if the file cannot be created.
-  Recorder(const std::string& path, const RunMeta& meta, const std::vector<BodyOutline>& bodies);
+  Recorder(const std::string& path, const RunMeta& meta, const std::vector<BodyOutline>& bodies,
+           const std::vector<JointRecord>& joints = {});
 
   /// Opens the output file at `path`, written by an earlier Recorder up to some row (a
   /// checkpoint's copy of a run's output), to append after its rows: a resumed run. Sets /meta

@@ -66,6 +66,20 @@ std::vector<BodyOutline> body_outlines(const Scene& scene, const World& world) {
   return out;
 }
 
+// every joint of a breakable floe, its bodies as output body indices (the order of
+// body_outlines: World::floes() without the stand-ins)
+std::vector<JointRecord> joint_records(const World& world) {
+  std::vector<int> output_index(world.floes().size(), -1);
+  int next = 0;
+  for (std::size_t i = 0; i < world.floes().size(); ++i)
+    if (!world.floes()[i].stand_in) output_index[i] = next++;
+  std::vector<JointRecord> out;
+  out.reserve(world.joints().size());
+  for (const IceJoint& j : world.joints())
+    out.push_back(JointRecord{output_index[j.body_a], output_index[j.body_b], j.floe, j.index, j.midpoint_a});
+  return out;
+}
+
 std::vector<BodyPose> body_poses(const World& world) {
   std::vector<BodyPose> poses;
   poses.reserve(world.floes().size());
@@ -243,7 +257,8 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   // a resumed run appends to its output as the checkpoint left it (its layout attributes too)
   std::unique_ptr<Recorder> record_to =
       options.resume ? std::make_unique<Recorder>(options.output, Recorder::Reopen{})
-                     : std::make_unique<Recorder>(options.output, run_meta(scene, options), body_outlines(scene, *state.world));
+                     : std::make_unique<Recorder>(options.output, run_meta(scene, options), body_outlines(scene, *state.world),
+                                                 joint_records(*state.world));
   Recorder& recorder = *record_to;
   if (!options.resume) describe_output(scene, layout, recorder);
 

@@ -14,7 +14,7 @@ ICEDEM_PACKAGES=(
   libfclib-dev libsiconos-numerics-dev libsuitesparse-dev
   python3-numpy python3-h5py python3-matplotlib
   python3-scipy python3-skimage python3-pil parallel slurm-wlm munge procps
-  openfoam
+  openfoam python3-paraview
 )
 
 # install missing packages (as root, or through sudo), once

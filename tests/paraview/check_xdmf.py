@@ -1,7 +1,9 @@
 """Run by ParaView's pvpython: open an XDMF file with ParaView's XDMF reader and
-check its time steps, cells and the floe_id field against what the writer says.
+check its time steps, cells and the floe_id field against what the writer says;
+for a run with breakable floes also the joints' block: its cells, and how many of
+them are broken at the first and at the last time step.
 
-    pvpython check_xdmf.py RUN.xdmf STEPS CELLS FLOES
+    pvpython check_xdmf.py RUN.xdmf STEPS CELLS FLOES [JOINTS BROKEN_FIRST BROKEN_LAST]
 """
 import sys
 
@@ -9,18 +11,51 @@ from paraview import servermanager
 from paraview.simple import UpdatePipeline, XDMFReader
 
 path, steps, cells, floes = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+joints = [int(a) for a in sys.argv[5:8]] if len(sys.argv) > 5 else None
 reader = XDMFReader(FileNames=[path])
 reader.UpdatePipelineInformation()
 times = list(reader.TimestepValues)
 assert len(times) == steps, f"{len(times)} time steps, expected {steps}"
-for t in (times[0], times[-1]):
+
+
+def blocks(data):
+    """The grids of one time step by name (a lone grid is 'floes')."""
+    if not data.IsA("vtkMultiBlockDataSet"):
+        return {"floes": data}
+    out = {}
+    for i in range(data.GetNumberOfBlocks()):
+        # the reader names a block by its grid and time index: "joints[8]"
+        name = data.GetMetaData(i).Get(data.NAME()).split("[")[0] if data.HasMetaData(i) else f"block{i}"
+        block = data.GetBlock(i)
+        if block is not None and block.IsA("vtkMultiBlockDataSet"):
+            out.update(blocks(block))
+        elif block is not None:
+            out[name] = block
+    return out
+
+
+for t, broken_expected in ((times[0], joints[1] if joints else None), (times[-1], joints[2] if joints else None)):
     UpdatePipeline(time=t, proxy=reader)
-    info = reader.GetDataInformation()
-    assert info.GetNumberOfCells() == cells, f"t = {t}: {info.GetNumberOfCells()} cells, expected {cells}"
-    data = servermanager.Fetch(reader)
-    block = data.GetBlock(0) if data.IsA("vtkMultiBlockDataSet") else data
-    floe_id = block.GetCellData().GetArray("floe_id")
+    grids = blocks(servermanager.Fetch(reader))
+    floe_grid = grids["floes"]
+    assert floe_grid.GetNumberOfCells() == cells, f"t = {t}: {floe_grid.GetNumberOfCells()} cells, expected {cells}"
+    floe_id = floe_grid.GetCellData().GetArray("floe_id")
     assert floe_id is not None, "no floe_id cell data"
     lo, hi = floe_id.GetRange()
     assert (lo, hi) == (0, floes - 1), f"floe_id range {(lo, hi)}, expected (0, {floes - 1})"
-print(f"ParaView read {path}: {steps} time steps, {cells} cells, floe ids 0-{floes - 1}")
+    if joints is None:
+        assert "joints" not in grids, "a run without joints has no joints block"
+        continue
+    assert "joints" in grids, f"t = {t}: no joints block (blocks: {sorted(grids)})"
+    jg = grids["joints"]
+    assert jg.GetNumberOfCells() == joints[0], f"t = {t}: {jg.GetNumberOfCells()} joint cells, expected {joints[0]}"
+    for name in ("broken", "failure_mode", "break_time", "floe_id"):
+        assert jg.GetCellData().GetArray(name) is not None, f"t = {t}: no joint cell data '{name}'"
+    broken = jg.GetCellData().GetArray("broken")
+    count = sum(int(broken.GetValue(i)) for i in range(broken.GetNumberOfTuples()))
+    assert count == broken_expected, f"t = {t}: {count} broken joints, expected {broken_expected}"
+    modes = jg.GetCellData().GetArray("failure_mode")
+    for i in range(modes.GetNumberOfTuples()):
+        assert (modes.GetValue(i) >= 0) == bool(broken.GetValue(i)), f"t = {t}: joint {i}: mode and state disagree"
+joined = f", {joints[0]} joints, {joints[2]} broken at the end" if joints else ""
+print(f"ParaView read {path}: {steps} time steps, {cells} cells, floe ids 0-{floes - 1}{joined}")

@@ -4,8 +4,16 @@ prisms in the tank frame (top and bottom faces, m), the XDMF a temporal
 collection of grids over them with each body's floe id and awake flag as cell
 data. Open RUN.xdmf in ParaView (XDMF reader).
 
+A run with breakable floes gets a second grid per snapshot, "joints": the glued
+face of every joint (a quadrilateral across the ice's thickness, on its first
+element's side), with cell data `broken` (1 once /fracture/events has its break),
+`failure_mode` (the mode code of its break, -1 while intact; the names are in the
+XDMF's Information and in /fracture/events' mode_names), `break_time` (s, -1 if
+it never broke) and `floe_id`. Threshold on `broken` to see the cracks.
+
     scripts/xdmf_snapshots.py RUN.h5
 """
+import html
 import os
 import sys
 
@@ -20,6 +28,43 @@ def quat_to_matrix(q):
         [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
         [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
     ])
+
+
+def nearest_edge(outline, point):
+    """The edge (two vertices) of a closed polygon nearest to a point (x, z)."""
+    a = outline
+    b = np.roll(outline, -1, axis=0)
+    ab = b - a
+    t = np.clip(np.einsum("ij,ij->i", point - a, ab) / np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-300), 0, 1)
+    d = np.linalg.norm(a + t[:, None] * ab - point, axis=1)
+    i = int(np.argmin(d))
+    return a[i], b[i]
+
+
+def joint_faces(h, off, verts, thick):
+    """Per joint: its glued face as 4 points (x, y, z) in its first body's frame, its first
+    body, floe id, break time (-1: never) and failure mode code (-1: never)."""
+    if "/joints/bodies" not in h or len(h["/joints/bodies"]) == 0:
+        return None
+    bodies = h["/joints/bodies"][:]
+    floe = h["/joints/floe"][:]
+    index = h["/joints/index"][:]
+    mid = h["/joints/midpoint"][:]
+    row = {(int(f), int(i)): r for r, (f, i) in enumerate(zip(floe, index))}
+    break_time = np.full(len(bodies), -1.0)
+    mode = np.full(len(bodies), -1, dtype=np.int32)
+    for e in h["/fracture/events"][:]:
+        r = row[(int(e["floe"]), int(e["joint"]))]
+        if break_time[r] < 0:
+            break_time[r], mode[r] = e["time"], e["mode"]
+    quads = np.empty((len(bodies), 4, 3))
+    for r, (a, _) in enumerate(bodies):
+        p, q = nearest_edge(verts[off[a]:off[a + 1]], mid[r, [0, 2]])
+        half = thick[a] / 2
+        quads[r] = [[p[0], half, p[1]], [q[0], half, q[1]], [q[0], -half, q[1]], [p[0], -half, p[1]]]
+    names = h["/fracture/events"].attrs.get("mode_names", "")
+    names = names.decode() if isinstance(names, bytes) else str(names)
+    return quads, bodies[:, 0], floe, break_time, mode, names
 
 
 def write_views(path):
@@ -51,7 +96,14 @@ def write_views(path):
             topo += [3, n] + list(range(base + n, base + 2 * n))
             base += 2 * n
         npts = base
+        joints = joint_faces(h, off, verts, thick)
         with h5py.File(views, "w") as out:
+            if joints is not None:
+                quads, first, jfloe, break_time, mode, mode_names = joints
+                nj = len(first)
+                out["joint_topology"] = np.arange(4 * nj, dtype=np.int64).reshape(nj, 4)
+                out["joint_floe_id"] = jfloe.astype(np.int32)
+                out["joint_break_time"] = break_time
             out["topology"] = np.asarray(topo, dtype=np.int64)
             out["floe_id"] = np.repeat(floe, 2).astype(np.int32)
             for k in range(len(times)):
@@ -66,24 +118,54 @@ def write_views(path):
                         i += len(face)
                 out[f"points/{k}"] = pts
                 out[f"awake/{k}"] = np.repeat(h["/snapshots/awake"][k], 2).astype(np.int32)
+                if joints is not None:
+                    R = np.array([quat_to_matrix(qb) for qb in q[first]])  # nj x 3 x 3
+                    out[f"joint_points/{k}"] = (np.einsum("jab,jpb->jpa", R, quads) + pos[first][:, None, :]).reshape(-1, 3)
+                    broken = (break_time >= 0) & (break_time <= times[k])
+                    out[f"joint_broken/{k}"] = broken.astype(np.int32)
+                    out[f"joint_failure_mode/{k}"] = np.where(broken, mode, -1).astype(np.int32)
     name = os.path.basename(views)
     cells = 2 * nb
-    grids = []
-    for k, t in enumerate(times):
-        grids.append(f"""      <Grid Name="t{k}" GridType="Uniform">
-        <Time Value="{t:.6g}"/>
-        <Topology TopologyType="Mixed" NumberOfElements="{cells}">
-          <DataItem Dimensions="{len(topo)}" NumberType="Int" Precision="8" Format="HDF">{name}:/topology</DataItem>
+
+    def attribute(label, count, item, kind="Int", precision=4):
+        return f"""        <Attribute Name="{label}" AttributeType="Scalar" Center="Cell">
+          <DataItem Dimensions="{count}" NumberType="{kind}" Precision="{precision}" Format="HDF">{name}:/{item}</DataItem>
+        </Attribute>"""
+
+    def grid(label, time, topology, geometry, attributes, info=""):
+        return f"""      <Grid Name="{label}" GridType="Uniform">
+{time}{info}        <Topology {topology}
         </Topology>
         <Geometry GeometryType="XYZ">
-          <DataItem Dimensions="{npts} 3" NumberType="Float" Precision="8" Format="HDF">{name}:/points/{k}</DataItem>
+          <DataItem {geometry}
         </Geometry>
-        <Attribute Name="floe_id" AttributeType="Scalar" Center="Cell">
-          <DataItem Dimensions="{cells}" NumberType="Int" Precision="4" Format="HDF">{name}:/floe_id</DataItem>
-        </Attribute>
-        <Attribute Name="awake" AttributeType="Scalar" Center="Cell">
-          <DataItem Dimensions="{cells}" NumberType="Int" Precision="4" Format="HDF">{name}:/awake/{k}</DataItem>
-        </Attribute>
+{chr(10).join(attributes)}
+      </Grid>"""
+
+    grids = []
+    for k, t in enumerate(times):
+        time = f'        <Time Value="{t:.6g}"/>\n'
+        floes = grid("floes" if joints is not None else f"t{k}", "" if joints is not None else time,
+                     f'TopologyType="Mixed" NumberOfElements="{cells}">\n          <DataItem Dimensions="{len(topo)}" '
+                     f'NumberType="Int" Precision="8" Format="HDF">{name}:/topology</DataItem>',
+                     f'Dimensions="{npts} 3" NumberType="Float" Precision="8" Format="HDF">{name}:/points/{k}</DataItem>',
+                     [attribute("floe_id", cells, "floe_id"), attribute("awake", cells, f"awake/{k}")])
+        if joints is None:
+            grids.append(floes)
+            continue
+        # with joints, a spatial collection per time: the floes and the joints' faces
+        faces = grid("joints", "", f'TopologyType="Quadrilateral" NumberOfElements="{nj}">\n          <DataItem '
+                     f'Dimensions="{nj} 4" NumberType="Int" Precision="8" Format="HDF">{name}:/joint_topology</DataItem>',
+                     f'Dimensions="{4 * nj} 3" NumberType="Float" Precision="8" Format="HDF">{name}:/joint_points/{k}'
+                     '</DataItem>',
+                     [attribute("broken", nj, f"joint_broken/{k}"),
+                      attribute("failure_mode", nj, f"joint_failure_mode/{k}"),
+                      attribute("break_time", nj, "joint_break_time", "Float", 8),
+                      attribute("floe_id", nj, "joint_floe_id")],
+                     f'        <Information Name="failure_mode" Value="{html.escape(mode_names)}"/>\n')
+        grids.append(f"""      <Grid Name="t{k}" GridType="Collection" CollectionType="Spatial">
+{time}{floes}
+{faces}
       </Grid>""")
     with open(stem + ".xdmf", "w") as f:
         f.write(f"""<?xml version="1.0" ?>
@@ -95,7 +177,8 @@ def write_views(path):
   </Domain>
 </Xdmf>
 """)
-    print(f"wrote {stem}.xdmf and {views} ({len(times)} snapshots, {nb} bodies)")
+    joined = f", {nj} joints" if joints is not None else ""
+    print(f"wrote {stem}.xdmf and {views} ({len(times)} snapshots, {nb} bodies{joined})")
 
 
 def main(argv=None):
