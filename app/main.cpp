@@ -32,7 +32,6 @@
 #include "dem/cone_geometry.hpp"
 #include "dem/constants.hpp"
 #include "dem/errors.hpp"
-#include "dem/ice_lattice.hpp"
 #include "dem/initial_state.hpp"
 #include "dem/output_lock.hpp"
 #include "dem/output_schema.hpp"
@@ -41,7 +40,6 @@
 #include "dem/scene_builder.hpp"
 #include "dem/simulation.hpp"
 #include "dem/step_size_advice.hpp"
-#include "dem/world_builder.hpp"
 
 using namespace icedem;
 
@@ -210,13 +208,8 @@ int info_command(const std::string& output) {
 
 int check_command(const std::string& scenario_path, const std::vector<std::string>& sets) {
   const Scene scene = load_scene(scenario_path, sets);
-  const Layout layout = scene_layout(scene);  // also validates layout files and concentration
-  // breakable floes must be cut into elements (rectangles a whole number of elements across)
-  for (const Floe& floe : layout.floes)
-    if (is_breakable(scene, floe.shape)) {
-      double yaw = 0;
-      floe_lattice(floe.shape, scene.fracture.element_size, yaw);
-    }
+  // also validates layout files, concentration, and that breakable floes cut into elements
+  const Layout layout = scene_layout(scene);
   std::cout << fmt::format("{}: ok ({} floes, concentration {:.2f} %, {:.0f} s at dt {} s)\n", scenario_path,
                            layout.floes.size(), 100 * layout.achieved_concentration, scene.time.duration,
                            scene.time.dt);

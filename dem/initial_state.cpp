@@ -10,6 +10,7 @@
 #include "dem/activation.hpp"
 #include "dem/cone_geometry.hpp"
 #include "dem/errors.hpp"
+#include "dem/ice_lattice.hpp"
 #include "dem/step.hpp"
 #include "dem/world_builder.hpp"
 
@@ -148,6 +149,18 @@ Layout scene_layout(const Scene& scene) {
     }
   }
   refuse_floes_in_structure(scene, layout.floes);
+  // breakable floes must cut into elements (rectangles a whole number of elements across):
+  // refused here, naming the input the floes came from, before anything is built
+  for (const Floe& floe : layout.floes)
+    if (is_breakable(scene, floe.shape)) {
+      double yaw = 0;
+      try {
+        floe_lattice(floe.shape, scene.fracture.element_size, yaw);
+      } catch (const InputError& e) {
+        throw InputError(fmt::format("{}: {}", scene.layout.file.empty() ? scene.source_path : scene.layout.file,
+                                     e.what()));
+      }
+    }
   return layout;
 }
 

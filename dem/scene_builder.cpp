@@ -30,8 +30,9 @@ int integer(const Scenario& sc, const std::string& path) {
 }
 
 
-// a count of elements that is a whole number (up to the decimals a scenario is written in)
-bool whole(double n) { return std::abs(n - std::round(n)) <= 1e-6; }
+// a count of elements that is a whole number (up to the decimals a scenario is written in),
+// at least one (a side far below an element rounds to 0)
+bool whole(double n) { return n >= 1 - 1e-6 && std::abs(n - std::round(n)) <= 1e-6; }
 
 // The value of a choice key as its Scene type. `names` maps every name the key table allows,
 // and no other, to its value: a name added to the table but not here (or the reverse) is a

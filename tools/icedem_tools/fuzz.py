@@ -1,7 +1,9 @@
 """Fuzz icedem's input handling: mutated scenario and layout files through
-`icedem check`, and a sample of the accepted scenarios through a short `icedem run`.
+`icedem check`, and samples of the accepted scenarios through a short `icedem run`,
+through runs whose outputs name their inputs, and through runs stopped by a signal.
 
-    scripts/fuzz [--mutations N] [--runs K] [--seed S] [--icedem PATH] [--out DIR] [--timeout S]
+    scripts/fuzz [--mutations N] [--runs K] [--guards G] [--signals S] [--seed S]
+                 [--icedem PATH] [--out DIR] [--timeout S]
 
 Each mutation takes a shipped scenario (scenarios/**/*.toml) or layout file
 (scenarios/examples/*.csv, and a JSON version of it) and changes it the way a user's
@@ -14,8 +16,17 @@ What counts:
 - check: exit 0 (accepted) or 2 (refused) with a message of at most 2 kB that names
   an input file (the mutated one, or the layout file a changed channel no longer
   holds) or the --set; anything else is a finding;
-- run (--runs of the accepted scenarios, 2 s of simulated time): exit 0, 2 or 3
-  (a numerical blow-up, named) with the output file readable and not "running";
+- run (--runs of the accepted scenarios, 2 s of simulated time): exit 0 or 3 (a
+  numerical blow-up, named) with the output file readable and not "running"; a
+  blow-up (3) of a scene `check` accepted without a warning is a finding;
+- guard (--guards of the accepted scenarios): a run whose `-o` or `--summary-json`
+  names the scenario, or whose `--summary-json` names its own `-o`, must be refused
+  (exit 2) with every input byte for byte as before;
+- signal (--signals of the accepted scenarios, 30 s of simulated time): SIGINT, SIGTERM
+  or SIGKILL after 0-2 s, during set-up or the run: exit 130 / 143 (or the run's own
+  code if it ended first; or death by the signal if it came before icedem started and
+  nothing was written), never a 0-byte output file, a file closed with a status
+  (SIGINT, SIGTERM) or one `icedem info` reads (SIGKILL);
 - a crash (a signal), an undocumented exit code, a hang (--timeout), a traceback-like
   message (HDF5 or JSON library text) is a finding. Findings are written to OUT
   (default a temporary directory) with the input that caused them.
@@ -24,6 +35,7 @@ Exit code: 0 with no crash and no hang, 1 otherwise (other findings are reported
 """
 import argparse
 import glob
+import hashlib
 import json
 import os
 import random
@@ -194,10 +206,83 @@ def judge_check(code, out, names):
     return None, False
 
 
+def digest(path):
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def guard_problems(icedem, scenario, timeout):
+    """Runs of `scenario` whose outputs name an input or each other: each must be refused
+    (exit 2) and leave the scenario as it was. Yields (problem, is severe, output)."""
+    before = digest(scenario)
+    h5 = scenario + ".guard.h5"
+    attempts = {
+        "-o names the scenario": ["-o", scenario],
+        "--summary-json names the scenario": ["-o", h5, "--summary-json", scenario],
+        "--summary-json names -o": ["-o", h5, "--summary-json", h5],
+    }
+    for what, args in attempts.items():
+        code, text = run([icedem, "run", scenario, "-q", "--set", "time.duration=0.1"] + args, timeout)
+        if code is None or code < 0 or code >= 128:
+            yield f"{what}: crash or hang (exit {code})", True, text
+        elif code != 2:
+            yield f"{what}: exit {code}, expected 2 (refused)", False, text
+        if digest(scenario) != before:
+            yield f"{what}: the scenario was overwritten", True, text
+            return
+        for p in (h5, h5 + ".checkpoint"):
+            if os.path.exists(p):
+                os.remove(p)
+
+
+def signal_problem(icedem, scenario, sig, delay, timeout):
+    """A 30 s run of `scenario` to a new output, sent `sig` after `delay` s.
+    Returns (problem or None, is severe, output)."""
+    h5 = scenario + ".signal.h5"
+    for p in (h5, h5 + ".checkpoint"):
+        if os.path.exists(p):
+            os.remove(p)
+    proc = subprocess.Popen([icedem, "run", scenario, "-q", "-o", h5, "--set", "time.duration=30"],
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
+    try:
+        proc.wait(timeout=delay)
+    except subprocess.TimeoutExpired:
+        proc.send_signal(sig)
+    try:
+        text, _ = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        return "hang after the signal", True, ""
+    code = proc.returncode
+    expected = {signal.SIGINT: 130, signal.SIGTERM: 143, signal.SIGKILL: -signal.SIGKILL}[sig]
+    problem, bad = None, False
+    if code == -sig and not os.path.exists(h5):
+        pass  # the signal came before icedem could answer it (starting up): it wrote nothing
+    elif code not in (0, 2, 3, expected):
+        problem, bad = f"exit {code}, expected {expected} (or the run's own 0, 2, 3)", code < 0 and code != expected
+    elif os.path.exists(h5) and os.path.getsize(h5) == 0:
+        problem = "a 0-byte output file"
+    elif os.path.exists(h5) and sig != signal.SIGKILL and code != 2:
+        status = results.status(h5)
+        if status not in ("complete", "failed", "interrupted"):
+            problem = f"output file status '{status}' after the signal"
+    elif os.path.exists(h5):
+        info, info_text = run([icedem, "info", h5], timeout)
+        if info not in (0, 2):  # 2: a file killed before its layout was written, named as unreadable
+            problem, bad = f"icedem info on the killed run's file: exit {info}", info is None or info < 0
+        text = info_text
+    for p in (h5, h5 + ".checkpoint"):
+        if os.path.exists(p):
+            os.remove(p)
+    return problem, bad, text
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--mutations", type=int, default=1000)
     ap.add_argument("--runs", type=int, default=20, help="accepted scenarios run for 2 s")
+    ap.add_argument("--guards", type=int, default=0, help="accepted scenarios run with outputs naming inputs")
+    ap.add_argument("--signals", type=int, default=0, help="accepted scenarios run and stopped by a signal")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--icedem", default=os.path.join(ROOT, "build", "dem", "icedem"))
     ap.add_argument("--out", help="where findings and their inputs go (default: a temporary directory)")
@@ -213,7 +298,7 @@ def main(argv=None):
     json_text = csv_to_json(csv_text)
     layout_scenario = os.path.join(ROOT, "scenarios", "examples", "floes_from_file.toml")
 
-    findings, severe, accepted = [], 0, []
+    findings, severe, accepted, check_text = [], 0, [], {}
     counts = {"scenario": 0, "csv": 0, "json": 0, "accepted": 0, "refused": 0}
     for i in range(a.mutations):
         target = rng.choices(["scenario", "csv", "json"], weights=[6, 2, 2])[0]
@@ -238,6 +323,7 @@ def main(argv=None):
             counts["accepted"] += 1
             if target == "scenario":
                 accepted.append(path)
+                check_text[path] = text_out
         elif code == 2:
             counts["refused"] += 1
         if problem:
@@ -245,7 +331,7 @@ def main(argv=None):
             keep = os.path.join(out, f"finding_{len(findings)}_{os.path.basename(path)}")
             shutil.copy(path, keep)
             findings.append((f"check {target} ({kind})", problem, keep, text_out.strip()[-300:]))
-        if not bad:
+        if not bad and path not in check_text:  # accepted scenarios are run below
             os.remove(path)
 
     for path in rng.sample(accepted, min(a.runs, len(accepted))):
@@ -257,24 +343,49 @@ def main(argv=None):
             problem, bad = "hang", True
         elif code < 0 or (code >= 128 and code != 130):
             problem, bad = f"crash (exit {code})", True
-        elif code not in (0, 2, 3):
-            problem, bad = f"exit {code} from run", False
-        elif code in (0, 3) and os.path.exists(h5):
+        elif code not in (0, 3):
+            problem, bad = f"exit {code} from run of a scene check accepted", False
+        elif os.path.exists(h5):
             status = results.status(h5)
             if status not in ("complete", "failed"):
                 problem, bad = f"output file status '{status}'", False
+            elif code == 3 and "warning" not in check_text[path]:
+                problem, bad = "a blow-up of a scene check accepted without a warning", False
         if problem:
             severe += bad
             keep = os.path.join(out, f"finding_{len(findings)}_{os.path.basename(path)}")
             shutil.copy(path, keep)
             findings.append(("run", problem, keep, text_out.strip()[-300:]))
-        for p in (h5, path):
+        for p in (h5, path + ".h5.checkpoint"):
             if os.path.exists(p):
                 os.remove(p)
 
+    def keep_finding(what, problem, path, tail, bad):
+        nonlocal severe
+        severe += bad
+        keep = os.path.join(out, f"finding_{len(findings)}_{os.path.basename(path)}")
+        shutil.copy(path, keep)
+        findings.append((what, problem, keep, tail.strip()[-300:]))
+
+    guards = rng.sample(accepted, min(a.guards, len(accepted)))
+    for path in guards:
+        for problem, bad, tail in guard_problems(a.icedem, path, a.timeout):
+            keep_finding("guard", problem, path, tail, bad)
+
+    signals = rng.sample(accepted, min(a.signals, len(accepted)))
+    for path in signals:
+        sig = rng.choice([signal.SIGINT, signal.SIGTERM, signal.SIGKILL])
+        delay = rng.uniform(0.0, 2.0)
+        problem, bad, tail = signal_problem(a.icedem, path, sig, delay, 4 * a.timeout)
+        if problem:
+            keep_finding(f"signal {sig.name} after {delay:.2f} s", problem, path, tail, bad)
+    for path in accepted:
+        os.remove(path)
+
     print(f"fuzz: {a.mutations} mutations (scenario {counts['scenario']}, layout CSV {counts['csv']}, "
           f"layout JSON {counts['json']}): {counts['accepted']} accepted, {counts['refused']} refused; "
-          f"{min(a.runs, len(accepted))} accepted scenarios run; {severe} crashes or hangs, "
+          f"{min(a.runs, len(accepted))} accepted scenarios run, {len(guards)} with outputs naming inputs, "
+          f"{len(signals)} stopped by a signal; {severe} crashes or hangs, "
           f"{len(findings) - severe} other findings (seed {a.seed})")
     for what, problem, keep, tail in findings:
         print(f"  {what}: {problem}: {keep}\n    {tail[:300]!r}")
