@@ -377,7 +377,10 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   ContactProblem problem = capture_problem(info);
   problem.island = report_.islands;
   MethodOptions options;
-  options.tolerance = settings_.merit_tolerance;
+  // a joint's load is its elements' relative velocity over its compliance: the contacts'
+  // error reaches the joints' failure ratios magnified (docs/model/convergence.md)
+  options.tolerance = problem.joints.empty() ? settings_.merit_tolerance
+                                             : std::min(settings_.merit_tolerance, settings_.joint_merit_tolerance);
   options.max_iterations = settings_.method_iterations;
   options.warm_start = true;  // from the rows' warm start (solver.warm_start of the last step's)
   SolverAnswer answer = method_->solve(problem, options);

@@ -28,8 +28,12 @@ std::string solver_line(const SolverSummary& v) {
                            "tolerance {:g}, largest residual {:.2g}\n",
                            v.iterations_mean, v.iterations_max, v.cap, v.tolerance, v.residual_max)
              : fmt::format("  contact solver ({}): {:.1f} iterations per step on average, at most {:d} (cap {:d}), "
-                           "merit tolerance {:g}, largest merit {:.2g}\n",
-                           v.method, v.iterations_mean, v.iterations_max, v.cap, v.tolerance, v.residual_max);
+                           "merit tolerance {:g}{}, largest merit {:.2g}\n",
+                           v.method, v.iterations_mean, v.iterations_max, v.cap, v.tolerance,
+                           v.joint_tolerance > 0 && v.joint_tolerance < v.tolerance
+                               ? fmt::format(" ({:g} with joints)", v.joint_tolerance)
+                               : "",
+                           v.residual_max);
   if (v.tolerance > 0 && v.capped_window_fraction > SolverSummary::kCappedWarning)
     out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached {} = {:d} before "
                        "{} = {:g}: their loads are not converged; raise the cap "
@@ -208,13 +212,15 @@ const std::vector<SummaryField>& summary_fields() {
          return j;
        }},
       {"solver", "", false, false,
-       "the contact solver over the run: method (solver.method), cap, tolerance, iterations_mean and "
+       "the contact solver over the run: method (solver.method), cap, tolerance, joint_tolerance (islands with "
+       "joints; 0 for pgs), iterations_mean and "
        "iterations_max (sweeps per step, or the method's iterations), capped_steps, capped_window_fraction (share of "
        "the window's steps that hit the cap unconverged), residual_max (the sweeps' residual, or the method's merit)",
        [](S s) {
          return json{{"method", s.solver.method},
                      {"cap", s.solver.cap},
                      {"tolerance", s.solver.tolerance},
+                     {"joint_tolerance", s.solver.joint_tolerance},
                      {"iterations_mean", s.solver.iterations_mean},
                      {"iterations_max", s.solver.iterations_max},
                      {"capped_steps", s.solver.capped_steps},
