@@ -295,6 +295,12 @@ std::vector<KeySpec> make_keys() {
                    "simulated time between two checkpoints (OUT.h5.checkpoint), from which `icedem resume` "
                    "continues a killed run; 0: none. Not written for validation cases, runs exchanging drag with "
                    "OpenFOAM (coupling.mode = \"probe\") and --export-problems runs"));
+  k.push_back(real("output.stop_grace", "s", 20.0, 0.0, 1.0e6,
+                   "wall time a run asked to stop (SIGINT, SIGTERM: Ctrl-C, a Slurm preemption) may take to reach "
+                   "its next checkpoint, judged from its pace so far: if it can, it goes on and stops there, so "
+                   "that `icedem resume` loses nothing and still ends bit for bit as the uninterrupted run; if "
+                   "not, it stops at once (resumable from the checkpoint before). A second signal stops it at "
+                   "once; 0: always at once"));
 
   // statistics
   k.push_back(real("stats.window_start_travel", "m", 2.456, 0.0, 1.0e4,

@@ -167,6 +167,7 @@ struct ActivationSettings {
 struct OutputSettings {
   double snapshot_interval;  // s, 0 = no snapshots
   double checkpoint_interval;  // s, simulated, between checkpoints (dem/checkpoint.hpp); 0 = none
+  double stop_grace;           // s, wall: how long a signalled run may go on to its next checkpoint
 };
 
 struct StatsSettings {

@@ -280,6 +280,7 @@ Scene make_scene(const Scenario& sc) {
 
   s.output.snapshot_interval = real(sc, "output.snapshot_interval");
   s.output.checkpoint_interval = real(sc, "output.checkpoint_interval");
+  s.output.stop_grace = real(sc, "output.stop_grace");
   s.stats.window_start_travel = real(sc, "stats.window_start_travel");
   s.stats.window_end_travel = real(sc, "stats.window_end_travel");
   s.stats.lowpass_hz = real(sc, "stats.lowpass_hz");

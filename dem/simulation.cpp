@@ -27,13 +27,18 @@ namespace icedem {
 namespace {
 
 std::atomic<int> g_interrupted{0};  // the signal that asked the run to stop, 0: none
-extern "C" void on_interrupt(int signal) { g_interrupted = signal; }
+std::atomic<int> g_signals{0};      // how many such signals came
+extern "C" void on_interrupt(int signal) {
+  g_interrupted = signal;
+  ++g_signals;
+}
 
 // Ctrl-C ends the step loop cleanly instead of killing the process mid-write
 class InterruptGuard {
  public:
   InterruptGuard() {
     g_interrupted = 0;
+    g_signals = 0;
     previous_ = std::signal(SIGINT, on_interrupt);
     previous_term_ = std::signal(SIGTERM, on_interrupt);
   }
@@ -285,14 +290,39 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
     summary.wall_time_s = wall();
     recorder.finish("failed", message, summary.wall_time_s);
   };
+  // asked to stop: at once, or (if the run can reach it within output.stop_grace) at the next
+  // checkpoint, so that the resumed run loses nothing; a checkpoint is not taken at the
+  // signal's step itself, since a run rebuilds its world at each checkpoint and the resumed
+  // run would then differ from the uninterrupted one (dem/checkpoint.hpp)
+  bool heading_for_checkpoint = false;
+  const long first_step = state.step;
+  const double loop_start = wall();
+  auto stop_now = [&] {
+    if (!g_interrupted) return false;
+    if (g_signals > 1 || !checkpoint_every) return true;
+    if (state.step > first_step && state.step % checkpoint_every == 0) return true;  // just written
+    if (!heading_for_checkpoint) {
+      const long next = (state.step / checkpoint_every + 1) * checkpoint_every;
+      const long done = state.step - first_step;
+      const double estimate = done ? (wall() - loop_start) / done * (next - state.step) : 0.0;
+      if (!done || next >= total_steps || estimate > scene.output.stop_grace) return true;
+      heading_for_checkpoint = true;
+      fmt::print(stderr, "icedem: {} at t = {:.2f} s: going on to the checkpoint at t = {:.2f} s (about {:.0f} s), "
+                 "then stopping; signal again to stop at once\n",
+                 g_interrupted == SIGTERM ? "SIGTERM" : "SIGINT", state.time, next * scene.time.dt, estimate);
+    }
+    return false;  // the next checkpoint is written, then the call after it stops
+  };
   try {
     while (state.step < total_steps) {
-      if (g_interrupted) {
+      if (stop_now()) {
         summary.status = "interrupted";
         summary.signal = g_interrupted;
+        const bool at_checkpoint = checkpoint_every && state.step > 0 && state.step % checkpoint_every == 0;
         summary.message = fmt::format("interrupted ({}) at t = {:.2f} s; the file holds the run so far{}",
                                       g_interrupted == SIGTERM ? "SIGTERM" : "SIGINT", state.time,
-                                      checkpoint_every && state.time >= scene.output.checkpoint_interval
+                                      at_checkpoint ? "; icedem resume continues it from here (its checkpoint)"
+                                      : checkpoint_every && state.time >= scene.output.checkpoint_interval
                                           ? "; icedem resume continues it from its last checkpoint"
                                           : "");
         break;

@@ -3,6 +3,9 @@
 
 Usage: test_resume.py ICEDEM SOURCE_DIR WORK_DIR
 
+Runs stopped by SIGTERM or Ctrl-C go on to their next checkpoint (output.stop_grace) and
+resume from it bit for bit too; a second signal stops them at once.
+
 The short tow (40 s) with a checkpoint every 5 s: run once uninterrupted; then killed with
 SIGKILL once it has written its checkpoint at t = 5, 15 and 25 s, resumed with
 `icedem resume`, and every dataset and the /stats attributes compared, bit for bit. A kill
@@ -99,6 +102,51 @@ for t in (5.0, 15.0, 25.0):
     same = contents(name) == full
     check(same, f"resumed from t = {t} s: every dataset and the statistics as the uninterrupted run's")
     check(not os.path.exists(name + ".checkpoint"), "the finished run's checkpoint is gone")
+
+# SIGTERM (a Slurm preemption) or Ctrl-C: the run goes on to its next checkpoint when it
+# can reach it within output.stop_grace, stops there (exit 143), and resumes from it losing
+# nothing, bit for bit; a second signal, or no grace, stops it at once
+def signalled(name, t, signals, options):
+    """Start a run, send `signals` (0.2 s apart, the first 0.2 s after its checkpoint has
+    reached t: mid-interval, not just after a checkpoint); (exit code, the checkpoint's time,
+    the time its record ends, stderr)."""
+    for p in (name, name + ".checkpoint"):
+        if os.path.exists(p):
+            os.remove(p)
+    proc = subprocess.Popen([icedem, "run", scenario, "-q", "-o", name, *options],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    while proc.poll() is None and checkpoint_time(name + ".checkpoint") < t - 1e-9:
+        time.sleep(0.002)
+    for sig in signals:
+        time.sleep(0.2)
+        proc.send_signal(sig)
+    _, err = proc.communicate()
+    with h5py.File(name, "r") as f:
+        ended = float(f["load/time"][-1])
+    return proc.returncode, checkpoint_time(name + ".checkpoint"), ended, err
+
+
+def on_grid(t, interval):
+    return abs(t / interval - round(t / interval)) < 1e-6
+
+
+code, at, ended, err = signalled("term.h5", 15.0, [signal.SIGTERM], every + ["--set", "output.stop_grace=600"])
+check(code == 143 and at > 15.0 + 1e-6 and on_grid(at, 5.0) and abs(ended - at) < 1e-9
+      and f"going on to the checkpoint at t = {at:.2f} s" in err,
+      f"SIGTERM after t = 15 s: went on to its next checkpoint ({at:.2f} s) and stopped there (exit {code})")
+p = run("resume", "term.h5", "-q")
+check(p.returncode == 0 and contents("term.h5") == full,
+      "resumed from the checkpoint it stopped at: every dataset and the statistics as the uninterrupted run")
+code, at, ended, err = signalled("term_now.h5", 15.0, [signal.SIGTERM], every + ["--set", "output.stop_grace=0"])
+check(code == 143 and at > 15.0 - 1e-6 and at <= ended and "going on" not in err,
+      f"no grace: stopped at once (t = {ended:.2f} s; resumable from {at:.2f} s)")
+code, at, ended, err = signalled("int_twice.h5", 15.0, [signal.SIGINT, signal.SIGINT],
+                                 ["--set", "output.checkpoint_interval=15", "--set", "output.stop_grace=600"])
+check(code == 130 and abs(at - 15.0) < 1e-9 and ended < 30.0 - 1e-9 and "going on to the checkpoint at t = 30.00" in err,
+      f"Ctrl-C: going on to t = 30 s; a second Ctrl-C stopped it at once (t = {ended:.2f} s)")
+p = run("resume", "int_twice.h5", "-q")
+check(p.returncode == 0 and contents("int_twice.h5")["load/force"] == contents("no_checkpoints_full.h5")["load/force"],
+      "... and it resumes from t = 15 s to the uninterrupted loads")
 
 # a kill during a checkpoint write: the last checkpoint is whole, its temporary file torn, and
 # the output itself may be torn too

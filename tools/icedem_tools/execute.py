@@ -139,7 +139,8 @@ def slurm_script(runs, out_dir, icedem, name):
 #SBATCH --output={sdir}/task-%a.out
 #SBATCH --open-mode=append
 # a preempted or failed node's task goes back in the queue, and resumes its run from the
-# checkpoint it left (icedem stops at SIGTERM; the checkpoint is at most
+# checkpoint it left (at SIGTERM icedem goes on to its next checkpoint if it can reach it
+# within output.stop_grace, else stops at once: the checkpoint is then at most
 # output.checkpoint_interval behind)
 #SBATCH --requeue
 line=$(sed -n "$((SLURM_ARRAY_TASK_ID + 1))p" {shlex.quote(jobs_file)})
