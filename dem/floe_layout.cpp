@@ -212,6 +212,7 @@ Layout generate_square_layout(const LayoutParams& params) {
   const double min_step = 1e-6 * side, max_step = side;
   long accepted_total = 0, tried_total = 0;
   for (int sweep = 0; sweep < params.sweeps; ++sweep) {
+    if (params.on_sweep) params.on_sweep(static_cast<double>(sweep) / params.sweeps);
     // a rotation by dyaw moves the corners by up to radius * dyaw
     const double yaw_step = std::min(step / radius, params.max_yaw);
     long accepted = 0;

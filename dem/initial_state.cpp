@@ -34,7 +34,7 @@ Layout single_floe_layout(const Scene& scene, double lx, double lz) {
 }
 
 // a generated square-floe field (layout.layers of them stacked for rafted ice)
-Layout generated_layout(const Scene& scene) {
+Layout generated_layout(const Scene& scene, const std::function<void(double)>& on_progress) {
   LayoutParams p;
   p.channel = scene_channel(scene);
   p.floe_size = scene.ice.floe_size;
@@ -43,10 +43,13 @@ Layout generated_layout(const Scene& scene) {
   p.max_yaw = scene.layout.max_yaw;
   p.sweeps = scene.layout.sweeps;
   p.min_gap = scene.layout.min_gap;
+  const int layers = scene.layout.layers;
+  if (on_progress) p.on_sweep = [&on_progress, layers](double f) { on_progress(f / layers); };
   Layout layout = generate_square_layout(p);
   // rafted ice: each further layer is its own arrangement, stacked on the first
-  for (int k = 1; k < scene.layout.layers; ++k) {
+  for (int k = 1; k < layers; ++k) {
     p.seed = scene.seed + static_cast<uint64_t>(k);
+    if (on_progress) p.on_sweep = [&on_progress, layers, k](double f) { on_progress((k + f) / layers); };
     const Layout layer = generate_square_layout(p);
     for (Floe f : layer.floes) {
       f.layer = k;
@@ -130,7 +133,7 @@ std::vector<std::string> layout_warnings(const Scene& scene, const Layout& layou
                       narrow, first, narrowest, smallest, h)};
 }
 
-Layout scene_layout(const Scene& scene) {
+Layout scene_layout(const Scene& scene, const std::function<void(double)>& on_progress) {
   // validation cases: one rectangular floe at the middle of the channel
   if (scene.validation.kind == ValidationKind::kPlateDeflection)
     return single_floe_layout(scene, scene.validation.plate_size, scene.validation.plate_size);
@@ -143,7 +146,7 @@ Layout scene_layout(const Scene& scene) {
   } else {
     // a generated layout's problems come from the scenario's keys: name its file
     try {
-      layout = generated_layout(scene);
+      layout = generated_layout(scene, on_progress);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: {}", scene.source_path, e.what()));
     }

@@ -18,9 +18,10 @@ namespace icedem {
 /// The floe field of the scene's channel.
 Channel scene_channel(const Scene& scene);
 
-/// The floes: read from layout.file, or generated at ice.concentration. Throws InputError if
-/// one overlaps the structure at t = 0.
-Layout scene_layout(const Scene& scene);
+/// The floes: read from layout.file, or generated at ice.concentration (`on_progress` told
+/// the share of the generation done, 0..1). Throws InputError if one overlaps the
+/// structure at t = 0, or a breakable floe does not cut into elements.
+Layout scene_layout(const Scene& scene, const std::function<void(double)>& on_progress = {});
 
 /// Warnings about floes the scene will not hold well: floes too narrow for their thickness to
 /// float flat (they turn over). Empty if none.

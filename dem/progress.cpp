@@ -46,4 +46,36 @@ void Progress::done() {
   if (enabled_ && tty_) fmt::print(out_, "\n");
 }
 
+SetupProgress::SetupProgress(bool enabled, std::FILE* out)
+    : enabled_(enabled), tty_(isatty(fileno(out)) != 0), out_(out), start_(Clock::now()), last_print_(start_) {}
+
+void SetupProgress::update(const char* stage, double fraction) {
+  // a set-up of a few seconds goes unannounced
+  constexpr double kQuietSeconds = 3.0;
+  if (!enabled_) return;
+  const Clock::time_point now = Clock::now();
+  const double wall = std::chrono::duration<double>(now - start_).count();
+  if (wall < kQuietSeconds) return;
+  if (tty_) {
+    if (std::chrono::duration<double>(now - last_print_).count() < 0.2 && fraction < 1.0) return;
+  } else if (fraction * 10 < next_decile_) {
+    return;
+  }
+  last_print_ = now;
+  const double eta = fraction > 0 ? wall * (1 - fraction) / fraction : 0.0;
+  const std::string line = fmt::format("setting up: {} {:3.0f} %  ETA {}", stage, 100 * fraction, clock_text(eta));
+  if (tty_) {
+    fmt::print(out_, "\r{}\033[K", line);
+  } else {
+    fmt::print(out_, "{}\n", line);
+    while (fraction * 10 >= next_decile_) ++next_decile_;
+  }
+  drawn_ = true;
+  std::fflush(out_);
+}
+
+void SetupProgress::done() {
+  if (enabled_ && tty_ && drawn_) fmt::print(out_, "\n");
+}
+
 }  // namespace icedem

@@ -30,4 +30,26 @@ class Progress {
   int next_decile_ = 1;
 };
 
+/// Progress of the set-up before the first step (the layout's relaxation): nothing for a
+/// set-up shorter than a few seconds, then the stage and its share done, redrawn on a
+/// terminal, a line every 10 % otherwise.
+class SetupProgress {
+ public:
+  explicit SetupProgress(bool enabled, std::FILE* out = stderr);
+  /// `fraction` (0..1) of `stage` done.
+  void update(const char* stage, double fraction);
+  /// Finish the line (terminal mode), if one was drawn.
+  void done();
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool enabled_;
+  bool tty_;
+  std::FILE* out_;
+  Clock::time_point start_;
+  Clock::time_point last_print_;
+  int next_decile_ = 1;
+  bool drawn_ = false;
+};
+
 }  // namespace icedem

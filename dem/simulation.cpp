@@ -246,7 +246,9 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.warnings = step_size_warnings(scene);
 
   // initial conditions, or the state of the checkpoint the run resumes from
-  const Layout layout = scene_layout(scene);
+  SetupProgress setup(options.progress);
+  const Layout layout = scene_layout(scene, [&setup](double f) { setup.update("floe layout", f); });
+  setup.done();
   State state = initial_state(scene, layout.floes, options.coupling);
   if (options.resume) restore_state(*options.resume, state);
   // a new run: a checkpoint left by an earlier run of this output is not its

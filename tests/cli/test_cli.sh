@@ -195,5 +195,17 @@ for sig in INT TERM; do
     && ok "SIG$sig during set-up: exit $want, a message, no file" || fail "SIG$sig during set-up: exit $code, $(cat setup.log)"
 done
 
+# 10b. a set-up of more than a few seconds says how far it is (not with -q): the same
+#      675,000 floes, stopped once the line is seen (or after 30 s)
+rm -f setup.h5
+"$icedem" run "$tow" --set channel.length=3000 --set ice.floe_size=0.1 -o setup.h5 >setup.log 2>&1 &
+pid=$!
+for _ in $(seq 60); do
+  sleep 0.5
+  grep -q "setting up: floe layout .* %" setup.log && break
+done
+kill -INT $pid; wait $pid
+grep -q "setting up: floe layout .* %  ETA" setup.log && ok "a long set-up shows its progress"   || fail "no set-up progress: $(head -c 300 setup.log)"
+
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]
