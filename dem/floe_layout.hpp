@@ -71,7 +71,7 @@ struct LayoutParams {
   double max_yaw = 0.2617993877991494;   // rad, largest |yaw| of a floe (15 degrees)
   int sweeps = 30;                       // Monte-Carlo passes over all floes (0 = grid only)
   double min_gap = 0.002;                // m, minimum clearance between floes
-  std::function<void(double)> on_sweep;  // told the share of the sweeps done after each (optional)
+  std::function<void(double)> on_sweep;  // told the share of the sweeps done, before each (optional)
 };
 
 /// A set of floes and how much of the channel they cover.
