@@ -5,8 +5,30 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
 
 namespace icedem {
+
+/// One progress line: on a terminal redrawn in place at most 5 times a second, otherwise
+/// (a log file, CI) printed as a new line at every 10 % of the work.
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::FILE* out);
+  /// Whether a line for `fraction` (0..1) done is due now.
+  bool due(double fraction) const;
+  /// Print `line` for `fraction` done (call when due).
+  void show(const std::string& line, double fraction);
+  /// Finish the line (terminal mode): always, or only if one was drawn.
+  void done(bool only_if_drawn);
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool tty_;
+  std::FILE* out_;
+  Clock::time_point last_print_;
+  int next_decile_ = 1;
+  bool drawn_ = false;
+};
 
 class Progress {
  public:
@@ -20,19 +42,14 @@ class Progress {
   void done();
 
  private:
-  using Clock = std::chrono::steady_clock;
   double duration_;
   bool enabled_;
-  bool tty_;
-  std::FILE* out_;
-  Clock::time_point start_;
-  Clock::time_point last_print_;
-  int next_decile_ = 1;
+  std::chrono::steady_clock::time_point start_;
+  ProgressLine line_;
 };
 
 /// Progress of the set-up before the first step (the layout's relaxation): nothing for a
-/// set-up shorter than a few seconds, then the stage and its share done, redrawn on a
-/// terminal, a line every 10 % otherwise.
+/// set-up shorter than a few seconds, then the stage and its share done, on a ProgressLine.
 class SetupProgress {
  public:
   explicit SetupProgress(bool enabled, std::FILE* out = stderr);
@@ -42,14 +59,9 @@ class SetupProgress {
   void done();
 
  private:
-  using Clock = std::chrono::steady_clock;
   bool enabled_;
-  bool tty_;
-  std::FILE* out_;
-  Clock::time_point start_;
-  Clock::time_point last_print_;
-  int next_decile_ = 1;
-  bool drawn_ = false;
+  std::chrono::steady_clock::time_point start_;
+  ProgressLine line_;
 };
 
 }  // namespace icedem

@@ -22,6 +22,9 @@ import time
 import h5py
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_files import checkpoint_time, contents  # noqa: E402
+
 icedem, src, work = sys.argv[1:4]
 os.makedirs(work, exist_ok=True)
 os.chdir(work)
@@ -42,25 +45,6 @@ def run(*args, expect=0):
     if p.returncode != expect:
         print(p.stdout, p.stderr)
     return p
-
-
-def contents(path):
-    """Every dataset (as bytes) and the /stats attributes of an output file."""
-    out = {}
-    with h5py.File(path, "r") as f:
-        f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()]).tobytes()) if isinstance(o, h5py.Dataset) else None)
-        # the run's statistics, all but its own run time
-        out["/stats"] = sorted((k, float(v)) for k, v in f["stats"].attrs.items() if not k.endswith("time_s"))
-        out["/meta/status"] = f["meta"].attrs["status"]
-    return out
-
-
-def checkpoint_time(path):
-    try:
-        with h5py.File(path, "r") as f:
-            return float(f["checkpoint"].attrs["time"])
-    except (OSError, KeyError):
-        return -1.0
 
 
 def killed_at(name, t, scene=scenario, options=every):

@@ -5,28 +5,22 @@ uninterrupted run (the four runs at once: about 9 minutes on two cores).
 
 Usage: test_resume_paper.py ICEDEM SOURCE_DIR WORK_DIR
 """
-import os, signal, subprocess, sys, time
-import h5py, numpy as np
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import h5py
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_files import checkpoint_time, contents  # noqa: E402
+
 os.environ["HDF5_USE_FILE_LOCKING"] = "FALSE"
 icedem, src, work = sys.argv[1:4]
 scen = os.path.join(src, "scenarios/paper/small_floes.toml")
 os.makedirs(work, exist_ok=True)
 os.chdir(work)
-
-def contents(path):
-    out = {}
-    with h5py.File(path, "r") as f:
-        f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()]).tobytes()) if isinstance(o, h5py.Dataset) else None)
-        out["/stats"] = sorted((k, float(v)) for k, v in f["stats"].attrs.items() if not k.endswith("time_s"))
-        out["/meta/status"] = f["meta"].attrs["status"]
-    return out
-
-def ck(path):
-    try:
-        with h5py.File(path, "r") as f:
-            return float(f["checkpoint"].attrs["time"])
-    except (OSError, KeyError):
-        return -1.0
 
 for p in os.listdir("."):
     if p.endswith((".h5", ".checkpoint", ".tmp")):
@@ -39,9 +33,9 @@ pending = dict(procs)
 resumes = {}
 while pending:
     for T, p in list(pending.items()):
-        if ck(f"k{T}.h5.checkpoint") >= T - 1e-9:
+        if checkpoint_time(f"k{T}.h5.checkpoint") >= T - 1e-9:
             p.send_signal(signal.SIGKILL); p.wait()
-            print(f"killed k{T} after its checkpoint at t = {ck(f'k{T}.h5.checkpoint'):.2f} s ({time.time() - t0:.0f} s wall)", flush=True)
+            print(f"killed k{T} after its checkpoint at t = {checkpoint_time(f'k{T}.h5.checkpoint'):.2f} s ({time.time() - t0:.0f} s wall)", flush=True)
             del pending[T]
             resumes[T] = subprocess.Popen([icedem, "resume", f"k{T}.h5", "-q"], stdout=subprocess.DEVNULL,
                                           stderr=subprocess.PIPE, text=True)

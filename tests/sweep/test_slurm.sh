@@ -49,19 +49,5 @@ out="$("$src/scripts/sweep" status "$work/ck.toml" --out "$work/requeued")"
 echo "$out"
 grep -q "4 runs: 4 finished, 0 failed, 0 pending" <<<"$out"
 grep -l "resuming" "$work"/requeued/*/*/*/log.txt
-/usr/bin/python3 - "$work/whole" "$work/requeued" <<'PY'
-import glob, os, sys
-import h5py, numpy as np
-def datasets(p):
-    out = {}
-    with h5py.File(p, "r") as f:
-        f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()]).tobytes()) if isinstance(o, h5py.Dataset) else None)
-    return out
-whole, requeued = sys.argv[1:]
-runs = sorted(os.path.relpath(p, whole) for p in glob.glob(os.path.join(whole, "*", "*", "*", "run.h5")))
-assert len(runs) == 4, runs
-for r in runs:
-    assert datasets(os.path.join(whole, r)) == datasets(os.path.join(requeued, r)), r
-print("requeued runs equal the uninterrupted sweep's, bit for bit")
-PY
+/usr/bin/python3 "$src/tests/sweep/same_runs.py" "$work/whole" "$work/requeued" 4
 echo "slurm sweep test passed"

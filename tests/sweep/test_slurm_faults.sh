@@ -50,19 +50,5 @@ out="$("$src/scripts/sweep" status "$work/faults.toml" --out "$work/faulted")"
 echo "$out"
 grep -q "20 runs: 20 finished, 0 failed, 0 pending" <<<"$out"
 echo "runs that resumed from a checkpoint: $(grep -l "resuming" "$work"/faulted/*/*/*/log.txt | wc -l)"
-/usr/bin/python3 - "$work/whole" "$work/faulted" <<'PY'
-import glob, os, sys
-import h5py, numpy as np
-def datasets(p):
-    out = {}
-    with h5py.File(p, "r") as f:
-        f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()]).tobytes()) if isinstance(o, h5py.Dataset) else None)
-    return out
-whole, faulted = sys.argv[1:]
-runs = sorted(os.path.relpath(p, whole) for p in glob.glob(os.path.join(whole, "*", "*", "*", "run.h5")))
-assert len(runs) == 20, runs
-for r in runs:
-    assert datasets(os.path.join(whole, r)) == datasets(os.path.join(faulted, r)), r
-print("20 faulted runs equal the uninterrupted sweep's, bit for bit")
-PY
+/usr/bin/python3 "$src/tests/sweep/same_runs.py" "$work/whole" "$work/faulted" 20
 echo "slurm fault test passed"

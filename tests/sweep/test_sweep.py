@@ -13,6 +13,7 @@ import unittest
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from icedem_tools import execute, spec  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # same_runs, beside this file
 
 ICEDEM = None
 WORK = None
@@ -413,8 +414,7 @@ class Execution(unittest.TestCase):
         # resume from their checkpoints and every run ends as in the whole sweep, bit for bit
         import signal
         import time
-        import h5py
-        import numpy as np
+        from same_runs import datasets
         text = TINY.replace('"output.snapshot_interval=0"]', '"output.snapshot_interval=0", "output.checkpoint_interval=5"]')
         path = sweep_file(text)
         _, runs = spec.load(path)
@@ -438,13 +438,6 @@ class Execution(unittest.TestCase):
         self.assertEqual([s.state for s in execute.run_parallel(runs, killed, ICEDEM, jobs=2)], ["done"] * 4)
         for r in resumable:
             self.assertIn("resuming", read(os.path.join(killed, r.path, "log.txt")))
-
-        def datasets(p):
-            out = {}
-            with h5py.File(p, "r") as f:
-                f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()]).tobytes())
-                             if isinstance(o, h5py.Dataset) else None)
-            return out
         for r in runs:
             self.assertEqual(datasets(os.path.join(killed, r.path, "run.h5")),
                              datasets(os.path.join(whole, r.path, "run.h5")), r.path)

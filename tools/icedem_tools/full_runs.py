@@ -12,7 +12,7 @@ the sweep is still running (unfinished runs are counted as pending).
 
 Per scenario and variant, over the finished seeds: the mean surge load over the
 analysis window, its 99th percentile, the mean of the seeds' maxima, for lattices
-the failure ratio (failure_ratio below), joints and floes broken per run (each
+the failure ratio (fracture_figures below), joints and floes broken per run (each
 with the half-width of its 95 % confidence interval), the share of the window's
 steps whose solve stopped at the cap above tolerance, iterations per step and CPU
 time per run. A variant passes against the reference when its mean is within 3 %,
@@ -39,25 +39,29 @@ from .spec import ROOT
 
 STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "full_runs.toml")
 REFERENCE = "reference: apgd 1e-5, dt/2"
-# the issue's criteria, and one for how near the ice came to breaking (see failure_ratio)
+# the issue's criteria, and one for how near the ice came to breaking (see fracture_figures)
 TOLERANCE = {"mean": 0.03, "p99": 0.05, "max": 0.10, "ratio": 0.05}
 NAMES = {"mean": "mean", "p99": "p99", "max": "mean of maxima", "ratio": "failure ratio"}
 TOP_FLOES = 20
 
 
-def failure_ratio(summary):
-    """How near a run's ice came to breaking: the mean of the TOP_FLOES largest per-floe
-    load / capacity ratios (/fracture/floe_max_ratio), or None for rigid floes. At the
-    paper's strength the lattices break a floe in one run of several, so breaks per run
-    cannot tell two solves apart over five seeds; this tail of the ratios, which every
-    run has, can (a solve that inflates the joints' loads raises it)."""
+def fracture_figures(summary):
+    """A run's failure ratio and its floes broken, read from its file at once.
+
+    The failure ratio says how near its ice came to breaking: the mean of the TOP_FLOES
+    largest per-floe load / capacity ratios (/fracture/floe_max_ratio), or None for rigid
+    floes. At the paper's strength the lattices break a floe in one run of several, so
+    breaks per run cannot tell two solves apart over five seeds; this tail of the ratios,
+    which every run has, can (a solve that inflates the joints' loads raises it).
+    Floes broken, not joints: joints break in clusters (a floe at several joints in a step
+    or two), so the floes are the independent events."""
     import h5py  # noqa: E402 (not needed to list the runs)
     import numpy as np
     with h5py.File(os.path.join(summary["run_dir"], "run.h5"), "r") as f:
-        if "/fracture/floe_max_ratio" not in f:
-            return None
-        r = np.sort(f["/fracture/floe_max_ratio"][:])[::-1]
-    return float(r[:TOP_FLOES].mean()) if len(r) and r[0] > 0 else None
+        events = f["/fracture/events"][()]
+        r = np.sort(f["/fracture/floe_max_ratio"][:])[::-1] if "/fracture/floe_max_ratio" in f else []
+    ratio = float(r[:TOP_FLOES].mean()) if len(r) and r[0] > 0 else None
+    return ratio, len(set(int(x) for x in events["floe"])) if len(events) else 0
 
 
 def statistics(runs):
@@ -69,9 +73,9 @@ def statistics(runs):
         return None
     loads = np.array([window_loads(s) for s in ok])
     per_run = {"mean": loads[:, 0], "p99": loads[:, 1], "max": loads[:, 2],
-               "breaks": np.array([s["breaks"] for s in ok], dtype=float),
-               "floes_broken": np.array([floes_broken(s) for s in ok], dtype=float)}
-    ratios = [failure_ratio(s) for s in ok]
+               "breaks": np.array([s["breaks"] for s in ok], dtype=float)}
+    ratios, floes = zip(*[fracture_figures(s) for s in ok])
+    per_run["floes_broken"] = np.array(floes, dtype=float)
     if all(r is not None for r in ratios):
         per_run["ratio"] = np.array(ratios)
     e = {"n": len(ok), "seeds": [s["seed"] for s in ok], "runs": per_run}
@@ -81,15 +85,6 @@ def statistics(runs):
     e["sweeps"] = np.mean([s["solver"]["iterations_mean"] for s in ok])
     e["capped"] = np.mean([s["solver"]["capped_window_fraction"] for s in ok])
     return e
-
-
-def floes_broken(summary):
-    """How many floes of a run broke (joints break in clusters: a floe at several joints
-    in a step or two, so its floes, not its joints, are the independent events)."""
-    import h5py
-    with h5py.File(os.path.join(summary["run_dir"], "run.h5"), "r") as f:
-        events = f["/fracture/events"][()]
-    return len(set(int(x) for x in events["floe"])) if len(events) else 0
 
 
 def breaks_agree(e, ref):

@@ -206,6 +206,13 @@ def judge_check(code, out, names):
     return None, False
 
 
+def remove_run(h5):
+    """Remove a run's output and its checkpoint, where they exist."""
+    for p in (h5, h5 + ".checkpoint"):
+        if os.path.exists(p):
+            os.remove(p)
+
+
 def digest(path):
     with open(path, "rb") as f:
         return hashlib.sha256(f.read()).hexdigest()
@@ -230,18 +237,14 @@ def guard_problems(icedem, scenario, timeout):
         if digest(scenario) != before:
             yield f"{what}: the scenario was overwritten", True, text
             return
-        for p in (h5, h5 + ".checkpoint"):
-            if os.path.exists(p):
-                os.remove(p)
+        remove_run(h5)
 
 
 def signal_problem(icedem, scenario, sig, delay, timeout):
     """A 30 s run of `scenario` to a new output, sent `sig` after `delay` s.
     Returns (problem or None, is severe, output)."""
     h5 = scenario + ".signal.h5"
-    for p in (h5, h5 + ".checkpoint"):
-        if os.path.exists(p):
-            os.remove(p)
+    remove_run(h5)
     proc = subprocess.Popen([icedem, "run", scenario, "-q", "-o", h5, "--set", "time.duration=30"],
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
     try:
@@ -271,9 +274,7 @@ def signal_problem(icedem, scenario, sig, delay, timeout):
         if info not in (0, 2):  # 2: a file killed before its layout was written, named as unreadable
             problem, bad = f"icedem info on the killed run's file: exit {info}", info is None or info < 0
         text = info_text
-    for p in (h5, h5 + ".checkpoint"):
-        if os.path.exists(p):
-            os.remove(p)
+    remove_run(h5)
     return problem, bad, text
 
 
@@ -356,9 +357,7 @@ def main(argv=None):
             keep = os.path.join(out, f"finding_{len(findings)}_{os.path.basename(path)}")
             shutil.copy(path, keep)
             findings.append(("run", problem, keep, text_out.strip()[-300:]))
-        for p in (h5, path + ".h5.checkpoint"):
-            if os.path.exists(p):
-                os.remove(p)
+        remove_run(h5)
 
     def keep_finding(what, problem, path, tail, bad):
         nonlocal severe

@@ -1,0 +1,24 @@
+"""What the resume tests compare of a run's files: every dataset (as bytes) with the /stats
+attributes and the status, and the time of its checkpoint."""
+import h5py
+import numpy as np
+
+
+def contents(path):
+    """Every dataset (as bytes) and the /stats attributes of an output file."""
+    out = {}
+    with h5py.File(path, "r") as f:
+        f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()]).tobytes()) if isinstance(o, h5py.Dataset) else None)
+        # the run's statistics, all but its own run time
+        out["/stats"] = sorted((k, float(v)) for k, v in f["stats"].attrs.items() if not k.endswith("time_s"))
+        out["/meta/status"] = f["meta"].attrs["status"]
+    return out
+
+
+def checkpoint_time(path):
+    """The simulated time of a checkpoint file, -1 if there is none (or it is torn)."""
+    try:
+        with h5py.File(path, "r") as f:
+            return float(f["checkpoint"].attrs["time"])
+    except (OSError, KeyError):
+        return -1.0
