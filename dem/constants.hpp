@@ -24,6 +24,11 @@ constexpr double kBlowUpDistance = 1000.0;  // m outside the tank
 /// A warning, not a blow-up: the run goes on.
 constexpr double kRockingAngularSpeed = 15.0;
 
+/// Standard gravity, m/s^2, for the impulse merit's floor (dem/contact_merit.hpp): a
+/// contact's effective mass times it is the force below which its error is no error
+/// that matters. A scale, not the run's gravity (water.gravity).
+constexpr double kMeritGravity = 9.81;
+
 constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace icedem

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Cholesky>
@@ -90,7 +91,7 @@ void row_products(const std::vector<Blocks<R>>& blocks, const double* free, cons
 // kMaxFoldedBodies elements be inverted every step: then every row stays an unknown.
 class DualProblem {
  public:
-  explicit DualProblem(const ContactProblem& p)
+  DualProblem(const ContactProblem& p, MeritKind merit_kind)
       : nb_(static_cast<int>(p.bodies.size())), nc_(static_cast<int>(p.contacts.size())), nj_all_(p.joint_rows()) {
     inv_mass_.resize(nb_);
     for (int i = 0; i < nb_; ++i) inv_mass_[i] = inverse_mass(p.bodies[i]);
@@ -145,9 +146,9 @@ class DualProblem {
     }
     // the rows' velocities at x = 0
     gather(rows_free_, rows_free_);
-    // the merit's scale |q|: the contacts' free velocity, the joints folded (as the local
-    // form's q); with a rigid joint row, without them
-    q_norm_ = nj_ ? local_q_norm(global_form(p)) : rows_free_.head(3 * nc_).norm();
+    // the merit's q: the contacts' free velocity, the joints folded (the local form's q;
+    // with a rigid joint row, without them)
+    merit_.emplace(merit_kind, p, nj_ ? local_q(global_form(p)) : Eigen::VectorXd(rows_free_.head(3 * nc_)), mu_);
   }
 
   bool folded() const { return folded_; }
@@ -166,7 +167,6 @@ class DualProblem {
   int contacts() const { return nc_; }
   int joint_rows() const { return nj_; }
   int size() const { return 3 * nc_ + nj_; }
-  double q_norm() const { return q_norm_; }
   double mu(int c) const { return mu_(c); }
   const Eigen::VectorXd& scale() const { return scale_; }
   const Eigen::VectorXd& rows_free() const { return rows_free_; }
@@ -195,15 +195,15 @@ class DualProblem {
     for (int c = 0; c < nc_; ++c) x.segment<3>(3 * c) = project_on_cone(x.segment<3>(3 * c), mu_(c));
   }
 
-  // the merit of impulses x with row velocities `rows`: the contacts' natural map and the
-  // joint rows' equation J v + b + C l = 0, normalised as natural_map_residual is
-  double merit(const Eigen::VectorXd& x, const Eigen::VectorXd& rows, double q_norm) const {
-    const double contacts = natural_map_residual(x.head(3 * nc_), rows.head(3 * nc_), mu_, q_norm);
-    if (!nj_) return contacts;
-    const double scale = std::max({q_norm, x.head(3 * nc_).norm(), rows.head(3 * nc_).norm()});
-    const double joints = (rows.tail(nj_) + compliance_.cwiseProduct(x.tail(nj_))).norm() /
-                          (scale > std::numeric_limits<double>::epsilon() ? scale : 1.0);
-    return std::hypot(contacts, joints);
+  // the merit of impulses x with row velocities `rows` (dem/contact_merit.hpp): the
+  // contacts' natural map and the residual of the joint rows that are unknowns,
+  // J v + b + C l = 0 (in impulses for the impulse merit: each row's times 1 / (its
+  // diagonal + C), the scale D holds)
+  double merit(const Eigen::VectorXd& x, const Eigen::VectorXd& rows) const {
+    if (!nj_) return (*merit_)(x.head(3 * nc_), rows.head(3 * nc_));
+    Eigen::VectorXd joints = rows.tail(nj_) + compliance_.cwiseProduct(x.tail(nj_));
+    if (merit_->kind() == MeritKind::kImpulse) joints = joints.cwiseProduct(scale_.tail(nj_));
+    return merit_->with_joints(x.head(3 * nc_), rows.head(3 * nc_), joints.norm());
   }
 
  private:
@@ -313,7 +313,7 @@ class DualProblem {
   std::vector<Blocks<3>> contacts_;
   std::vector<Blocks<1>> joints_;
   Eigen::VectorXd compliance_, scale_, rows_free_, mu_;  // compliance_: the joint rows' C
-  double q_norm_ = 0;
+  std::optional<Merit> merit_;
   std::vector<Eigen::Matrix<double, 6, 6>> inv_mass_;  // per body
   // J^T x and M^-1 J^T x (v_free while set up), scratch of row_velocities
   mutable Eigen::VectorXd body_impulse_, body_velocity_;
@@ -380,9 +380,8 @@ double step_slope(const DualProblem& dual, const Eigen::VectorXd& next, const Ei
 }  // namespace
 
 SolverAnswer AcceleratedProjectedGradient::solve(const ContactProblem& p, const MethodOptions& options) {
-  const DualProblem dual(p);
+  const DualProblem dual(p, options.merit);
   const int n = dual.size(), nc = dual.contacts();
-  const double q_norm = dual.q_norm();
 
   Eigen::VectorXd x(n);
   if (!options.warm_start)
@@ -396,7 +395,7 @@ SolverAnswer AcceleratedProjectedGradient::solve(const ContactProblem& p, const 
   SolverAnswer answer;
   Eigen::VectorXd rows(n);
   dual.row_velocities(x, rows);
-  answer.residual = dual.merit(x, rows, q_norm);
+  answer.residual = dual.merit(x, rows);
   Eigen::VectorXd best = x;
   // Lipschitz estimate of the scaled gradient: with D it is of order 1 (1 for a single
   // row); the backtracking corrects it
@@ -420,7 +419,7 @@ SolverAnswer AcceleratedProjectedGradient::solve(const ContactProblem& p, const 
       L *= 2.0;
     }
     if (++iteration % kCheckEvery == 0 || steps >= options.max_iterations) {
-      const double merit = dual.merit(next, rows_next, q_norm);
+      const double merit = dual.merit(next, rows_next);
       if (merit < answer.residual) answer.residual = merit, best = next;
     }
 

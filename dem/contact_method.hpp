@@ -9,12 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "dem/contact_merit.hpp"
 #include "dem/contact_problem.hpp"
 
 namespace icedem {
 
 struct MethodOptions {
-  double tolerance = 1e-6;   // stop when the method's own measure of the error is below this
+  double tolerance = 1e-6;   // stop when the merit (dem/contact_merit.hpp) is below this
+  MeritKind merit = MeritKind::kSiconos;  // the library's common measure; a run stops on kImpulse
   int max_iterations = 200;  // and at the latest after this many iterations
   bool warm_start = true;    // start from the problem's guess (else from zero)
 };

@@ -242,7 +242,7 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
   InnerProblem inner(p, settings_.rho_fraction);
   const GlobalForm& g = inner.global();
   const int n = p.dofs(), m = p.contact_rows(), nc = inner.contacts();
-  const double q_norm = local_q_norm(g);
+  const Merit merit(options.merit, p, local_q(g), g.mu);
 
   // start: the warm start's impulses and the velocities they give
   Eigen::VectorXd rb = options.warm_start ? contact_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(m));
@@ -292,7 +292,7 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
     // velocities they give, v - M^-1 G, not on v itself (the inner loop may stop short)
     inner.gradient(v, u, rb, s, r, G);
     const Eigen::VectorXd u_r = inner.Jc() * (v - inner.inverse_mass_times(G)) + g.w;
-    answer.residual = natural_map_residual(r, u_r, g.mu, q_norm);
+    answer.residual = merit(r, u_r);
     if (answer.residual <= options.tolerance) break;
     // outer: the impulses become the proximal centre, the sliding speeds the shift
     rb = r;

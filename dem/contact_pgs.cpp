@@ -76,12 +76,12 @@ SolverAnswer ProjectedGaussSeidel::solve(const ContactProblem& p, const MethodOp
     for (int c = 0; c < nc; ++c) m(c) = p.contacts[c].mu;
     return m;
   }();
-  const double q_norm = local_q_norm(p);
+  const Merit measure(options.merit, p, local_q(global_form(p)), mu);
   auto merit = [&] {
     Eigen::VectorXd u(3 * nc);
     for (int c = 0; c < nc; ++c)
       for (int k = 0; k < 3; ++k) u(3 * c + k) = velocity(rows[3 * c + k]) + p.contacts[c].w(k);
-    return natural_map_residual(l.head(3 * nc), u, mu, q_norm);
+    return measure(l.head(3 * nc), u);
   };
 
   SolverAnswer answer;

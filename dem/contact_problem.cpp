@@ -183,16 +183,18 @@ Eigen::Vector3d structure_impulse(const ContactProblem& p, const Eigen::VectorXd
 
 double local_q_norm(const ContactProblem& p) { return local_q_norm(global_form(p)); }
 
-double local_q_norm(const GlobalForm& g) {
-  if (g.Jc.rows() == 0) return 0.0;
-  // rigid joint rows (a clamp, compliance 0) have no folded form: the scale is then the
-  // contacts' free velocity with the joints left out, as without joints
-  if (g.Jj.rows() == 0 || (g.compliance.array() <= 0).any()) return (g.Jc * g.v_free + g.w).norm();
+double local_q_norm(const GlobalForm& g) { return g.Jc.rows() == 0 ? 0.0 : local_q(g).norm(); }
+
+Eigen::VectorXd local_q(const GlobalForm& g) {
+  if (g.Jc.rows() == 0) return Eigen::VectorXd();
+  // rigid joint rows (a clamp, compliance 0) have no folded form: q is then the contacts'
+  // free velocity with the joints left out, as without joints
+  if (g.Jj.rows() == 0 || (g.compliance.array() <= 0).any()) return g.Jc * g.v_free + g.w;
   // Mt^-1 ft by a sparse factorisation of Mt, not by folding the joints into a dense
   // inverse per lattice (fold_joints), which costs the cube of its size
   const FoldedMassMatrix folded = folded_mass_matrix(g);
   const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> factor(folded.Mt);
-  return (g.Jc * factor.solve(folded.ft) + g.w).norm();
+  return g.Jc * factor.solve(folded.ft) + g.w;
 }
 
 Eigen::VectorXd velocities(const GlobalForm& g, const Eigen::VectorXd& r, const Eigen::VectorXd& l) {

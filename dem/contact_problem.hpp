@@ -139,6 +139,8 @@ LocalForm local_form(const ContactProblem& p);
 /// joint row (no local form) |J_c v_free + w|, the joints left out.
 double local_q_norm(const ContactProblem& p);
 double local_q_norm(const GlobalForm& g);
+/// q itself (3 per contact), as local_q_norm computes it.
+Eigen::VectorXd local_q(const GlobalForm& g);
 
 /// The impulse the contacts on the structure give it over the step, N s, tank frame:
 /// the ice load times the step.

@@ -382,6 +382,7 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   options.tolerance = problem.joints.empty() ? settings_.merit_tolerance
                                              : std::min(settings_.merit_tolerance, settings_.joint_merit_tolerance);
   options.max_iterations = settings_.method_iterations;
+  options.merit = merit_kind(settings_.merit);
   options.warm_start = true;  // from the rows' warm start (solver.warm_start of the last step's)
   SolverAnswer answer = method_->solve(problem, options);
   apply_impulses(answer);

@@ -85,6 +85,7 @@ struct ContactSolverSettings {
   // to merit_tolerance in at most method_iterations of its iterations
   std::string method = "pgs";
   double merit_tolerance = 1e-6;
+  std::string merit = "siconos";  // what merit_tolerance bounds (dem/contact_merit.hpp)
   double joint_merit_tolerance = 1e-6;  // an island with joint rows: the smaller of the two
   int method_iterations = 300;
   // cap of the split-impulse position sweeps (pseudo-impulses that push penetrating contacts

@@ -86,6 +86,13 @@ std::vector<KeySpec> make_keys() {
   k.push_back(real("solver.merit_tolerance", "-", 1e-3, 1e-14, 1.0,
                    "solver.method other than \"pgs\": an island is solved when its natural-map residual, the "
                    "merit every contact method is judged by (docs/model/contact_problems.md), is below this"));
+  k.push_back(choice("solver.merit", "siconos", {"siconos", "impulse"},
+                     "what solver.merit_tolerance bounds: \"siconos\", Siconos' relative natural map, the "
+                     "contact-problem library's common measure, whose scale holds the gap-closing speeds of "
+                     "untouching contacts and so loosens with a smaller step; \"impulse\", the natural map in "
+                     "impulse units (each contact's velocity error times its effective mass) relative to the "
+                     "island's impulses or its contacts' weights over the step: the forces' error relative to "
+                     "the forces, the same at any step (dem/contact_merit.hpp, docs/model/convergence.md)"));
   k.push_back(real("solver.joint_merit_tolerance", "-", 1e-4, 1e-14, 1.0,
                    "solver.method other than \"pgs\": the merit an island with joints (a lattice's) is solved "
                    "to, if below solver.merit_tolerance: a joint's load is its elements' relative motion over "

@@ -49,7 +49,8 @@ struct SolverSettings {
   bool split_impulse;         // position correction kept out of the contact impulses
   double contact_erp;         // -, fraction of penetration corrected per step
   std::string method;         // contact method of an island: "pgs" (the sweeps above), "pgs_cone", "newton", "apgd"
-  double merit_tolerance;     // -, natural-map residual that ends a method's solve
+  double merit_tolerance;     // -, merit that ends a method's solve
+  std::string merit;          // which: "impulse" (forces relative to forces) or "siconos" (dem/contact_merit.hpp)
   double joint_merit_tolerance;  // -, the same for an island with joint rows, if smaller
   int method_iterations;      // cap of the method's iterations per island and Bullet step
   int position_iterations;    // cap of the split-impulse position sweeps per island and Bullet step

@@ -111,6 +111,7 @@ Scene make_scene(const Scenario& sc) {
   s.solver.contact_erp = real(sc, "solver.contact_erp");
   s.solver.method = get<std::string>(sc, "solver.method");
   s.solver.merit_tolerance = real(sc, "solver.merit_tolerance");
+  s.solver.merit = get<std::string>(sc, "solver.merit");
   s.solver.joint_merit_tolerance = real(sc, "solver.joint_merit_tolerance");
   s.solver.method_iterations = integer(sc, "solver.method_iterations");
   s.solver.position_iterations = integer(sc, "solver.position_iterations");

@@ -67,6 +67,7 @@ World::World(const WorldSettings& settings)
   contact.crushing_force = settings.crushing_force;
   contact.method = solver.method;
   contact.merit_tolerance = solver.merit_tolerance;
+  contact.merit = solver.merit;
   contact.joint_merit_tolerance = solver.joint_merit_tolerance;
   contact.method_iterations = solver.method_iterations;
   contact.position_iterations = solver.position_iterations;

@@ -6,10 +6,16 @@
 //       solve each problem to a merit of 1e-10 with Siconos numerics, cross-check the
 //       answer with a second method, and write it into the file as FCLIB's /solution
 //       with /icedem/reference saying how it was found (or why none was)
+//   contact_problems errors FILE... [--method M] [--merit K] [--tolerance T ...] [--csv F] [--loaded-only]
+//       the physical error of the run's answer and of a method's at each tolerance against
+//       a tight one (newton to 1e-10, else apgd to 1e-9): the load on the structure (N) and
+//       the joints' forces (N) and moments (N m), impulses over the step
 //
 // The merit is natural_map_residual on the Delassus form (dem/contact_problem.hpp),
 // the same for every method.
+#include <algorithm>
 #include <ctime>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -169,6 +175,106 @@ int reference_command(const std::vector<std::string>& files) {
   return 0;
 }
 
+// the physical loads of an answer: the structure's (N) and each joint row's (N or N m),
+// impulses over the step
+struct Loads {
+  Eigen::Vector3d structure;
+  Eigen::VectorXd joints;
+};
+Loads loads_of(const ContactProblem& p, const Eigen::VectorXd& r) {
+  Loads l;
+  l.structure = structure_impulse(p, r) / p.dt;
+  l.joints = p.joints.empty() ? Eigen::VectorXd() : Eigen::VectorXd(joint_impulses(p, r) / p.dt);
+  return l;
+}
+
+// a joint row is linear (a force) when its Jacobian has a linear part
+bool linear_row(const ProblemJointRow& j) {
+  return (j.a >= 0 && j.ja.leftCols<3>().norm() > 0) || (j.b >= 0 && j.jb.leftCols<3>().norm() > 0);
+}
+
+// the tight answer the errors are measured against: newton to 1e-10 (at most 500 steps),
+// else (a lattice island it stalls on) apgd to 1e-9 (at most 20000), whichever ends lower
+SolverAnswer tight_answer(const ContactProblem& p, const LocalForm& local, double& merit) {
+  MethodOptions o;
+  o.tolerance = 1e-10;
+  o.max_iterations = 500;
+  SolverAnswer best = make_contact_method("newton")->solve(p, o);
+  merit = natural_map_residual(local, best.r);
+  if (merit > 1e-8) {
+    o.tolerance = 1e-9;
+    o.max_iterations = 20000;
+    const SolverAnswer a = make_contact_method("apgd")->solve(p, o);
+    const double m = natural_map_residual(local, a.r);
+    if (m < merit) best = a, merit = m;
+  }
+  return best;
+}
+
+int errors_command(const std::vector<std::string>& files, const std::string& method, MeritKind merit,
+                   const std::vector<double>& tolerances, int max_iterations, const std::string& csv_path,
+                   bool loaded_only) {
+  std::ofstream csv;
+  if (!csv_path.empty()) {
+    csv.open(csv_path);
+    if (!csv) throw OutputError(csv_path + ": cannot write");
+    csv << "problem,time,step,island,dt,contacts,joint_rows,answer,merit,impulse_merit,iterations,load_x,load_y,load_z,"
+           "load_error_n,joint_force_n,joint_force_error_n,joint_moment_nm,joint_moment_error_nm\n";
+  }
+  std::cout << fmt::format("{:<34} {:>6} {:>6} {:>8} {:>9} {:>9} {:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}\n",
+                           "problem", "dt", "contacts", "answer", "merit", "impulse", "iters", "load N", "dload N", "jointF N",
+                           "dF N", "jointM Nm", "dM Nm");
+  for (const std::string& path : files) {
+    const ProblemFile file = read_problem_file(path);
+    const ContactProblem& p = file.problem;
+    // an island that neither touches the structure nor holds a joint reaches no reported load
+    if (loaded_only && p.joints.empty() &&
+        std::none_of(p.contacts.begin(), p.contacts.end(), [](const ProblemContact& c) { return c.on_structure; }))
+      continue;
+    const LocalForm local = local_form(p);
+    const Merit impulse(MeritKind::kImpulse, local.q, contact_masses(p), local.mu, p.dt);
+    double ref_merit = 0;
+    const SolverAnswer ref = tight_answer(p, local, ref_merit);
+    const Loads exact = loads_of(p, ref.r);
+    std::vector<bool> linear(p.joints.size());
+    double max_f = 0, max_m = 0;
+    for (std::size_t j = 0; j < p.joints.size(); ++j) {
+      linear[j] = linear_row(p.joints[j]);
+      double& top = linear[j] ? max_f : max_m;
+      top = std::max(top, std::abs(exact.joints(j)));
+    }
+    const std::string name = std::filesystem::path(path).filename().string();
+    auto row = [&](const std::string& label, const SolverAnswer& a) {
+      const Loads got = loads_of(p, a.r);
+      double df = 0, dm = 0;
+      for (std::size_t j = 0; j < p.joints.size(); ++j) {
+        double& worst = linear[j] ? df : dm;
+        worst = std::max(worst, std::abs(got.joints(j) - exact.joints(j)));
+      }
+      const double merit = natural_map_residual(local, a.r), dload = (got.structure - exact.structure).norm();
+      const double impulse_merit = impulse(a.r, local.W * a.r + local.q);
+      std::cout << fmt::format("{:<34} {:>6.4f} {:>6} {:>8} {:>9.2e} {:>9.2e} {:>7} {:>9.3f} {:>9.3f} {:>9.3f} {:>9.3f} {:>9.4f} {:>9.4f}\n",
+                               name, p.dt, p.contacts.size(), label, merit, impulse_merit, a.sweeps, got.structure.norm(), dload,
+                               max_f, df, max_m, dm);
+      if (csv)
+        csv << fmt::format("{},{:.6f},{},{},{},{},{},{},{:.6e},{:.6e},{},{:.9g},{:.9g},{:.9g},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}\n",
+                           name, p.time, p.step, p.island, p.dt, p.contacts.size(), p.joint_rows(), label, merit,
+                           impulse_merit, a.sweeps, got.structure.x(), got.structure.y(), got.structure.z(), dload, max_f, df,
+                           max_m, dm);
+    };
+    row("tight", ref);
+    if (file.answer) row("run", *file.answer);
+    for (double tol : tolerances) {
+      MethodOptions o;
+      o.tolerance = tol;
+      o.max_iterations = max_iterations;
+      o.merit = merit;
+      row(fmt::format("{:.0e}", tol), make_contact_method(method)->solve(p, o));
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -186,9 +292,23 @@ int main(int argc, char** argv) {
   solve->add_flag("--cold", cold, "start from zero, not the warm start");
   CLI::App* reference = app.add_subcommand("reference", "write reference solutions into problem files");
   reference->add_option("files", files, "problem files")->required();
+  CLI::App* errors = app.add_subcommand("errors", "load errors of a method's answers against a tight solution");
+  std::string method = "apgd";
+  std::vector<double> tolerances{1e-3, 1e-4, 1e-5};
+  errors->add_option("files", files, "problem files")->required();
+  errors->add_option("--method", method, "method (default apgd)");
+  errors->add_option("--tolerance", tolerances, "merits to stop at (default 1e-3 1e-4 1e-5)")->take_all();
+  errors->add_option("--max-iterations", max_iterations, "iteration cap (default 200)");
+  std::string csv_path;
+  errors->add_option("--csv", csv_path, "also write every answer's errors to this CSV file");
+  std::string merit_name = "siconos";
+  errors->add_option("--merit", merit_name, "the merit the tolerances bound: siconos (default) or impulse");
+  bool loaded_only = false;
+  errors->add_flag("--loaded-only", loaded_only, "only islands that touch the structure or hold joints");
   CLI11_PARSE(app, argc, argv);
   try {
     if (*solve) return solve_command(files, methods, tolerance, max_iterations, cold);
+    if (*errors) return errors_command(files, method, merit_kind(merit_name), tolerances, max_iterations, csv_path, loaded_only);
     return reference_command(files);
   } catch (const std::exception& e) {
     std::cerr << "contact_problems: " << e.what() << "\n";

@@ -19,6 +19,7 @@ const std::string kScenario = std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examp
 std::string chosen(const Scene& s, const std::string& key) {
   if (key == "solver.order") return std::to_string(static_cast<int>(s.solver.order));
   if (key == "solver.method") return s.solver.method;
+  if (key == "solver.merit") return s.solver.merit;
   if (key == "fracture.joint_stiffness") return std::to_string(s.fracture.elastic_joints);
   if (key == "solver.broadphase") return std::to_string(static_cast<int>(s.solver.broadphase));
   if (key == "flow.model") return std::to_string(static_cast<int>(s.flow.model));
