@@ -148,7 +148,10 @@ class DualProblem {
     gather(rows_free_, rows_free_);
     // the merit's q: the contacts' free velocity, the joints folded (the local form's q;
     // with a rigid joint row, without them)
-    merit_.emplace(merit_kind, p, nj_ ? local_q(global_form(p)) : Eigen::VectorXd(rows_free_.head(3 * nc_)), mu_);
+    if (nj_)
+      merit_.emplace(merit_kind, p, local_q(global_form(p)), mu_);
+    else
+      merit_.emplace(merit_kind, p, rows_free_.head(3 * nc_), mu_);
   }
 
   bool folded() const { return folded_; }

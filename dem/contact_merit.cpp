@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "dem/constants.hpp"
 
@@ -33,8 +34,9 @@ Eigen::VectorXd contact_masses(const ContactProblem& p) {
   return masses;
 }
 
-Merit::Merit(MeritKind kind, const Eigen::VectorXd& q, Eigen::VectorXd masses, Eigen::VectorXd mu, double dt)
-    : kind_(kind), masses_(std::move(masses)), mu_(std::move(mu)) {
+Merit::Merit(MeritKind kind, const Eigen::Ref<const Eigen::VectorXd>& q, Eigen::VectorXd masses,
+             const Eigen::VectorXd& mu, double dt)
+    : kind_(kind), masses_(kind == MeritKind::kImpulse ? std::move(masses) : Eigen::VectorXd()), mu_(mu) {
   q_norm_ = q.norm();
   if (kind_ != MeritKind::kImpulse) return;
   double approach = 0.0;
@@ -47,15 +49,7 @@ Merit::Merit(MeritKind kind, const Eigen::VectorXd& q, Eigen::VectorXd masses, E
 
 double Merit::with_joints(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
                           double joint_norm) const {
-  double sum = 0.0;
-  for (int c = 0; c < mu_.size(); ++c) {
-    const double rho = kind_ == MeritKind::kImpulse ? masses_(c) : 1.0;
-    const Eigen::Vector3d rc = r.segment<3>(3 * c), uc = u.segment<3>(3 * c);
-    Eigen::Vector3d shifted = uc;
-    shifted(0) += mu_(c) * tangential_norm(uc(1), uc(2));
-    sum += (rc - project_on_cone(rc - rho * shifted, mu_(c))).squaredNorm();
-  }
-  const double numerator = std::sqrt(sum + joint_norm * joint_norm);
+  const double numerator = std::sqrt(natural_map_squared(r, u, mu_, masses_) + joint_norm * joint_norm);
   const double scale = kind_ == MeritKind::kImpulse ? std::max(r.norm(), floor_)
                                                     : std::max({q_norm_, r.norm(), u.norm()});
   // as Siconos: divide only by a scale above round-off

@@ -28,7 +28,6 @@
 #pragma once
 
 #include <string>
-#include <utility>
 
 #include <Eigen/Core>
 
@@ -51,11 +50,13 @@ class Merit {
   /// `q`: the contacts' velocities at zero impulse (the local form's q, joints folded in);
   /// `masses`: contact_masses (unused by "siconos": may be empty); `mu` per contact; `dt`:
   /// the step, s.
-  Merit(MeritKind kind, const Eigen::VectorXd& q, Eigen::VectorXd masses, Eigen::VectorXd mu, double dt);
+  /// `mu` is kept by reference: it must outlive the merit.
+  Merit(MeritKind kind, const Eigen::Ref<const Eigen::VectorXd>& q, Eigen::VectorXd masses, const Eigen::VectorXd& mu,
+        double dt);
   /// The merit of problem p's contacts: the masses computed only where the kind uses them
   /// (every island of every step builds one).
-  Merit(MeritKind kind, const ContactProblem& p, const Eigen::VectorXd& q, Eigen::VectorXd mu)
-      : Merit(kind, q, kind == MeritKind::kImpulse ? contact_masses(p) : Eigen::VectorXd(), std::move(mu), p.dt) {}
+  Merit(MeritKind kind, const ContactProblem& p, const Eigen::Ref<const Eigen::VectorXd>& q, const Eigen::VectorXd& mu)
+      : Merit(kind, q, kind == MeritKind::kImpulse ? contact_masses(p) : Eigen::VectorXd(), mu, p.dt) {}
 
   MeritKind kind() const { return kind_; }
 
@@ -74,7 +75,8 @@ class Merit {
   MeritKind kind_;
   double q_norm_ = 0;    // siconos: |q|
   double floor_ = 0;     // impulse: max(|rho q_N^-|, g h |rho|), N s
-  Eigen::VectorXd masses_, mu_;
+  Eigen::VectorXd masses_;  // impulse: each contact's rho; empty for siconos (rho = 1)
+  const Eigen::VectorXd& mu_;
 };
 
 }  // namespace icedem

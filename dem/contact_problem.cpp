@@ -209,15 +209,22 @@ Eigen::VectorXd velocities(const GlobalForm& g, const Eigen::VectorXd& r, const 
   return v;
 }
 
-double natural_map_residual(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
-                            const Eigen::VectorXd& mu, double q_norm) {
+double natural_map_squared(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
+                           const Eigen::VectorXd& mu, const Eigen::VectorXd& rho) {
   double sum = 0.0;
   for (int c = 0; c < mu.size(); ++c) {
     const Eigen::Vector3d rc = r.segment<3>(3 * c), uc = u.segment<3>(3 * c);
     Eigen::Vector3d shifted = uc;
     shifted(0) += mu(c) * tangential_norm(uc(1), uc(2));
+    if (rho.size()) shifted *= rho(c);
     sum += (rc - project_on_cone(rc - shifted, mu(c))).squaredNorm();
   }
+  return sum;
+}
+
+double natural_map_residual(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
+                            const Eigen::VectorXd& mu, double q_norm) {
+  const double sum = natural_map_squared(r, u, mu, Eigen::VectorXd());
   const double scale = std::max({q_norm, r.norm(), u.norm()});
   // Siconos divides only by a scale above round-off
   return scale > std::numeric_limits<double>::epsilon() ? std::sqrt(sum) / scale : std::sqrt(sum);

@@ -157,6 +157,10 @@ double natural_map_residual(const Eigen::Ref<const Eigen::VectorXd>& r, const Ei
                             const Eigen::VectorXd& mu, double q_norm);
 /// The same on the local form, with u = W r + q.
 double natural_map_residual(const LocalForm& local, const Eigen::VectorXd& r);
+/// The natural map's squared norm before any normalisation, |r - P_K(r - rho (u + (mu |u_T|, 0, 0)))|^2
+/// summed over the contacts, rho per contact (empty: 1, Siconos' map).
+double natural_map_squared(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
+                           const Eigen::VectorXd& mu, const Eigen::VectorXd& rho);
 
 /// |(t1, t2)|. Not std::hypot: its guard against overflow (at 1e154) costs about ten
 /// times the square root, and it was 12 % of a run's CPU in the contact methods;
