@@ -378,9 +378,13 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   problem.island = report_.islands;
   MethodOptions options;
   // a joint's load is its elements' relative velocity over its compliance: the contacts'
-  // error reaches the joints' failure ratios magnified (docs/model/convergence.md)
-  options.tolerance = problem.joints.empty() ? settings_.merit_tolerance
-                                             : std::min(settings_.merit_tolerance, settings_.joint_merit_tolerance);
+  // error reaches the joints' failure ratios magnified (docs/model/convergence.md); the
+  // structure's load is read off its island's impulses, which a loose solve leaves low
+  // along the force chains (docs/model/convergence.md, the solve's own error)
+  options.tolerance = settings_.merit_tolerance;
+  if (!problem.joints.empty()) options.tolerance = std::min(options.tolerance, settings_.joint_merit_tolerance);
+  if (std::any_of(problem.contacts.begin(), problem.contacts.end(), [](const ProblemContact& c) { return c.on_structure; }))
+    options.tolerance = std::min(options.tolerance, settings_.structure_merit_tolerance);
   options.max_iterations = settings_.method_iterations;
   options.merit = merit_kind(settings_.merit);
   options.warm_start = true;  // from the rows' warm start (solver.warm_start of the last step's)

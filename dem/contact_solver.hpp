@@ -87,6 +87,7 @@ struct ContactSolverSettings {
   double merit_tolerance = 1e-6;
   std::string merit = "siconos";  // what merit_tolerance bounds (dem/contact_merit.hpp)
   double joint_merit_tolerance = 1e-6;  // an island with joint rows: the smaller of the two
+  double structure_merit_tolerance = 1e-6;  // an island touching the structure: likewise
   int method_iterations = 300;
   // cap of the split-impulse position sweeps (pseudo-impulses that push penetrating contacts
   // apart, apart from the contact impulses); they stop earlier at `tolerance`

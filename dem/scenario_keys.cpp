@@ -99,6 +99,11 @@ std::vector<KeySpec> make_keys() {
                    "its compliance, so a loose solve's error reaches the joints' failure ratios magnified (one "
                    "seed of the 0.15 m lattices broke 10 joints at 1e-3, none at 1e-4 or 1e-5; "
                    "docs/model/convergence.md)"));
+  k.push_back(real("solver.structure_merit_tolerance", "-", 1e-3, 1e-14, 1.0,
+                   "solver.method other than \"pgs\": the merit an island touching the structure is solved "
+                   "to, if below solver.merit_tolerance: the structure's load is read off that island's "
+                   "impulses, and a loose solve leaves it low along the force chains (on the paper's "
+                   "small-floe run, 3-5 % low at 1e-3; docs/model/convergence.md)"));
   k.push_back(integer("solver.method_iterations", 1000, 1, 100000,
                       "solver.method other than \"pgs\": cap of the method's iterations per island and Bullet "
                       "step (Newton steps, or sweeps)"));

@@ -52,6 +52,7 @@ struct SolverSettings {
   double merit_tolerance;     // -, merit that ends a method's solve
   std::string merit;          // which: "impulse" (forces relative to forces) or "siconos" (dem/contact_merit.hpp)
   double joint_merit_tolerance;  // -, the same for an island with joint rows, if smaller
+  double structure_merit_tolerance;  // -, the same for an island touching the structure, if smaller
   int method_iterations;      // cap of the method's iterations per island and Bullet step
   int position_iterations;    // cap of the split-impulse position sweeps per island and Bullet step
 };

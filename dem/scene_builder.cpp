@@ -113,6 +113,7 @@ Scene make_scene(const Scenario& sc) {
   s.solver.merit_tolerance = real(sc, "solver.merit_tolerance");
   s.solver.merit = get<std::string>(sc, "solver.merit");
   s.solver.joint_merit_tolerance = real(sc, "solver.joint_merit_tolerance");
+  s.solver.structure_merit_tolerance = real(sc, "solver.structure_merit_tolerance");
   s.solver.method_iterations = integer(sc, "solver.method_iterations");
   s.solver.position_iterations = integer(sc, "solver.position_iterations");
 

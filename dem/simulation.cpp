@@ -105,6 +105,7 @@ SolverSummary solver_summary(const Scene& scene, const RunHistory& h, const RunS
   v.cap = sweeps ? scene.solver.iterations : scene.solver.method_iterations;
   v.tolerance = sweeps ? scene.solver.tolerance : scene.solver.merit_tolerance;
   v.joint_tolerance = sweeps ? 0.0 : std::min(scene.solver.merit_tolerance, scene.solver.joint_merit_tolerance);
+  v.structure_tolerance = sweeps ? 0.0 : std::min(scene.solver.merit_tolerance, scene.solver.structure_merit_tolerance);
   long window_steps = 0, window_capped = 0;
   for (std::size_t i = 0; i < h.diagnostics.size(); ++i) {
     const StepDiagnostics& d = h.diagnostics[i];

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "dem/constants.hpp"
 #include "dem/joint_loads.hpp"
@@ -19,6 +20,16 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// the tighter merits of islands with joints and of islands touching the structure, if any
+std::string tighter_islands(const SolverSummary& v) {
+  std::vector<std::string> parts;
+  if (v.joint_tolerance > 0 && v.joint_tolerance < v.tolerance) parts.push_back(fmt::format("{:g} with joints", v.joint_tolerance));
+  if (v.structure_tolerance > 0 && v.structure_tolerance < v.tolerance)
+    parts.push_back(fmt::format("{:g} on the structure", v.structure_tolerance));
+  if (parts.empty()) return "";
+  return " (" + fmt::format("{}", fmt::join(parts, ", ")) + ")";
+}
+
 // sweeps per step, and a warning when the cap, not the tolerance, ended the sweeps
 // of many steps: the loads of those steps are not converged (docs/model/convergence.md)
 std::string solver_line(const SolverSummary& v) {
@@ -30,9 +41,7 @@ std::string solver_line(const SolverSummary& v) {
              : fmt::format("  contact solver ({}): {:.1f} iterations per step on average, at most {:d} (cap {:d}), "
                            "merit tolerance {:g}{}, largest merit {:.2g}\n",
                            v.method, v.iterations_mean, v.iterations_max, v.cap, v.tolerance,
-                           v.joint_tolerance > 0 && v.joint_tolerance < v.tolerance
-                               ? fmt::format(" ({:g} with joints)", v.joint_tolerance)
-                               : "",
+                           tighter_islands(v),
                            v.residual_max);
   if (v.tolerance > 0 && v.capped_window_fraction > SolverSummary::kCappedWarning)
     out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached {} = {:d} before "
@@ -213,7 +222,7 @@ const std::vector<SummaryField>& summary_fields() {
        }},
       {"solver", "", false, false,
        "the contact solver over the run: method (solver.method), cap, tolerance, joint_tolerance (islands with "
-       "joints; 0 for pgs), iterations_mean and "
+       "joints; 0 for pgs), structure_tolerance (islands touching the structure; 0 for pgs), iterations_mean and "
        "iterations_max (sweeps per step, or the method's iterations), capped_steps, capped_window_fraction (share of "
        "the window's steps that hit the cap unconverged), residual_max (the sweeps' residual, or the method's merit)",
        [](S s) {
@@ -221,6 +230,7 @@ const std::vector<SummaryField>& summary_fields() {
                      {"cap", s.solver.cap},
                      {"tolerance", s.solver.tolerance},
                      {"joint_tolerance", s.solver.joint_tolerance},
+                     {"structure_tolerance", s.solver.structure_tolerance},
                      {"iterations_mean", s.solver.iterations_mean},
                      {"iterations_max", s.solver.iterations_max},
                      {"capped_steps", s.solver.capped_steps},

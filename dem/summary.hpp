@@ -23,6 +23,7 @@ struct SolverSummary {
   int cap = 0;                    // solver.iterations (pgs), solver.method_iterations (newton)
   double tolerance = 0;           // solver.tolerance (pgs), solver.merit_tolerance (newton)
   double joint_tolerance = 0;     // islands with joints (methods other than pgs): the smaller merit tolerance
+  double structure_tolerance = 0; // islands touching the structure: likewise
   double iterations_mean = 0;     // per step, the most sweeps an island used, averaged over the run
   int iterations_max = 0;
   long capped_steps = 0;          // steps in which an island reached the cap unconverged

@@ -69,6 +69,7 @@ World::World(const WorldSettings& settings)
   contact.merit_tolerance = solver.merit_tolerance;
   contact.merit = solver.merit;
   contact.joint_merit_tolerance = solver.joint_merit_tolerance;
+  contact.structure_merit_tolerance = solver.structure_merit_tolerance;
   contact.method_iterations = solver.method_iterations;
   contact.position_iterations = solver.position_iterations;
   solver_ = std::make_unique<ContactSolver>(contact);

@@ -36,15 +36,17 @@ class Keep : public ProblemObserver {
 };
 
 // `method`: "pgs", the sweeps to `tolerance`; another contact method: to a merit of
-// `tolerance`; either at most `cap` sweeps or iterations
+// `tolerance` (`structure_tolerance` on an island touching the structure, if smaller);
+// either at most `cap` sweeps or iterations
 inline std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, double tolerance = 1e-9,
-                                                   const std::string& method = "pgs") {
+                                                   const std::string& method = "pgs", double structure_tolerance = 1.0) {
   ContactSolverSettings s;
   s.iterations = cap;
   s.tolerance = tolerance;
   s.friction_warm_start = true;
   s.method = method;
   s.merit_tolerance = tolerance;
+  s.structure_merit_tolerance = structure_tolerance;
   s.method_iterations = cap;
   auto solver = std::make_unique<ContactSolver>(s);
   solver->set_observer(&keep);
@@ -117,7 +119,8 @@ inline constexpr double kRowMu = 0.3, kBoxMass = 1.0, kHalf = 0.05, kPlateSpeed 
 // the plate's speed, the plate touching the first. Frictionless side walls keep the row
 // from buckling. The problem of the first step is captured: its answer is known exactly,
 // where later steps depend on how well the steps before them were solved. The step is
-// solved by `method` (dem/contact_solver.hpp: "pgs" or a contact method) to `tolerance`.
+// solved by `method` (dem/contact_solver.hpp: "pgs" or a contact method) to `tolerance`,
+// or to `structure_tolerance` if smaller (the row touches the plate, the structure).
 struct RowStep {
   ContactProblem problem;
   SolverAnswer answer;           // what the solver ended the step with
@@ -125,9 +128,9 @@ struct RowStep {
   double box_speed_min = 0, box_speed_max = 0;  // m/s, surge velocity of the boxes after the step
   double boundary_load = 0;      // N, what the fixed floor and walls take off the plate (dem/boundary_load.hpp)
 };
-inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e-9) {
+inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e-9, double structure_tolerance = 1.0) {
   Keep keep;
-  Bench bench(tight_solver(keep, 2000, tolerance, method));
+  Bench bench(tight_solver(keep, 2000, tolerance, method, structure_tolerance));
   auto* solver = static_cast<ContactSolver*>(bench.world().getConstraintSolver());
   bench.world().getSolverInfo().m_numIterations = 2000;
   bench.world().getSolverInfo().m_warmstartingFactor = 1.0;

@@ -45,6 +45,24 @@ TEST(ContactApgd, InTheRunTheRowsHoldTheAnswer) {
   EXPECT_NEAR(s.box_speed_max, kPlateSpeed, 1e-6 * kPlateSpeed);
 }
 
+// solver.structure_merit_tolerance: an island touching the structure (the row touches the
+// plate) is solved to that merit when it is below solver.merit_tolerance
+TEST(ContactApgd, TheIslandOnTheStructureIsSolvedToItsOwnTolerance) {
+  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;
+  // a loose merit alone stops early: the plate's impulse is off by more than 1e-6 of it
+  const RowStep loose = sliding_row_step("apgd", 1e-2);
+  EXPECT_GT(loose.answer.residual, 1e-8);
+  EXPECT_GT(std::abs(loose.plate_impulse - expected), 1e-6 * expected);
+  // the same loose merit with 1e-8 on the structure's island: the run's answer as at 1e-8
+  // everywhere (ContactApgd.InTheRunTheRowsHoldTheAnswer)
+  const RowStep tight = sliding_row_step("apgd", 1e-2, 1e-8);
+  EXPECT_FALSE(tight.answer.capped) << "merit " << tight.answer.residual;
+  EXPECT_LE(tight.answer.residual, 1e-8);
+  EXPECT_NEAR(tight.plate_impulse, expected, 1e-6 * expected);
+  std::printf("sliding row: plate impulse off by %.2e of it at a merit of 1e-2, %.2e with 1e-8 on the structure\n",
+              std::abs(loose.plate_impulse - expected) / expected, std::abs(tight.plate_impulse - expected) / expected);
+}
+
 TEST(ContactApgd, LatticeJointRowsGiveTheFoldedAnswer) {
   Keep keep;
   pushed_lattices(keep);
