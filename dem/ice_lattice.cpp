@@ -122,7 +122,7 @@ void wake_lattice(World& world, DormantLattice& lattice) {
     // rigid-body motion of the stand-in at the element's place
     e.setLinearVelocity(v + omega.cross(pose.getOrigin() - T.getOrigin()));
     e.setAngularVelocity(omega);
-    world.dynamics().addRigidBody(&e);
+    world.enter_world(e);
     // awake: the structure is near (the sleep clock starts again)
     e.forceActivationState(sleeping ? ACTIVE_TAG : DISABLE_DEACTIVATION);
     e.setDeactivationTime(0);
@@ -165,7 +165,7 @@ bool make_dormant(World& world, DormantLattice& lattice) {
   w.getMotionState()->setWorldTransform(T);
   w.setLinearVelocity(v / n);
   w.setAngularVelocity(omega / n);
-  world.dynamics().addRigidBody(&w);
+  world.enter_world(w);
   w.forceActivationState(!world.settings().activation.sleeping ? DISABLE_DEACTIVATION
                          : awake                                ? ACTIVE_TAG
                                                                 : ISLAND_SLEEPING);

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include "dem/constants.hpp"
+#include "dem/errors.hpp"
 
 namespace icedem {
 namespace {
@@ -55,7 +58,8 @@ World::World(const WorldSettings& settings)
   collision_config_ = std::make_unique<btDefaultCollisionConfiguration>();
   dispatcher_ = std::make_unique<btCollisionDispatcher>(collision_config_.get());
   if (solver.broadphase == Broadphase::kSweepAndPrune) {
-    broadphase_ = std::make_unique<bt32BitAxisSweep3>(to_bt(settings.bounds.min()), to_bt(settings.bounds.max()), 65536);
+    broadphase_ = std::make_unique<bt32BitAxisSweep3>(to_bt(settings.bounds.min()), to_bt(settings.bounds.max()),
+                                                      kSweepAndPruneBodies + 1);
   } else {
     broadphase_ = std::make_unique<btDbvtBroadphase>();
   }
@@ -145,7 +149,7 @@ void World::add_structure(std::unique_ptr<btCollisionShape> shape, const Eigen::
   body->setRestitution(0);
   body->setUserIndex(kStructure);
   body->setUserIndex2(-1);  // its place in the solver's canonical order (ContactSolver)
-  dynamics_->addRigidBody(body.get());
+  enter_world(*body);
   structure_ = body.get();
   solver_->set_structure(structure_);
   static_shapes_.push_back(std::move(shape));
@@ -169,7 +173,7 @@ btRigidBody* World::add_static_box(const Eigen::Vector3d& centre, const Eigen::V
   // fixed bodies are numbered -2, -3, ... in the order they are made (ice bodies 0, 1, ...):
   // every body's place in the solver's canonical order (ContactSolver)
   body->setUserIndex2(-2 - fixed_boxes_++);
-  dynamics_->addRigidBody(body.get());
+  enter_world(*body);
   btRigidBody* raw = body.get();
   static_shapes_.push_back(std::move(shape));
   bodies_.push_back(std::move(body));
@@ -193,7 +197,7 @@ int World::add_body(const FloeShape& shape, const btTransform& pose, int floe_id
   const int index = static_cast<int>(floes_.size());
   floes_.push_back(FloeBody{body.get(), floe_id, &shape, false, fragment});
   if (in_world) {
-    dynamics_->addRigidBody(body.get());
+    enter_world(*body);
     // floes start at rest at their equilibrium draft: asleep until something touches them
     body->setActivationState(a.sleeping ? ISLAND_SLEEPING : DISABLE_DEACTIVATION);
   } else {
@@ -218,6 +222,21 @@ void World::set_structure_target(const Eigen::Vector3d& position) {
   pose.setIdentity();
   pose.setOrigin(to_bt(position));
   structure_->getMotionState()->setWorldTransform(pose);
+}
+
+void require_sweep_and_prune_room(std::size_t bodies) {
+  if (bodies <= static_cast<std::size_t>(kSweepAndPruneBodies)) return;
+  throw InputError(fmt::format("solver.broadphase = \"sap\" holds at most {} bodies in the world, and this scene "
+                               "needs at least {} (floes, lattice elements, boundaries, structure): use "
+                               "solver.broadphase = \"dbvt\", the default, which has no limit",
+                               kSweepAndPruneBodies, bodies));
+}
+
+void World::enter_world(btRigidBody& body) {
+  // Bullet's sweep and prune has a fixed number of handles and writes past them (a crash)
+  if (settings_.solver.broadphase == Broadphase::kSweepAndPrune)
+    require_sweep_and_prune_room(static_cast<std::size_t>(dynamics_->getNumCollisionObjects()) + 1);
+  dynamics_->addRigidBody(&body);
 }
 
 int World::awake_floes() const {

@@ -33,6 +33,13 @@
 
 namespace icedem {
 
+/// The bodies the sweep-and-prune broadphase (solver.broadphase = "sap") can hold: Bullet
+/// sizes it when the world is made (each handle costs about 150 bytes up front).
+inline constexpr int kSweepAndPruneBodies = 65535;
+
+/// Throws InputError, naming solver.broadphase, if `bodies` exceed kSweepAndPruneBodies.
+void require_sweep_and_prune_room(std::size_t bodies);
+
 /// What a collision object is made of; stored in btCollisionObject::userIndex
 /// and read by the friction rule.
 enum Material : int { kIce = 1, kStructure = 2, kBoundary = 3 };
@@ -153,6 +160,10 @@ class World {
   /// Breakable floes that start as one rigid body (fracture.lattice_radius > 0).
   std::vector<DormantLattice>& lattices() { return lattices_; }
   const std::vector<DormantLattice>& lattices() const { return lattices_; }
+
+  /// Put a body made by the world into Bullet's world (every body enters through here).
+  /// Throws InputError if the sweep-and-prune broadphase is full (kSweepAndPruneBodies).
+  void enter_world(btRigidBody& body);
 
   /// Number of ice bodies currently awake (simulated).
   int awake_floes() const;

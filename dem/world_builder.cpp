@@ -124,6 +124,8 @@ void add_floes(World& world, const Scene& scene, const std::vector<Floe>& floes)
 }
 
 std::unique_ptr<World> build_world(const Scene& scene, const std::vector<Floe>& floes) {
+  // at once, not after filling the sweep and prune up to its limit (World::enter_world)
+  if (scene.solver.broadphase == Broadphase::kSweepAndPrune) require_sweep_and_prune_room(floes.size());
   auto world = std::make_unique<World>(world_settings(scene));
   add_profile_structure(*world, scene);
   add_boundaries(*world, scene);

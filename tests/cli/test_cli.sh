@@ -28,6 +28,14 @@ echo keep > keep.h5
 "$icedem" run "$src/scenarios/examples/short_tow.toml" -o no/such/dir/x.h5 >/dev/null 2>&1; code=$?
 [ $code -eq 2 ] && ok "missing output directory exits 2" || fail "missing output directory exit code $code"
 
+# 2c. a field too large for the sweep-and-prune broadphase: exit 2 naming the key (was a
+# crash: Bullet's sweep and prune writes past its fixed number of handles), nothing written
+rm -f sap.h5
+msg=$("$icedem" run "$src/scenarios/paper/small_floes.toml" -o sap.h5 -q --set channel.length=2400 \
+      --set solver.broadphase=sap 2>&1); code=$?
+[ $code -eq 2 ] && echo "$msg" | grep -q 'solver.broadphase = "sap" holds at most 65535 bodies' && [ ! -e sap.h5 ] \
+  && ok "96000 floes with the sweep and prune: exit 2 naming solver.broadphase" || fail "sap limit: exit $code: $msg"
+
 # 3. check validates only
 "$icedem" check "$src/scenarios/paper/small_floes.toml" >/dev/null && ok "check accepts the paper scenario" \
   || fail "check rejected the paper scenario"
