@@ -1,6 +1,9 @@
 #include "dem/world.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -126,11 +129,21 @@ World::World(const WorldSettings& settings)
 }
 
 World::~World() {
-  // joints and bodies out of the world before the world goes
+  // joints out of the world before the world goes
   for (IceJoint& j : joints_)
     if (j.constraint) dynamics_->removeConstraint(j.constraint.get());
-  for (auto& body : bodies_) dynamics_->removeRigidBody(body.get());
-  broadphase_->getOverlappingPairCache()->setOverlapFilterCallback(nullptr);
+  // Then the pairs, all in one pass, and Bullet's world, which frees the boxes of the bodies
+  // in it. Removing the bodies one by one cleaned each one's pairs by a pass over all pairs
+  // and found it in Bullet's arrays by a linear search: minutes for a 96,000-floe field.
+  btOverlappingPairCache& pairs = *broadphase_->getOverlappingPairCache();
+  btBroadphasePairArray& all = pairs.getOverlappingPairArray();
+  while (all.size() > 0) {
+    btBroadphaseProxy* a = all[all.size() - 1].m_pProxy0;
+    btBroadphaseProxy* b = all[all.size() - 1].m_pProxy1;
+    pairs.removeOverlappingPair(a, b, dispatcher_.get());
+  }
+  pairs.setOverlapFilterCallback(nullptr);
+  dynamics_.reset();  // before the bodies, which are declared after it and so would go first
 }
 
 void World::add_structure(std::unique_ptr<btCollisionShape> shape, const Eigen::Vector3d& position,
@@ -222,6 +235,36 @@ void World::set_structure_target(const Eigen::Vector3d& position) {
   pose.setIdentity();
   pose.setOrigin(to_bt(position));
   structure_->getMotionState()->setWorldTransform(pose);
+}
+
+void World::settle_broadphase() {
+  auto* dbvt = dynamic_cast<btDbvtBroadphase*>(broadphase_.get());
+  if (!dbvt) return;
+  dbvt->m_sets[btDbvtBroadphase::DYNAMIC_SET].optimizeTopDown();  // so that taking leaves out is cheap
+  std::vector<btDbvtProxy*> resting;
+  for (int stage = 0; stage < btDbvtBroadphase::STAGECOUNT; ++stage) {
+    for (btDbvtProxy* p = dbvt->m_stageRoots[stage]; p; p = p->links[1]) resting.push_back(p);
+    dbvt->m_stageRoots[stage] = nullptr;
+  }
+  for (btDbvtProxy* p : resting) dbvt->m_sets[btDbvtBroadphase::DYNAMIC_SET].remove(p->leaf);
+  // into the fixed tree in a shuffled order (a fixed sequence: the same tree every run), then
+  // rebuilt top-down: the order the bodies were made in is row by row
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  for (std::size_t i = resting.size(); i > 1; --i) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;  // Knuth's LCG
+    std::swap(resting[i - 1], resting[(state >> 33) % i]);
+  }
+  btDbvtProxy*& fixed = dbvt->m_stageRoots[btDbvtBroadphase::STAGECOUNT];
+  for (btDbvtProxy* p : resting) {
+    p->leaf = dbvt->m_sets[btDbvtBroadphase::FIXED_SET].insert(btDbvtVolume::FromMM(p->m_aabbMin, p->m_aabbMax), p);
+    p->stage = btDbvtBroadphase::STAGECOUNT;
+    p->links[0] = nullptr;
+    p->links[1] = fixed;
+    if (fixed) fixed->links[0] = p;
+    fixed = p;
+  }
+  dbvt->m_sets[btDbvtBroadphase::FIXED_SET].optimizeTopDown();
+  dbvt->m_needcleanup = true;
 }
 
 void require_sweep_and_prune_room(std::size_t bodies) {
