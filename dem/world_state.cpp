@@ -143,6 +143,7 @@ void restore_world(World& world, const WorldState& s) {
     body.updateInertiaTensor();
     if (b.in_world && !body.isStaticObject()) body.forceActivationState(ACTIVE_TAG);
   }
+  world.update_boxes_shuffled();  // before Bullet's pass updates them in the order they were made
   world.dynamics().performDiscreteCollisionDetection();
 
   // the contact points of every pair as they were, in the manifold Bullet's algorithm for the
@@ -194,6 +195,7 @@ void restore_world(World& world, const WorldState& s) {
     body.forceActivationState(b.activation);
     body.setDeactivationTime(b.deactivation_time);
   }
+  world.settle_broadphase();  // the resting boxes into a balanced tree, as after building it
 }
 
 }  // namespace icedem
