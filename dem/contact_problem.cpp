@@ -181,6 +181,10 @@ Eigen::Vector3d structure_impulse(const ContactProblem& p, const Eigen::VectorXd
   return total;
 }
 
+bool touches_structure(const ContactProblem& p) {
+  return std::any_of(p.contacts.begin(), p.contacts.end(), [](const ProblemContact& c) { return c.on_structure; });
+}
+
 double local_q_norm(const ContactProblem& p) { return local_q_norm(global_form(p)); }
 
 double local_q_norm(const GlobalForm& g) { return g.Jc.rows() == 0 ? 0.0 : local_q(g).norm(); }

@@ -142,6 +142,9 @@ double local_q_norm(const GlobalForm& g);
 /// q itself (3 per contact), as local_q_norm computes it.
 Eigen::VectorXd local_q(const GlobalForm& g);
 
+/// Whether a contact of the problem is on the structure (its impulses make the load).
+bool touches_structure(const ContactProblem& p);
+
 /// The impulse the contacts on the structure give it over the step, N s, tank frame:
 /// the ice load times the step.
 Eigen::Vector3d structure_impulse(const ContactProblem& p, const Eigen::VectorXd& r);

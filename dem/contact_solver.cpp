@@ -26,7 +26,8 @@ double ContactSolver::remaining_error(double change, double previous_change, int
   return change / (1.0 - rate);
 }
 
-ContactSolver::ContactSolver(const ContactSolverSettings& settings) : settings_(settings) {
+ContactSolver::ContactSolver(const ContactSolverSettings& settings)
+    : settings_(settings), merit_(merit_kind(settings.merit)) {
   if (settings_.method != "pgs") method_ = make_contact_method(settings_.method);
 }
 
@@ -383,10 +384,9 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   // along the force chains (docs/model/convergence.md, the solve's own error)
   options.tolerance = settings_.merit_tolerance;
   if (!problem.joints.empty()) options.tolerance = std::min(options.tolerance, settings_.joint_merit_tolerance);
-  if (std::any_of(problem.contacts.begin(), problem.contacts.end(), [](const ProblemContact& c) { return c.on_structure; }))
-    options.tolerance = std::min(options.tolerance, settings_.structure_merit_tolerance);
+  if (touches_structure(problem)) options.tolerance = std::min(options.tolerance, settings_.structure_merit_tolerance);
   options.max_iterations = settings_.method_iterations;
-  options.merit = merit_kind(settings_.merit);
+  options.merit = merit_;
   options.warm_start = true;  // from the rows' warm start (solver.warm_start of the last step's)
   SolverAnswer answer = method_->solve(problem, options);
   apply_impulses(answer);

@@ -210,6 +210,7 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   ContactSolverSettings settings_;
   const btCollisionObject* structure_ = nullptr;
   ProblemObserver* observer_ = nullptr;
+  MeritKind merit_;                            // settings_.merit
   std::unique_ptr<ContactMethod> method_;     // null: the sweeps
   SolverReport report_;
   std::vector<StructureRow> structure_rows_;  // of the current group

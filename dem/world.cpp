@@ -65,7 +65,9 @@ World::World(const WorldSettings& settings)
     broadphase_ = std::make_unique<bt32BitAxisSweep3>(to_bt(settings.bounds.min()), to_bt(settings.bounds.max()),
                                                       kSweepAndPruneBodies + 1);
   } else {
-    broadphase_ = std::make_unique<btDbvtBroadphase>();
+    auto dbvt = std::make_unique<btDbvtBroadphase>();
+    dbvt_ = dbvt.get();
+    broadphase_ = std::move(dbvt);
   }
   ContactSolverSettings contact;
   contact.iterations = solver.iterations;
@@ -239,14 +241,14 @@ void World::set_structure_target(const Eigen::Vector3d& position) {
 }
 
 namespace {
-// `items` in the same shuffled order on every machine (Fisher-Yates on Knuth's 64-bit LCG):
-// Bullet's dbvt inserts boxes one at a time, and in the order the bodies were made (row by
-// row) that builds a chain, not a tree
 // A dbvt rebuilt top-down splits its boxes down to groups of this many, which it joins
 // bottom-up at a cost of the cube of the group (Bullet's default, 128, made one rebuild of
 // 96,000 boxes cost about a second)
 constexpr int kBottomUpLeaves = 8;
 
+// `items` in the same shuffled order on every machine (Fisher-Yates on Knuth's 64-bit LCG):
+// Bullet's dbvt inserts boxes one at a time, and in the order the bodies were made (row by
+// row) that builds a chain, not a tree
 template <class T>
 void shuffle_fixed(std::vector<T>& items) {
   std::uint64_t state = 0x9E3779B97F4A7C15ull;
@@ -268,8 +270,8 @@ void World::update_boxes_shuffled() {
 }
 
 void World::settle_broadphase() {
-  auto* dbvt = dynamic_cast<btDbvtBroadphase*>(broadphase_.get());
-  if (!dbvt) return;
+  if (!dbvt_) return;
+  btDbvtBroadphase* dbvt = dbvt_;
   dbvt->m_sets[btDbvtBroadphase::DYNAMIC_SET].optimizeTopDown(kBottomUpLeaves);  // taking leaves out is then cheap
   std::vector<btDbvtProxy*> resting;
   for (int stage = 0; stage < btDbvtBroadphase::STAGECOUNT; ++stage) {
@@ -308,8 +310,8 @@ void World::enter_world(btRigidBody& body) {
   // made row by row, each floe nearest the one before, grows a chain: 96,000 floes took 5 s
   // to enter. Rebuilt balanced every 4 sqrt(N) entries, the chain stays that short, and the
   // entries and rebuilds cost about N^1.5 together.
-  if (auto* dbvt = dynamic_cast<btDbvtBroadphase*>(broadphase_.get())) {
-    btDbvt& moving = dbvt->m_sets[btDbvtBroadphase::DYNAMIC_SET];
+  if (dbvt_) {
+    btDbvt& moving = dbvt_->m_sets[btDbvtBroadphase::DYNAMIC_SET];
     if (++entered_since_rebuild_ >= std::max(256.0, 4.0 * std::sqrt(static_cast<double>(moving.m_leaves)))) {
       moving.optimizeTopDown(kBottomUpLeaves);
       entered_since_rebuild_ = 0;

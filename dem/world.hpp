@@ -201,6 +201,7 @@ class World {
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
   std::unique_ptr<btBroadphaseInterface> broadphase_;
+  btDbvtBroadphase* dbvt_ = nullptr;  // broadphase_ when it is the dbvt (the default), else null
   std::unique_ptr<ContactSolver> solver_;
   std::unique_ptr<btSimulationIslandManager> island_manager_;  // must outlive dynamics_
   std::unique_ptr<DynamicsWorld> dynamics_;

@@ -228,9 +228,7 @@ int errors_command(const std::vector<std::string>& files, const std::string& met
     const ProblemFile file = read_problem_file(path);
     const ContactProblem& p = file.problem;
     // an island that neither touches the structure nor holds a joint reaches no reported load
-    if (loaded_only && p.joints.empty() &&
-        std::none_of(p.contacts.begin(), p.contacts.end(), [](const ProblemContact& c) { return c.on_structure; }))
-      continue;
+    if (loaded_only && p.joints.empty() && !touches_structure(p)) continue;
     const LocalForm local = local_form(p);
     const Merit impulse(MeritKind::kImpulse, local.q, contact_masses(p), local.mu, p.dt);
     double ref_merit = 0;
