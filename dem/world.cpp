@@ -259,12 +259,7 @@ void shuffle_fixed(std::vector<T>& items) {
 }
 }  // namespace
 
-void World::update_boxes_shuffled() {
-  std::vector<btCollisionObject*> objects;
-  const btCollisionObjectArray& all = dynamics_->getCollisionObjectArray();
-  objects.reserve(static_cast<std::size_t>(all.size()));
-  for (int i = 0; i < all.size(); ++i)
-    if (all[i]->isActive()) objects.push_back(all[i]);
+void World::update_boxes_shuffled(std::vector<btCollisionObject*> objects) {
   shuffle_fixed(objects);
   for (btCollisionObject* o : objects) dynamics_->updateSingleAabb(o);
 }

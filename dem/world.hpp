@@ -167,11 +167,11 @@ class World {
   /// chain: a 96,000-floe field's first steps took 22 s. Call once the world is built.
   void settle_broadphase();
 
-  /// Update the broadphase boxes of every active body, in a shuffled order: a body whose box
-  /// Bullet updates leaves the tree of resting boxes for the tree of moving ones, one
+  /// Update the broadphase boxes of `objects` (in the world), in a shuffled order: a body whose
+  /// box Bullet updates leaves the tree of resting boxes for the tree of moving ones, one
   /// insertion at a time, and all of a field at once in the order it was made built a chain
   /// (restoring a 96,000-floe checkpoint took 100 s of CPU).
-  void update_boxes_shuffled();
+  void update_boxes_shuffled(std::vector<btCollisionObject*> objects);
 
   /// Put a body made by the world into Bullet's world (every body enters through here).
   /// Throws InputError if the sweep-and-prune broadphase is full (kSweepAndPruneBodies).

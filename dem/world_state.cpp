@@ -123,10 +123,15 @@ void restore_world(World& world, const WorldState& s) {
   for (std::size_t j = 0; j < world.joints().size(); ++j)
     if (s.joint_broken[j]) break_joint(world, world.joints()[j]);
 
-  // every body where it was, awake for now: the collision pass below makes a manifold for
-  // every touching pair (Bullet skips pairs of two sleeping bodies)
+  // every body where it was. The bodies of the checkpoint's manifolds are awake for the
+  // collision pass below, which makes a manifold for each of their pairs (Bullet skips pairs of
+  // two sleeping bodies); every other body keeps the state the build gave it, so a field's
+  // untouched floes stay in the broadphase's tree of resting boxes and cost nothing here
   const auto index = body_indices(world);
   const auto member = members(world);
+  std::vector<char> touching(bodies.size(), 0);
+  for (const ManifoldState& ms : s.manifolds) touching.at(ms.body0) = touching.at(ms.body1) = 1;
+  std::vector<btCollisionObject*> moved;  // since the build: their broadphase boxes are stale
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     btRigidBody& body = *bodies[i];
     const BodyState& b = s.bodies[i];
@@ -137,13 +142,16 @@ void restore_world(World& world, const WorldState& s) {
     if ((member.count(&body) > 0) != (b.in_world != 0))
       throw std::runtime_error(fmt::format("body {}: {} the world in the checkpoint, not in the rebuilt one", i,
                                            b.in_world ? "in" : "out of"));
-    body.setWorldTransform(transform(b.transform));
-    body.setInterpolationWorldTransform(transform(b.interpolation_transform));
-    if (body.getMotionState()) body.getMotionState()->setWorldTransform(transform(b.transform));
+    const btTransform pose = transform(b.transform), interpolation = transform(b.interpolation_transform);
+    if (b.in_world && !(pose == body.getWorldTransform() && interpolation == body.getInterpolationWorldTransform()))
+      moved.push_back(&body);
+    body.setWorldTransform(pose);
+    body.setInterpolationWorldTransform(interpolation);
+    if (body.getMotionState()) body.getMotionState()->setWorldTransform(pose);
     body.updateInertiaTensor();
-    if (b.in_world && !body.isStaticObject()) body.forceActivationState(ACTIVE_TAG);
+    if (b.in_world && touching[i] && !body.isStaticObject()) body.forceActivationState(ACTIVE_TAG);
   }
-  world.update_boxes_shuffled();  // before Bullet's pass updates them in the order they were made
+  world.update_boxes_shuffled(moved);  // before Bullet's pass updates the awake ones in the order they were made
   world.dynamics().performDiscreteCollisionDetection();
 
   // the contact points of every pair as they were, in the manifold Bullet's algorithm for the
@@ -195,7 +203,6 @@ void restore_world(World& world, const WorldState& s) {
     body.forceActivationState(b.activation);
     body.setDeactivationTime(b.deactivation_time);
   }
-  world.settle_broadphase();  // the resting boxes into a balanced tree, as after building it
 }
 
 }  // namespace icedem

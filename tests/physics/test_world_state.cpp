@@ -101,6 +101,22 @@ void expect_rebuilt_state(const Scene& scene, long steps) {
   }
   // every point: the pairs the checkpoint names all touch, so the rebuilt world has them
   EXPECT_EQ(kept, points(taken)) << "of " << points(taken) << " points, " << kept << " kept";
+
+  // the floes the run never moved or touched stay in the broadphase's tree of resting boxes,
+  // where the build put them: a large field's restore then costs what its moved floes cost
+  const WorldState built = capture_world(*initial_state(scene, scene_layout(scene).floes).world);
+  std::vector<char> touching(taken.bodies.size(), 0);
+  for (const ManifoldState& m : taken.manifolds) touching[m.body0] = touching[m.body1] = 1;
+  int untouched = 0;
+  for (std::size_t i = 0; i < taken.bodies.size(); ++i)
+    untouched += taken.bodies[i].in_world && !touching[i] &&
+                 same_bytes(taken.bodies[i].transform, built.bodies[i].transform, sizeof built.bodies[i].transform);
+  auto& dbvt = dynamic_cast<btDbvtBroadphase&>(*copy.world->dynamics().getBroadphase());
+  const int resting = dbvt.m_sets[btDbvtBroadphase::FIXED_SET].m_leaves;
+  std::printf("%d of %zu bodies untouched, %d boxes in the resting tree after the rebuild\n", untouched,
+              taken.bodies.size(), resting);
+  ASSERT_GT(untouched, 0) << "the scene should leave part of its field untouched";
+  EXPECT_GE(resting, untouched);
 }
 
 TEST(WorldState, ARebuiltWorldHoldsTheStateItWasBuiltFrom) {
