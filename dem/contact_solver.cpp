@@ -63,6 +63,17 @@ void ContactSolver::remember_friction(const btManifoldPoint* point, const btVect
   friction_current_[point] = FrictionMemory{point->m_appliedImpulse, impulse};
 }
 
+btScalar ContactSolver::solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
+                                   int numManifolds, btTypedConstraint** constraints, int numConstraints,
+                                   const btContactSolverInfo& info, btIDebugDraw* debug, btDispatcher* dispatcher) {
+  if (settings_.order != SweepOrder::kBullet)
+    std::sort(bodies, bodies + numBodies, [](const btCollisionObject* a, const btCollisionObject* b) {
+      return a->getUserIndex2() < b->getUserIndex2();
+    });
+  return btSequentialImpulseConstraintSolver::solveGroup(bodies, numBodies, manifolds, numManifolds, constraints,
+                                                         numConstraints, info, debug, dispatcher);
+}
+
 void ContactSolver::prepareSolve(int numBodies, int numManifolds) {
   btSequentialImpulseConstraintSolver::prepareSolve(numBodies, numManifolds);
   std::swap(friction_previous_, friction_current_);

@@ -154,6 +154,14 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   // ones to warm-start from
   void prepareSolve(int numBodies, int numManifolds) override;
 
+  // One island's solve, its bodies first put in the canonical order (their user index 2, as
+  // manifolds and joints are): Bullet lists an island's bodies in the order of its world's
+  // arrays, which bodies entering the world as they are reached change (dem/reach.hpp), and
+  // the solve's sums over bodies would follow that order in their round-off
+  btScalar solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
+                      btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info,
+                      btIDebugDraw* debug, btDispatcher* dispatcher) override;
+
  protected:
   void convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info) override;
   // Bullet's joint rows, then the rows of spring joints (dem/joint_springs.hpp) rewritten

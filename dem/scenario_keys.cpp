@@ -292,6 +292,10 @@ std::vector<KeySpec> make_keys() {
   k.push_back(positive("activation.time", "s", 1.0, 1.0e4,
                        "time below both thresholds before a body sleeps"));
 
+  k.push_back(boolean("activation.unreached_out_of_world", true,
+                      "floes at rest that no moving body has come near stay out of Bullet's world until "
+                      "one does (dem/unreached_floes.hpp): a field's cost follows the disturbed ice, "
+                      "results as with them in it; needs activation.sleeping and islands = \"contact\""));
   k.push_back(boolean("activation.freeze_outside_region", false,
                       "resting floes outside the activation region become fixed obstacles until "
                       "struck or reached (dem/activation.hpp): 2-3x faster, but the frozen field "

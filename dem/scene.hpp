@@ -161,6 +161,7 @@ struct ActivationSettings {
   double linear_threshold;   // m/s
   double angular_threshold;  // rad/s
   double time;               // s below thresholds before sleeping
+  bool unreached_out_of_world;  // floes nothing reached stay out of Bullet's world (dem/unreached_floes.hpp)
   bool freeze_outside_region;  // resting floes outside the region become fixed obstacles
   double region_ahead;         // m ahead of the structure axis
   double region_behind;        // m behind it

@@ -267,6 +267,7 @@ Scene make_scene(const Scenario& sc) {
   s.activation.linear_threshold = real(sc, "activation.linear_threshold");
   s.activation.angular_threshold = real(sc, "activation.angular_threshold");
   s.activation.time = real(sc, "activation.time");
+  s.activation.unreached_out_of_world = get<bool>(sc, "activation.unreached_out_of_world");
   s.activation.freeze_outside_region = get<bool>(sc, "activation.freeze_outside_region");
   s.activation.region_ahead = real(sc, "activation.region_ahead");
   s.activation.region_behind = real(sc, "activation.region_behind");

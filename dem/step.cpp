@@ -8,6 +8,7 @@
 #include "dem/health_check.hpp"
 #include "dem/lattice_region.hpp"
 #include "dem/load_cell.hpp"
+#include "dem/reach.hpp"
 #include "dem/water_forces.hpp"
 
 namespace icedem {
@@ -102,7 +103,11 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   const double t0 = state.time;
   StageTimes& times = state.stage_times;
   state.fracture_events.clear();
-  { StageTimer t(times.activation); update_lattice_region(scene, state); }
+  {
+    StageTimer t(times.activation);
+    enter_reached_floes(scene, state);
+    update_lattice_region(scene, state);
+  }
   if (state.drag_exchange) { StageTimer t(times.coupling); state.drag_exchange->update(scene, state); }
   LoadCell cell;
   BoundaryLoad boundary;

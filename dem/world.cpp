@@ -30,7 +30,8 @@ btScalar combined_restitution(const btCollisionObject* a, const btCollisionObjec
 }  // namespace
 
 Liveness liveness(const btRigidBody& body) {
-  if (!body.isInWorld()) return Liveness::kOutside;
+  // out of the world: a floe nothing has reached yet is at rest, asleep (World::keep_unreached)
+  if (!body.isInWorld()) return body.getActivationState() == ISLAND_SLEEPING ? Liveness::kAsleep : Liveness::kOutside;
   return body.isActive() ? Liveness::kAwake : Liveness::kAsleep;
 }
 
@@ -165,6 +166,7 @@ void World::add_structure(std::unique_ptr<btCollisionShape> shape, const Eigen::
   body->setRestitution(0);
   body->setUserIndex(kStructure);
   body->setUserIndex2(-1);  // its place in the solver's canonical order (ContactSolver)
+  body->setUserIndex3(static_cast<int>(bodies_.size()));  // its index in bodies() (enter_world)
   enter_world(*body);
   structure_ = body.get();
   solver_->set_structure(structure_);
@@ -189,6 +191,7 @@ btRigidBody* World::add_static_box(const Eigen::Vector3d& centre, const Eigen::V
   // fixed bodies are numbered -2, -3, ... in the order they are made (ice bodies 0, 1, ...):
   // every body's place in the solver's canonical order (ContactSolver)
   body->setUserIndex2(-2 - fixed_boxes_++);
+  body->setUserIndex3(static_cast<int>(bodies_.size()));  // its index in bodies() (enter_world)
   enter_world(*body);
   btRigidBody* raw = body.get();
   static_shapes_.push_back(std::move(shape));
@@ -206,6 +209,7 @@ int World::add_body(const FloeShape& shape, const btTransform& pose, int floe_id
   body->setRestitution(0);
   body->setUserIndex(kIce);
   body->setUserIndex2(static_cast<int>(floes_.size()));  // body index, for frozen_floe() and the filter
+  body->setUserIndex3(static_cast<int>(bodies_.size()));  // its index in bodies() (enter_world)
   const ActivationSettings& a = settings_.activation;
   body->setSleepingThresholds(a.linear_threshold, a.angular_threshold);
 
@@ -300,7 +304,19 @@ void World::enter_world(btRigidBody& body) {
   // Bullet's sweep and prune has a fixed number of handles and writes past them (a crash)
   if (settings_.solver.broadphase == Broadphase::kSweepAndPrune)
     require_sweep_and_prune_room(static_cast<std::size_t>(dynamics_->getNumCollisionObjects()) + 1);
-  dynamics_->addRigidBody(&body);
+  // Bullet orders the two bodies of a pair, and so the sides its collision detection works
+  // from, by their broadphase ids, which its dbvt hands out in the order bodies enter. A floe
+  // that enters when it is reached (dem/reach.hpp) would then meet its neighbours from the other
+  // side than had it been in the world from the start, and their contact points would differ
+  // in round-off: the id is the body's index in bodies() instead, its order of making
+  if (dbvt_) {
+    const int next_id = dbvt_->m_gid;
+    dbvt_->m_gid = body.getUserIndex3();  // the broadphase gives the body m_gid + 1
+    dynamics_->addRigidBody(&body);
+    dbvt_->m_gid = std::max(next_id, body.getUserIndex3() + 1);
+  } else {
+    dynamics_->addRigidBody(&body);
+  }
   // Each box enters the dbvt's tree of moving boxes next to the box nearest it, and a field
   // made row by row, each floe nearest the one before, grows a chain: 96,000 floes took 5 s
   // to enter. Rebuilt balanced every 4 sqrt(N) entries, the chain stays that short, and the
@@ -318,6 +334,28 @@ int World::awake_floes() const {
   int n = 0;
   for (const FloeBody& f : floes_) n += liveness(*f.body) == Liveness::kAwake ? 1 : 0;
   return n;
+}
+
+bool World::keeps_unreached() const {
+  const ActivationSettings& a = settings_.activation;
+  return a.unreached_out_of_world && a.sleeping && a.skip_asleep && a.islands == IslandMode::kContact &&
+         !a.freeze_outside_region;
+}
+
+void World::keep_unreached(int index) {
+  btRigidBody& body = *floes_.at(static_cast<std::size_t>(index)).body;
+  btVector3 lo, hi;
+  body.getCollisionShape()->getAabb(body.getWorldTransform(), lo, hi);
+  unreached_.add(index, lo, hi);
+  body.forceActivationState(ISLAND_SLEEPING);  // asleep, out of the world (liveness)
+}
+
+void World::enter_reached(int index) {
+  if (!unreached_.contains(index)) return;
+  unreached_.remove(index);
+  btRigidBody& body = *floes_[static_cast<std::size_t>(index)].body;
+  enter_world(body);
+  body.forceActivationState(ISLAND_SLEEPING);  // as add_body leaves a floe made in the world
 }
 
 void World::freeze(FloeBody& floe) {

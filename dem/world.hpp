@@ -30,6 +30,7 @@
 #include "dem/contact_solver.hpp"
 #include "dem/floe_shape.hpp"
 #include "dem/scene.hpp"
+#include "dem/unreached_floes.hpp"
 
 namespace icedem {
 
@@ -59,7 +60,7 @@ struct FloeBody {
 /// asks this, so the rule is in one place.
 enum class Liveness {
   kOutside,  // not in the Bullet world: an element of a dormant lattice, or a replaced stand-in
-  kAsleep,   // in the world, at rest (sleeping or frozen): not integrated
+  kAsleep,   // at rest (sleeping, frozen, or not yet reached and out of the world): not integrated
   kAwake,    // being solved and integrated
 };
 Liveness liveness(const btRigidBody& body);
@@ -177,6 +178,28 @@ class World {
   /// Throws InputError if the sweep-and-prune broadphase is full (kSweepAndPruneBodies).
   void enter_world(btRigidBody& body);
 
+  /// Whether floes that nothing has reached are kept out of Bullet's world
+  /// (activation.unreached_out_of_world, with sleeping on, forces on awake bodies only and
+  /// contact islands: Bullet's own islands join boxes that merely overlap, so there a resting
+  /// neighbour counts). Not with activation.freeze_outside_region: frozen floes entering when
+  /// reached made a run that left the one with all floes in the world after 35 s (a 12 m short
+  /// tow), for a reason not yet found.
+  bool keeps_unreached() const;
+
+  /// Keep floe `index`, made out of the world (add_body's `in_world` false) and at rest where
+  /// the layout put it, out of the world until reached (dem/unreached_floes.hpp).
+  void keep_unreached(int index);
+
+  /// Rebuild the tree of unreached floes balanced (after adding a field).
+  void balance_unreached() { unreached_.balance(); }
+
+  /// Floe `index`, kept out of the world until reached, enters it asleep where it lies, as a
+  /// floe in the world all along that nothing has touched is.
+  void enter_reached(int index);
+
+  /// The floes kept out of the world until reached.
+  const UnreachedFloes& unreached() const { return unreached_; }
+
   /// Number of ice bodies currently awake (simulated).
   int awake_floes() const;
 
@@ -214,6 +237,7 @@ class World {
   std::vector<FloeBody> floes_;
   std::vector<IceJoint> joints_;
   std::vector<DormantLattice> lattices_;
+  UnreachedFloes unreached_;
   std::unique_ptr<btOverlapFilterCallback> fragment_filter_;
   btRigidBody* structure_ = nullptr;
   int fixed_boxes_ = 0;  // fixed boxes made so far

@@ -119,7 +119,10 @@ void add_floes(World& world, const Scene& scene, const std::vector<Floe>& floes)
     pose.setIdentity();
     pose.setOrigin(btVector3(floe.centre.x(), y, floe.centre.y()));
     pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + shape.principal_yaw));
-    world.add_body(shape, pose, floe_id++, scene.friction.ice_ice);
+    // out of the world until reached (dem/unreached_floes.hpp)
+    const bool unreached = world.keeps_unreached();
+    const int index = world.add_body(shape, pose, floe_id++, scene.friction.ice_ice, -1, !unreached);
+    if (unreached) world.keep_unreached(index);
   }
 }
 
@@ -130,6 +133,7 @@ std::unique_ptr<World> build_world(const Scene& scene, const std::vector<Floe>& 
   add_profile_structure(*world, scene);
   add_boundaries(*world, scene);
   add_floes(*world, scene, floes);
+  world->balance_unreached();
   world->settle_broadphase();
   return world;
 }

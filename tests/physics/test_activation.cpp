@@ -37,6 +37,8 @@ btRigidBody& poke_middle_floe(State& state) {
     const double d = std::hypot(p.x() - 1.5, p.z());
     if (d < best_d) best_d = d, best = &f;
   }
+  // a floe nothing has reached waits out of the world (dem/unreached_floes.hpp): it enters first
+  state.world->enter_reached(static_cast<int>(best - state.world->floes().data()));
   best->body->activate(true);
   best->body->setLinearVelocity(btVector3(0, 0.05, 0));
   return *best->body;

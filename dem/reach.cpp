@@ -1,0 +1,45 @@
+#include "dem/reach.hpp"
+
+#include <cmath>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "dem/step.hpp"
+
+namespace icedem {
+namespace {
+
+// how far a body's box can travel in `time`: its speed, and its spin times the half diagonal
+double box_travel(const btRigidBody& body, double time) {
+  const btBroadphaseProxy& p = *body.getBroadphaseHandle();
+  const double half_diagonal = 0.5 * (p.m_aabbMax - p.m_aabbMin).length();
+  return (body.getLinearVelocity().length() + body.getAngularVelocity().length() * half_diagonal) * time;
+}
+
+// the floes within `pad` of a body's broadphase box
+void near_box(const World& world, const btCollisionObject& object, double pad, std::vector<int>& out) {
+  const btBroadphaseProxy& p = *object.getBroadphaseHandle();
+  const btVector3 d(pad, pad, pad);
+  world.unreached().overlapping(p.m_aabbMin - d, p.m_aabbMax + d, out);
+}
+
+
+}  // namespace
+
+void enter_reached_floes(const Scene& scene, State& state) {
+  World& world = *state.world;
+  if (world.unreached().size() == 0) return;
+  const double dt = scene.time.dt;
+  std::vector<int> reached;
+
+  // the structure moves by its speed; Bullet's box of it already spans its last step
+  near_box(world, *world.structure(), kReachMargin + 2 * std::abs(scene.structure.speed) * dt, reached);
+  // every awake body (sleeping and fixed ones do not move)
+  const btAlignedObjectArray<btRigidBody*>& bodies = world.dynamics().getNonStaticRigidBodies();
+  for (int i = 0; i < bodies.size(); ++i)
+    if (bodies[i]->isActive() && !bodies[i]->isStaticOrKinematicObject())
+      near_box(world, *bodies[i], kReachMargin + box_travel(*bodies[i], 2 * dt), reached);
+  for (int index : reached) world.enter_reached(index);  // a floe met twice enters once
+}
+
+}  // namespace icedem
