@@ -88,10 +88,13 @@ StepDiagnostics check_health(const Scene& scene, const State& state) {
 
   for (const FloeBody& floe : state.world->floes()) {
     const btRigidBody& body = *floe.body;
-    const Liveness life = liveness(body);
-    if (life == Liveness::kOutside) continue;  // an element of a dormant lattice: its stand-in counts
+    if (liveness(body) == Liveness::kOutside) continue;  // an element of a dormant lattice: its stand-in counts
     if (tank.contains(to_eigen(body.getCenterOfMassPosition()))) d.ice_mass += floe.shape->mass;
-    if (life == Liveness::kAsleep) continue;   // a sleeping body does not move
+  }
+  // the awake ones (a sleeping body does not move), in the floes' order
+  for (int i : state.world->awake_floe_indices()) {
+    const FloeBody& floe = state.world->floes()[i];
+    const btRigidBody& body = *floe.body;
     check_motion(scene, state, floe);
     d.max_speed = std::max(d.max_speed, static_cast<double>(body.getLinearVelocity().length()));
     d.max_angular_speed = std::max(d.max_angular_speed, static_cast<double>(body.getAngularVelocity().length()));

@@ -17,7 +17,7 @@ double box_travel(const btRigidBody& body, double time) {
 }
 
 // the floes within `pad` of a body's broadphase box
-void near_box(const World& world, const btCollisionObject& object, double pad, std::vector<int>& out) {
+void near_box(World& world, const btCollisionObject& object, double pad, std::vector<int>& out) {
   const btBroadphaseProxy& p = *object.getBroadphaseHandle();
   const btVector3 d(pad, pad, pad);
   world.unreached().overlapping(p.m_aabbMin - d, p.m_aabbMax + d, out);

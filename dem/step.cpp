@@ -43,10 +43,17 @@ void apply_water_forces(const Scene& scene, State& state) {
   WaterParams water = water_params(scene.water);
   // exchanged drag replaces the DEM's own (dem/drag_exchange.hpp)
   if (state.drag_exchange) water.drag_coefficient = water.skin_friction_coefficient = 0.0;
-  for (FloeBody& floe : state.world->floes()) {
+  std::vector<FloeBody*> bodies;  // the floes that get them
+  if (scene.activation.skip_asleep) {
+    for (int i : state.world->awake_floe_indices()) bodies.push_back(&state.world->floes()[i]);
+  } else {
+    for (FloeBody& floe : state.world->floes())
+      if (liveness(*floe.body) != Liveness::kOutside) bodies.push_back(&floe);
+  }
+  for (FloeBody* f : bodies) {
+    FloeBody& floe = *f;
     btRigidBody& body = *floe.body;
     const Liveness life = liveness(body);
-    if (life == Liveness::kOutside || (life == Liveness::kAsleep && scene.activation.skip_asleep)) continue;
     BodyMotion motion{body_pose(body), to_eigen(body.getLinearVelocity()), to_eigen(body.getAngularVelocity())};
     const Wrench w = water_wrench(floe.shape->prism, motion, *state.flow, water, floe.shape->damping);
     body.applyCentralForce(btVector3(w.force.x(), w.force.y(), w.force.z()));

@@ -2,6 +2,8 @@
 
 #include <cstdint>
 
+#include "dem/fixed_shuffle.hpp"
+
 namespace icedem {
 namespace {
 
@@ -23,22 +25,37 @@ constexpr int kBottomUpLeaves = 8;
 UnreachedFloes::~UnreachedFloes() { tree_.clear(); }
 
 void UnreachedFloes::add(int index, const btVector3& lo, const btVector3& hi) {
-  if (index >= static_cast<int>(leaves_.size())) leaves_.resize(static_cast<std::size_t>(index) + 1, nullptr);
-  if (leaves_[index]) return;
-  leaves_[index] = tree_.insert(btDbvtVolume::FromMM(lo, hi), reinterpret_cast<void*>(static_cast<std::intptr_t>(index)));
+  if (index >= static_cast<int>(kept_.size())) {
+    kept_.resize(static_cast<std::size_t>(index) + 1, 0);
+    leaves_.resize(kept_.size(), nullptr);
+  }
+  if (kept_[index]) return;
+  kept_[index] = 1;
+  added_.push_back(Added{index, lo, hi});
   ++count_;
 }
 
-void UnreachedFloes::balance() { tree_.optimizeTopDown(kBottomUpLeaves); }
+void UnreachedFloes::insert_added() {
+  if (added_.empty()) return;
+  shuffle_fixed(added_);
+  for (const Added& a : added_)
+    if (kept_[a.index])
+      leaves_[a.index] = tree_.insert(btDbvtVolume::FromMM(a.lo, a.hi), reinterpret_cast<void*>(static_cast<std::intptr_t>(a.index)));
+  added_.clear();
+  tree_.optimizeTopDown(kBottomUpLeaves);
+}
 
 void UnreachedFloes::remove(int index) {
   if (!contains(index)) return;
+  insert_added();
   tree_.remove(leaves_[index]);
   leaves_[index] = nullptr;
+  kept_[index] = 0;
   --count_;
 }
 
-void UnreachedFloes::overlapping(const btVector3& lo, const btVector3& hi, std::vector<int>& out) const {
+void UnreachedFloes::overlapping(const btVector3& lo, const btVector3& hi, std::vector<int>& out) {
+  insert_added();
   Collector collector(out);
   tree_.collideTV(tree_.m_root, btDbvtVolume::FromMM(lo, hi), collector);
 }

@@ -10,6 +10,7 @@
 
 #include "dem/constants.hpp"
 #include "dem/errors.hpp"
+#include "dem/fixed_shuffle.hpp"
 
 namespace icedem {
 namespace {
@@ -250,17 +251,6 @@ namespace {
 // 96,000 boxes cost about a second)
 constexpr int kBottomUpLeaves = 8;
 
-// `items` in the same shuffled order on every machine (Fisher-Yates on Knuth's 64-bit LCG):
-// Bullet's dbvt inserts boxes one at a time, and in the order the bodies were made (row by
-// row) that builds a chain, not a tree
-template <class T>
-void shuffle_fixed(std::vector<T>& items) {
-  std::uint64_t state = 0x9E3779B97F4A7C15ull;
-  for (std::size_t i = items.size(); i > 1; --i) {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    std::swap(items[i - 1], items[(state >> 33) % i]);
-  }
-}
 }  // namespace
 
 void World::update_boxes_shuffled(std::vector<btCollisionObject*> objects) {
@@ -330,10 +320,14 @@ void World::enter_world(btRigidBody& body) {
   }
 }
 
-int World::awake_floes() const {
-  int n = 0;
-  for (const FloeBody& f : floes_) n += liveness(*f.body) == Liveness::kAwake ? 1 : 0;
-  return n;
+std::vector<int> World::awake_floe_indices() const {
+  std::vector<int> awake;
+  const btAlignedObjectArray<btRigidBody*>& bodies = dynamics_->getNonStaticRigidBodies();
+  for (int i = 0; i < bodies.size(); ++i)
+    if (bodies[i]->getUserIndex() == kIce && liveness(*bodies[i]) == Liveness::kAwake)
+      awake.push_back(bodies[i]->getUserIndex2());
+  std::sort(awake.begin(), awake.end());  // the floes' order: sums over them as before
+  return awake;
 }
 
 bool World::keeps_unreached() const {

@@ -190,18 +190,20 @@ class World {
   /// the layout put it, out of the world until reached (dem/unreached_floes.hpp).
   void keep_unreached(int index);
 
-  /// Rebuild the tree of unreached floes balanced (after adding a field).
-  void balance_unreached() { unreached_.balance(); }
-
   /// Floe `index`, kept out of the world until reached, enters it asleep where it lies, as a
   /// floe in the world all along that nothing has touched is.
   void enter_reached(int index);
 
   /// The floes kept out of the world until reached.
+  UnreachedFloes& unreached() { return unreached_; }
   const UnreachedFloes& unreached() const { return unreached_; }
 
   /// Number of ice bodies currently awake (simulated).
-  int awake_floes() const;
+  int awake_floes() const { return static_cast<int>(awake_floe_indices().size()); }
+
+  /// The ice bodies awake now, by index into floes(), ascending. Read from Bullet's list of the
+  /// dynamic bodies in its world, so it costs what the world holds, not what the field does.
+  std::vector<int> awake_floe_indices() const;
 
   /// Make a floe a fixed obstacle at rest (zero inverse mass, asleep).
   void freeze(FloeBody& floe);

@@ -133,7 +133,6 @@ std::unique_ptr<World> build_world(const Scene& scene, const std::vector<Floe>& 
   add_profile_structure(*world, scene);
   add_boundaries(*world, scene);
   add_floes(*world, scene, floes);
-  world->balance_unreached();
   world->settle_broadphase();
   return world;
 }
