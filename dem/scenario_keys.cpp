@@ -142,7 +142,8 @@ std::vector<KeySpec> make_keys() {
   // channel and tank
   k.push_back(real("channel.start_x", "m", 6.0, -1.0e4, 1.0e4,
                    "x where the floe field begins (paper: floes in x >= 6 m)"));
-  k.push_back(positive("channel.length", "m", 24.0, 1.0e4, "length of the floe field (paper: ~24 m)"));
+  k.push_back(positive("channel.length", "m", 24.0, 1.0e5,
+                       "length of the floe field (paper: ~24 m; 24 km holds about 10^6 small floes)"));
   k.push_back(positive("channel.width", "m", 4.8, 1.0e3,
                        "width between the mother-ice edges, centred on z = 0 (paper: 4.8 m)"));
   k.push_back(boolean("channel.end_wall", true, "mother ice closes the far end of the channel"));
