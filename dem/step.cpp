@@ -112,8 +112,10 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   state.fracture_events.clear();
   {
     StageTimer t(times.activation);
-    enter_reached_floes(scene, state);
+    // the lattices the structure reaches first: their elements wake, and reach the floes
+    // around them before this step's collision detection, as any awake body does
     update_lattice_region(scene, state);
+    enter_reached_floes(scene, state);
   }
   if (state.drag_exchange) { StageTimer t(times.coupling); state.drag_exchange->update(scene, state); }
   LoadCell cell;
