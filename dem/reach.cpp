@@ -23,7 +23,6 @@ void near_box(World& world, const btCollisionObject& object, double pad, std::ve
   world.unreached().overlapping(p.m_aabbMin - d, p.m_aabbMax + d, out);
 }
 
-
 }  // namespace
 
 void enter_reached_floes(const Scene& scene, State& state) {

@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-#include "dem/fixed_shuffle.hpp"
+#include "dem/dbvt_fill.hpp"
 
 namespace icedem {
 namespace {
@@ -15,10 +15,6 @@ struct Collector : btDbvt::ICollide {
   }
   std::vector<int>& out;
 };
-
-// Top-down rebuilds join groups of this many leaves bottom-up, at a cost of the cube of the
-// group (Bullet's default, 128, costs about a second per 96,000 leaves)
-constexpr int kBottomUpLeaves = 8;
 
 }  // namespace
 
@@ -40,7 +36,8 @@ void UnreachedFloes::insert_added() {
   shuffle_fixed(added_);
   for (const Added& a : added_)
     if (kept_[a.index])
-      leaves_[a.index] = tree_.insert(btDbvtVolume::FromMM(a.lo, a.hi), reinterpret_cast<void*>(static_cast<std::intptr_t>(a.index)));
+      leaves_[a.index] =
+          tree_.insert(btDbvtVolume::FromMM(a.lo, a.hi), reinterpret_cast<void*>(static_cast<std::intptr_t>(a.index)));
   added_.clear();
   tree_.optimizeTopDown(kBottomUpLeaves);
 }

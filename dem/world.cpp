@@ -10,7 +10,7 @@
 
 #include "dem/constants.hpp"
 #include "dem/errors.hpp"
-#include "dem/fixed_shuffle.hpp"
+#include "dem/dbvt_fill.hpp"
 
 namespace icedem {
 namespace {
@@ -244,14 +244,6 @@ void World::set_structure_target(const Eigen::Vector3d& position) {
   pose.setOrigin(to_bt(position));
   structure_->getMotionState()->setWorldTransform(pose);
 }
-
-namespace {
-// A dbvt rebuilt top-down splits its boxes down to groups of this many, which it joins
-// bottom-up at a cost of the cube of the group (Bullet's default, 128, made one rebuild of
-// 96,000 boxes cost about a second)
-constexpr int kBottomUpLeaves = 8;
-
-}  // namespace
 
 void World::update_boxes_shuffled(std::vector<btCollisionObject*> objects) {
   shuffle_fixed(objects);
