@@ -159,13 +159,14 @@ OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const 
   schema_fixed(file, "/joints/index", i4, H5::PredType::NATIVE_INT, {nj}, joint_index.data());
   schema_fixed(file, "/joints/midpoint", f8, H5::PredType::NATIVE_DOUBLE, {nj, 3}, joint_midpoint.data());
 
-  // snapshots: chunks of whole snapshots, sized so that a chunk stays near kSnapshotChunkBytes
-  const std::size_t snapshot_bytes = std::max<std::size_t>(bodies, 1) * 4 * sizeof(double);
-  const hsize_t snap_rows = std::clamp<hsize_t>(kSnapshotChunkBytes / snapshot_bytes, 1, 256);
+  // snapshots: rows of the bodies that changed, chunks of about kSnapshotChunkBytes
+  const hsize_t snap_rows = kSnapshotChunkBytes / (4 * sizeof(double));
   d.snap_time = schema_series(file, "/snapshots/time", f8, {}, 256);
-  d.snap_position = schema_series(file, "/snapshots/position", f8, {nb, 3}, snap_rows);
-  d.snap_orientation = schema_series(file, "/snapshots/orientation", f8, {nb, 4}, snap_rows);
-  d.snap_awake = schema_series(file, "/snapshots/awake", H5::PredType::STD_U8LE, {nb}, snap_rows);
+  d.snap_end_row = schema_series(file, "/snapshots/end_row", H5::PredType::STD_I64LE, {}, 256);
+  d.snap_body = schema_series(file, "/snapshots/rows/body", i4, {}, snap_rows);
+  d.snap_position = schema_series(file, "/snapshots/rows/position", f8, {3}, snap_rows);
+  d.snap_orientation = schema_series(file, "/snapshots/rows/orientation", f8, {4}, snap_rows);
+  d.snap_awake = schema_series(file, "/snapshots/rows/awake", H5::PredType::STD_U8LE, {}, snap_rows);
 
   // fracture events (/fracture/floe_* are written at the end, by write_floe_margins)
   d.events = schema_series(file, "/fracture/events", fracture_file_type(), {}, 256, event_units());
@@ -180,9 +181,11 @@ OutputDatasets open_output_layout(H5::H5File& file) {
   OutputDatasets d;
   for (const SeriesColumn& col : series_columns()) d.series.push_back(open(col.path));
   d.snap_time = open("/snapshots/time");
-  d.snap_position = open("/snapshots/position");
-  d.snap_orientation = open("/snapshots/orientation");
-  d.snap_awake = open("/snapshots/awake");
+  d.snap_end_row = open("/snapshots/end_row");
+  d.snap_body = open("/snapshots/rows/body");
+  d.snap_position = open("/snapshots/rows/position");
+  d.snap_orientation = open("/snapshots/rows/orientation");
+  d.snap_awake = open("/snapshots/rows/awake");
   d.events = open("/fracture/events");
   return d;
 }
@@ -197,7 +200,8 @@ void write_floe_margin_datasets(H5::H5File& file, const std::vector<double>& max
 }
 
 void OutputDatasets::close() {
-  for (Series* s : {&snap_time, &snap_position, &snap_orientation, &snap_awake, &events}) s->dataset.reset();
+  for (Series* s : {&snap_time, &snap_end_row, &snap_body, &snap_position, &snap_orientation, &snap_awake, &events})
+    s->dataset.reset();
   for (Series& s : series) s.dataset.reset();
 }
 

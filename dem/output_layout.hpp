@@ -16,7 +16,9 @@ namespace icedem {
 /// The growing datasets of an output file.
 struct OutputDatasets {
   std::vector<Series> series;  // series_columns() order
-  Series snap_time, snap_position, snap_orientation, snap_awake;
+  // snapshots: the first holds every body, each later one the bodies whose pose or awake flag
+  // changed since the one before (rows from first_row on)
+  Series snap_time, snap_end_row, snap_body, snap_position, snap_orientation, snap_awake;
   Series events;
 
   /// Releases every dataset: HDF5 closes a file only once no object of it is open.

@@ -57,8 +57,64 @@ struct Recorder::Impl {
   // buffers of rows not yet written
   std::vector<LoadSample> load_buffer;
   std::vector<double> snap_time_buffer, snap_position_buffer, snap_orientation_buffer;
+  std::vector<int64_t> snap_end_row_buffer;
+  std::vector<int> snap_body_buffer;
   std::vector<uint8_t> snap_awake_buffer;
+  // the last snapshot's field, every body (position, orientation w x y z, awake): a snapshot
+  // writes the rows of the bodies that differ from it
+  std::vector<double> last_position, last_orientation;
+  std::vector<uint8_t> last_awake;
+  int64_t snapshot_rows = 0;  // rows written or buffered so far
   std::vector<FractureEvent> event_buffer;
+
+  // an empty field for a new file
+  void start_field() {
+    last_position.assign(3 * bodies, 0.0);
+    last_orientation.assign(4 * bodies, 0.0);
+    last_awake.assign(bodies, 0);
+  }
+
+  // the field of the last snapshot a file holds, for a run resumed from its checkpoint: its rows
+  // replayed in order (rows after the last snapshot's end, from a cut write, are written over)
+  void read_field() {
+    start_field();
+    const hsize_t k = data.snap_time.rows;
+    if (k == 0) {
+      data.snap_body.rows = data.snap_position.rows = data.snap_orientation.rows = data.snap_awake.rows = 0;
+      return;
+    }
+    // the first `n` rows of a series (a cut write may have left more)
+    auto read_rows = [](Series& s, hsize_t n, void* out, const H5::DataType& type) {
+      std::vector<hsize_t> block{n};
+      block.insert(block.end(), s.row_shape.begin(), s.row_shape.end());
+      const std::vector<hsize_t> start(block.size(), 0);
+      H5::DataSpace file_space = s.dataset->getSpace();
+      file_space.selectHyperslab(H5S_SELECT_SET, block.data(), start.data());
+      H5::DataSpace mem_space(static_cast<int>(block.size()), block.data());
+      s.dataset->read(out, type, mem_space, file_space);
+    };
+    std::vector<int64_t> end(k);
+    read_rows(data.snap_end_row, k, end.data(), H5::PredType::NATIVE_INT64);
+    data.snap_end_row.rows = k;
+    const hsize_t rows = static_cast<hsize_t>(end.back());
+    std::vector<int> body(rows);
+    std::vector<double> position(3 * rows), orientation(4 * rows);
+    std::vector<uint8_t> awake(rows);
+    if (rows > 0) {
+      read_rows(data.snap_body, rows, body.data(), H5::PredType::NATIVE_INT);
+      read_rows(data.snap_position, rows, position.data(), H5::PredType::NATIVE_DOUBLE);
+      read_rows(data.snap_orientation, rows, orientation.data(), H5::PredType::NATIVE_DOUBLE);
+      read_rows(data.snap_awake, rows, awake.data(), H5::PredType::NATIVE_UINT8);
+    }
+    data.snap_body.rows = data.snap_position.rows = data.snap_orientation.rows = data.snap_awake.rows = rows;
+    for (hsize_t r = 0; r < rows; ++r) {
+      const std::size_t b = static_cast<std::size_t>(body[r]);
+      std::copy(&position[3 * r], &position[3 * r] + 3, &last_position[3 * b]);
+      std::copy(&orientation[4 * r], &orientation[4 * r] + 4, &last_orientation[4 * b]);
+      last_awake[b] = awake[r];
+    }
+    snapshot_rows = static_cast<int64_t>(rows);
+  }
 
   void require_open(const char* what) const {
     if (finished)
@@ -91,8 +147,9 @@ struct Recorder::Impl {
   // bytes the buffered rows take in the file (as in memory: doubles and ints, unpadded)
   std::size_t buffered_bytes() const {
     return load_buffer.size() * sizeof(LoadSample) +
-           8 * (snap_time_buffer.size() + snap_position_buffer.size() + snap_orientation_buffer.size()) +
-           snap_awake_buffer.size() + event_buffer.size() * sizeof(FractureEvent);
+           8 * (snap_time_buffer.size() + snap_position_buffer.size() + snap_orientation_buffer.size() +
+                snap_end_row_buffer.size()) +
+           4 * snap_body_buffer.size() + snap_awake_buffer.size() + event_buffer.size() * sizeof(FractureEvent);
   }
 
   // the buffered rows that did not fit: dropped, so that the file can still be closed
@@ -100,6 +157,8 @@ struct Recorder::Impl {
     const std::size_t rows = load_buffer.size();
     load_buffer.clear();
     snap_time_buffer.clear();
+    snap_end_row_buffer.clear();
+    snap_body_buffer.clear();
     snap_position_buffer.clear();
     snap_orientation_buffer.clear();
     snap_awake_buffer.clear();
@@ -133,11 +192,18 @@ struct Recorder::Impl {
     const std::size_t k = snap_time_buffer.size();
     if (k == 0) return;
     require_space(buffered_bytes());
+    const std::size_t rows = snap_body_buffer.size();
+    // the rows first, then the snapshots that point into them: a file cut between the two
+    // holds rows no snapshot names, never a snapshot without its rows
+    data.snap_body.write(snap_body_buffer.data(), rows, H5::PredType::NATIVE_INT);
+    data.snap_position.write(snap_position_buffer.data(), rows, H5::PredType::NATIVE_DOUBLE);
+    data.snap_orientation.write(snap_orientation_buffer.data(), rows, H5::PredType::NATIVE_DOUBLE);
+    data.snap_awake.write(snap_awake_buffer.data(), rows, H5::PredType::NATIVE_UINT8);
+    data.snap_end_row.write(snap_end_row_buffer.data(), k, H5::PredType::NATIVE_INT64);
     data.snap_time.write(snap_time_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
-    data.snap_position.write(snap_position_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
-    data.snap_orientation.write(snap_orientation_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
-    data.snap_awake.write(snap_awake_buffer.data(), k, H5::PredType::NATIVE_UINT8);
     snap_time_buffer.clear();
+    snap_end_row_buffer.clear();
+    snap_body_buffer.clear();
     snap_position_buffer.clear();
     snap_orientation_buffer.clear();
     snap_awake_buffer.clear();
@@ -159,9 +225,9 @@ struct Recorder::Impl {
   }
 
   std::size_t snapshot_buffer_bytes() const {
-    return snap_time_buffer.size() * sizeof(double) +
+    return (snap_time_buffer.size() + snap_end_row_buffer.size()) * 8 +
            (snap_position_buffer.size() + snap_orientation_buffer.size()) * sizeof(double) +
-           snap_awake_buffer.size();
+           4 * snap_body_buffer.size() + snap_awake_buffer.size();
   }
 
   /// Calls `fn` with the group or dataset at `object_path`, creating missing groups along it.
@@ -235,6 +301,7 @@ Recorder::Recorder(const std::string& path, const RunMeta& meta, const std::vect
     impl_->data = create_output_layout(*impl_->file, meta, bodies, joints);
     impl_->meta = std::make_unique<H5::Group>(impl_->file->openGroup("/meta"));
     impl_->bodies = bodies.size();
+    impl_->start_field();
   } catch (const H5::Exception& e) {
     std::string reason = hdf5_reason(e);
     try {
@@ -258,8 +325,10 @@ Recorder::Recorder(const std::string& path, Reopen) : impl_(std::make_unique<Imp
   try {
     impl_->data = open_output_layout(*impl_->file);
     impl_->meta = std::make_unique<H5::Group>(impl_->file->openGroup("/meta"));
-    impl_->bodies = static_cast<std::size_t>(impl_->data.snap_awake.row_shape.at(0));
+    impl_->bodies = static_cast<std::size_t>(
+        impl_->file->openDataSet("/bodies/floe_id").getSpace().getSimpleExtentNpoints());
     impl_->appended_rows = static_cast<std::size_t>(impl_->data.series.at(0).rows);
+    impl_->read_field();
     write_attr(*impl_->meta, "status", std::string("running"));
     write_attr(*impl_->meta, "resumed_utc", utc_now_iso8601());
     impl_->flush_file();
@@ -292,15 +361,29 @@ void Recorder::append_snapshot(double time, const std::vector<BodyPose>& poses) 
     throw std::invalid_argument("Recorder::append_snapshot: " + std::to_string(poses.size()) +
                                 " poses given, the file was created with " +
                                 std::to_string(impl_->bodies) + " bodies");
-  impl_->snap_time_buffer.push_back(time);
-  for (const BodyPose& pose : poses) {
-    for (int k = 0; k < 3; ++k) impl_->snap_position_buffer.push_back(pose.position[k]);
+  Impl& m = *impl_;
+  m.snap_time_buffer.push_back(time);
+  const bool first = m.data.snap_time.rows + m.snap_time_buffer.size() == 1;
+  for (std::size_t b = 0; b < poses.size(); ++b) {
+    const BodyPose& pose = poses[b];
     // stored scalar first (w, x, y, z); Eigen keeps (x, y, z, w) in memory
     const Eigen::Quaterniond& q = pose.orientation;
-    impl_->snap_orientation_buffer.insert(impl_->snap_orientation_buffer.end(),
-                                          {q.w(), q.x(), q.y(), q.z()});
-    impl_->snap_awake_buffer.push_back(pose.awake ? 1 : 0);
+    const double p[3] = {pose.position.x(), pose.position.y(), pose.position.z()};
+    const double o[4] = {q.w(), q.x(), q.y(), q.z()};
+    const uint8_t awake = pose.awake ? 1 : 0;
+    double* last_p = &m.last_position[3 * b];
+    double* last_o = &m.last_orientation[4 * b];
+    if (!first && std::equal(p, p + 3, last_p) && std::equal(o, o + 4, last_o) && awake == m.last_awake[b]) continue;
+    std::copy(p, p + 3, last_p);
+    std::copy(o, o + 4, last_o);
+    m.last_awake[b] = awake;
+    m.snap_body_buffer.push_back(static_cast<int>(b));
+    m.snap_position_buffer.insert(m.snap_position_buffer.end(), p, p + 3);
+    m.snap_orientation_buffer.insert(m.snap_orientation_buffer.end(), o, o + 4);
+    m.snap_awake_buffer.push_back(awake);
+    ++m.snapshot_rows;
   }
+  m.snap_end_row_buffer.push_back(m.snapshot_rows);
   if (impl_->snapshot_buffer_bytes() >= kSnapshotBufferBytes) {
     QuietHdf5 quiet;
     try {

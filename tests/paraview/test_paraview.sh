@@ -50,9 +50,11 @@ import h5py
 import numpy as np
 sys.path.insert(0, sys.argv[1] + "/tools")
 from icedem_tools.xdmf import nearest_edge, quat_to_matrix
+from icedem_tools.results import snapshot_field
 with h5py.File("lattice.h5", "r") as h, h5py.File("lattice_views.h5", "r") as v:
     off, verts = h["/bodies/vertex_offset"][:], h["/bodies/vertices"][:]
-    pos, q = h["/snapshots/position"][0], h["/snapshots/orientation"][0]
+    positions, orientations, _ = snapshot_field(h)
+    pos, q = positions[0], orientations[0]
     faces = v["joint_points/0"][:].reshape(-1, 4, 3)
     worst = 0.0
     for r, (a, b) in enumerate(h["/joints/bodies"][:]):

@@ -263,7 +263,8 @@ class XdmfExport(unittest.TestCase):
         with h5py.File(run, "r") as h:
             self.assertEqual(len(grids), len(h["/snapshots/time"]))
             nb = len(h["/bodies/floe_id"])
-            pos0 = h["/snapshots/position"][0]
+            from icedem_tools.results import snapshot_field
+            pos0 = snapshot_field(h)[0][0]
             thick = h["/bodies/thickness"][:]
         with h5py.File(os.path.join(out, "run_views.h5"), "r") as v:
             for item in root.iter("DataItem"):

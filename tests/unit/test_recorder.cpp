@@ -88,8 +88,40 @@ std::vector<T> read(const H5::H5File& file, const std::string& name, const H5::P
   return data;
 }
 
+// the snapshots as full fields (k x nb rows): the file holds, per snapshot, the rows of the
+// bodies that changed since the one before, each body keeping its latest row
+struct Field {
+  std::vector<double> position, orientation;  // k x nb x 3, k x nb x 4
+  std::vector<uint8_t> awake;                 // k x nb
+};
+Field full_field(const H5::H5File& file, std::size_t nb);
+
 std::vector<double> read_doubles(const H5::H5File& file, const std::string& name) {
   return read<double>(file, name, H5::PredType::NATIVE_DOUBLE);
+}
+
+Field full_field(const H5::H5File& file, std::size_t nb) {
+  const auto end = read<int64_t>(file, "/snapshots/end_row", H5::PredType::NATIVE_INT64);
+  const auto body = read<int>(file, "/snapshots/rows/body", H5::PredType::NATIVE_INT);
+  const std::vector<double> pos = read_doubles(file, "/snapshots/rows/position");
+  const std::vector<double> ori = read_doubles(file, "/snapshots/rows/orientation");
+  const auto awake = read<uint8_t>(file, "/snapshots/rows/awake", H5::PredType::NATIVE_UINT8);
+  Field f;
+  std::vector<double> p(3 * nb, 0.0), o(4 * nb, 0.0);
+  std::vector<uint8_t> a(nb, 0);
+  std::size_t row = 0;
+  for (int64_t e : end) {
+    for (; row < static_cast<std::size_t>(e); ++row) {
+      const std::size_t b = static_cast<std::size_t>(body[row]);
+      std::copy(&pos[3 * row], &pos[3 * row] + 3, &p[3 * b]);
+      std::copy(&ori[4 * row], &ori[4 * row] + 4, &o[4 * b]);
+      a[b] = awake[row];
+    }
+    f.position.insert(f.position.end(), p.begin(), p.end());
+    f.orientation.insert(f.orientation.end(), o.begin(), o.end());
+    f.awake.insert(f.awake.end(), a.begin(), a.end());
+  }
+  return f;
 }
 
 std::string string_attr(const H5::H5Object& object, const std::string& name) {
@@ -203,13 +235,12 @@ TEST(Recorder, RoundTripKeepsEveryValueAndShape) {
 
   // snapshots: 7 of 3 bodies, quaternions stored (w, x, y, z)
   EXPECT_EQ(shape(file, "/snapshots/time"), (std::vector<hsize_t>{hsize_t(k)}));
-  EXPECT_EQ(shape(file, "/snapshots/position"), (std::vector<hsize_t>{hsize_t(k), nb, 3}));
-  EXPECT_EQ(shape(file, "/snapshots/orientation"), (std::vector<hsize_t>{hsize_t(k), nb, 4}));
-  EXPECT_EQ(shape(file, "/snapshots/awake"), (std::vector<hsize_t>{hsize_t(k), nb}));
+  EXPECT_EQ(shape(file, "/snapshots/end_row"), (std::vector<hsize_t>{hsize_t(k)}));
   const std::vector<double> st = read_doubles(file, "/snapshots/time");
-  const std::vector<double> pos = read_doubles(file, "/snapshots/position");
-  const std::vector<double> ori = read_doubles(file, "/snapshots/orientation");
-  const auto awake = read<uint8_t>(file, "/snapshots/awake", H5::PredType::NATIVE_UINT8);
+  const Field field = full_field(file, nb);
+  const std::vector<double>& pos = field.position;
+  const std::vector<double>& ori = field.orientation;
+  const std::vector<uint8_t>& awake = field.awake;
   for (int j = 0; j < k; ++j) {
     EXPECT_EQ(st[j], 0.02 * (200 * j));
     const std::vector<BodyPose> expected = poses(j, nb);
@@ -337,7 +368,7 @@ TEST(Recorder, DestroyedDuringExceptionLeavesIncompleteFileWithAllRows) {
   EXPECT_EQ(string_attr(meta, "status"), "incomplete");
   EXPECT_NE(string_attr(meta, "message").find("exception"), std::string::npos);
   expect_load_rows(file, n);
-  EXPECT_EQ(shape(file, "/snapshots/position"), (std::vector<hsize_t>{1, 3, 3}));
+  EXPECT_EQ(shape(file, "/snapshots/end_row"), (std::vector<hsize_t>{1}));
   EXPECT_EQ(shape(file, "/fracture/events"), (std::vector<hsize_t>{1}));
 }
 
@@ -382,7 +413,7 @@ TEST(Recorder, KilledProcessLeavesFlushedRowsReadable) {
     H5::H5File file(path, H5F_ACC_RDONLY);
     EXPECT_EQ(string_attr(file.openGroup("/meta"), "status"), "running");
     expect_load_rows(file, flushed);  // the unflushed rows are lost, nothing else
-    EXPECT_EQ(shape(file, "/snapshots/position"), (std::vector<hsize_t>{1, 3, 3}));
+    EXPECT_EQ(shape(file, "/snapshots/end_row"), (std::vector<hsize_t>{1}));
     EXPECT_EQ(shape(file, "/fracture/events"), (std::vector<hsize_t>{1}));
   }
 }
@@ -407,7 +438,8 @@ TEST(Recorder, ReopenedFileContinuesAfterItsRows) {
   EXPECT_FALSE(string_attr(file.openGroup("/meta"), "resumed_utc").empty());
   expect_load_rows(file, total);
   EXPECT_EQ(read_doubles(file, "/snapshots/time"), (std::vector<double>{0.5, 1.5}));
-  EXPECT_EQ(shape(file, "/snapshots/position"), (std::vector<hsize_t>{2, 3, 3}));
+  EXPECT_EQ(shape(file, "/snapshots/end_row"), (std::vector<hsize_t>{2}));
+  EXPECT_EQ(full_field(file, 3).position.size(), 2u * 3 * 3);
   EXPECT_EQ(shape(file, "/fracture/events"), (std::vector<hsize_t>{1}));
 }
 
@@ -440,7 +472,8 @@ TEST(Recorder, ZeroBodiesAndNoEventsGiveEmptyDatasets) {
   EXPECT_EQ(shape(file, "/bodies/vertex_offset"), (std::vector<hsize_t>{1}));
   EXPECT_EQ(shape(file, "/bodies/vertices"), (std::vector<hsize_t>{0, 2}));
   EXPECT_EQ(shape(file, "/snapshots/time"), (std::vector<hsize_t>{2}));
-  EXPECT_EQ(shape(file, "/snapshots/position"), (std::vector<hsize_t>{2, 0, 3}));
+  EXPECT_EQ(shape(file, "/snapshots/end_row"), (std::vector<hsize_t>{2}));
+  EXPECT_EQ(shape(file, "/snapshots/rows/position"), (std::vector<hsize_t>{0, 3}));
   EXPECT_EQ(shape(file, "/fracture/events"), (std::vector<hsize_t>{0}));
 }
 

@@ -78,10 +78,32 @@ class RunFile:
         return len(self.datasets.get("/snapshots/time", ()))
 
 
+def snapshot_field(f):
+    """The snapshots of an open output file `f` (h5py) as full fields: position (k x nb x 3, m),
+    orientation (k x nb x 4, w x y z) and awake (k x nb). The file stores, per snapshot, only the
+    bodies whose pose or awake flag changed since the snapshot before (the first stores every
+    body): each body keeps its latest row."""
+    k = len(f["/snapshots/time"])
+    nb = len(f["/bodies/floe_id"])
+    end = f["/snapshots/end_row"][:k]
+    rows = int(end[-1]) if k else 0
+    body = f["/snapshots/rows/body"][:rows]
+    pos, ori, awk = f["/snapshots/rows/position"][:rows], f["/snapshots/rows/orientation"][:rows], f["/snapshots/rows/awake"][:rows]
+    position, orientation, awake = np.zeros((k, nb, 3)), np.zeros((k, nb, 4)), np.zeros((k, nb), dtype=np.uint8)
+    p, o, a = np.zeros((nb, 3)), np.zeros((nb, 4)), np.zeros(nb, dtype=np.uint8)
+    start = 0
+    for i in range(k):
+        r = slice(start, int(end[i]))
+        p[body[r]], o[body[r]], a[body[r]] = pos[r], ori[r], awk[r]
+        position[i], orientation[i], awake[i] = p, o, a
+        start = int(end[i])
+    return position, orientation, awake
+
+
 def load_run(path, snapshots=False):
-    """Every dataset of the run's HDF5 file as a Quantity (the snapshots' positions and
-    orientations only if `snapshots`: they are the large part; their times always), its
-    attributes, and its breaks with their names."""
+    """Every dataset of the run's HDF5 file as a Quantity (the snapshots' full fields as
+    /snapshots/position, orientation and awake, k x nb, only if `snapshots`: they are the large
+    part; their times always), its attributes, and its breaks with their names."""
     datasets = {}
     with h5py.File(path, "r") as f:
         def visit(name, obj):
@@ -92,6 +114,12 @@ def load_run(path, snapshots=False):
             datasets["/" + name] = Quantity(obj[()], _text(obj.attrs.get("units", "")),
                                             _text(obj.attrs.get("description", "")))
         f.visititems(visit)
+        if snapshots and "/snapshots/end_row" in f:
+            position, orientation, awake = snapshot_field(f)
+            rows = {n: f["/snapshots/rows/" + n] for n in ("position", "orientation", "awake")}
+            for name, value in (("position", position), ("orientation", orientation), ("awake", awake)):
+                datasets["/snapshots/" + name] = Quantity(value, _text(rows[name].attrs.get("units", "")),
+                                                          _text(rows[name].attrs.get("description", "")))
         attrs = {g: {k: _text(v) for k, v in f[g].attrs.items()} if g in f else {} for g in ("/meta", "/stats", "/layout")}
         events, modes, mechanisms = np.zeros(0), {}, {}
         if "/fracture/events" in f:

@@ -20,6 +20,8 @@ import sys
 import h5py
 import numpy as np
 
+from .results import snapshot_field
+
 
 def quat_to_matrix(q):
     w, x, y, z = q
@@ -77,6 +79,7 @@ def write_views(path):
         thick = h["/bodies/thickness"][:]
         floe = h["/bodies/floe_id"][:]
         times = h["/snapshots/time"][:]
+        positions, orientations, awakes = snapshot_field(h)  # the full field of each snapshot
         nb = len(off) - 1
         # each body a polygonal prism: its outline at +-h/2 about the centre of mass (body frame)
         local = []
@@ -107,8 +110,8 @@ def write_views(path):
             out["topology"] = np.asarray(topo, dtype=np.int64)
             out["floe_id"] = np.repeat(floe, 2).astype(np.int32)
             for k in range(len(times)):
-                pos = h["/snapshots/position"][k]
-                q = h["/snapshots/orientation"][k]
+                pos = positions[k]
+                q = orientations[k]
                 pts = np.empty((npts, 3))
                 i = 0
                 for b, (top, bottom) in enumerate(local):
@@ -117,7 +120,7 @@ def write_views(path):
                         pts[i:i + len(face)] = face @ R.T + pos[b]
                         i += len(face)
                 out[f"points/{k}"] = pts
-                out[f"awake/{k}"] = np.repeat(h["/snapshots/awake"][k], 2).astype(np.int32)
+                out[f"awake/{k}"] = np.repeat(awakes[k], 2).astype(np.int32)
                 if joints is not None:
                     R = np.array([quat_to_matrix(qb) for qb in q[first]])  # nj x 3 x 3
                     out[f"joint_points/{k}"] = (np.einsum("jab,jpb->jpa", R, quads) + pos[first][:, None, :]).reshape(-1, 3)
