@@ -91,7 +91,7 @@ void Series::write(const void* data, hsize_t count, const H5::DataType& memtype)
 
 Series create_series(const H5::Group& group, const std::string& name, const H5::DataType& type,
                      const std::vector<hsize_t>& row_shape, hsize_t chunk_rows,
-                     const std::string& units, const std::string& description) {
+                     const std::string& units, const std::string& description, bool compress) {
   std::vector<hsize_t> dims{0}, maxdims{H5S_UNLIMITED}, chunk{chunk_rows};
   for (hsize_t d : row_shape) {
     dims.push_back(d);
@@ -102,6 +102,10 @@ Series create_series(const H5::Group& group, const std::string& name, const H5::
   H5::DataSpace space(static_cast<int>(dims.size()), dims.data(), maxdims.data());
   H5::DSetCreatPropList props;
   props.setChunk(static_cast<int>(chunk.size()), chunk.data());
+  if (compress) {
+    props.setShuffle();
+    props.setDeflate(kDeflateLevel);
+  }
   Series series;
   series.dataset = std::make_unique<H5::DataSet>(group.createDataSet(name, type, space, props));
   series.row_shape = row_shape;
@@ -131,11 +135,19 @@ Series open_series(const H5::Group& group, const std::string& name) {
 
 void write_fixed(const H5::Group& group, const std::string& name, const H5::DataType& file_type,
                  const H5::DataType& mem_type, const std::vector<hsize_t>& dims,
-                 const void* data, const std::string& units, const std::string& description) {
+                 const void* data, const std::string& units, const std::string& description, bool compress) {
   H5::DataSpace space(static_cast<int>(dims.size()), dims.data());
-  H5::DataSet dataset = group.createDataSet(name, file_type, space);
   hsize_t elements = 1;
   for (hsize_t d : dims) elements *= d;
+  H5::DSetCreatPropList props;
+  if (compress && elements > 0 && !dims.empty()) {
+    std::vector<hsize_t> chunk = dims;
+    chunk[0] = std::min<hsize_t>(chunk[0], kFixedChunkRows);
+    props.setChunk(static_cast<int>(chunk.size()), chunk.data());
+    props.setShuffle();
+    props.setDeflate(kDeflateLevel);
+  }
+  H5::DataSet dataset = group.createDataSet(name, file_type, space, props);
   if (elements > 0) dataset.write(data, mem_type);
   write_attr(dataset, "units", units);
   write_attr(dataset, "description", description);

@@ -55,17 +55,24 @@ struct Series {
   void write(const void* data, hsize_t count, const H5::DataType& memtype);
 };
 
-/// Creates an empty, chunked, extendible dataset of rows of shape `row_shape` in `group`.
+/// Datasets written compressed (`compress` below) go through HDF5's shuffle and deflate filters at
+/// this level: the fast end, which already takes a field of equal outlines to almost nothing.
+inline constexpr int kDeflateLevel = 1;
+/// Rows per chunk of a compressed fixed dataset.
+inline constexpr hsize_t kFixedChunkRows = 65536;
+
+/// Creates an empty, chunked, extendible dataset of rows of shape `row_shape` in `group`,
+/// compressed if `compress`.
 Series create_series(const H5::Group& group, const std::string& name, const H5::DataType& type,
                      const std::vector<hsize_t>& row_shape, hsize_t chunk_rows, const std::string& units,
-                     const std::string& description);
+                     const std::string& description, bool compress = false);
 
 /// Opens the dataset `name` of `group` made by create_series, to append after its rows.
 Series open_series(const H5::Group& group, const std::string& name);
 
-/// Writes a fixed-size dataset in one go.
+/// Writes a fixed-size dataset in one go, compressed if `compress`.
 void write_fixed(const H5::Group& group, const std::string& name, const H5::DataType& file_type,
                  const H5::DataType& mem_type, const std::vector<hsize_t>& dims, const void* data,
-                 const std::string& units, const std::string& description);
+                 const std::string& units, const std::string& description, bool compress = false);
 
 }  // namespace icedem

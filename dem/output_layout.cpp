@@ -62,8 +62,10 @@ H5::Group parent_group(H5::H5File& file, const std::string& path) {
 Series schema_series(H5::H5File& file, const std::string& path, const H5::DataType& type, const std::vector<hsize_t>& row_shape,
                      hsize_t chunk_rows, const std::string& units) {
   const DatasetEntry& e = dataset_entry(path);
+  // the snapshots' rows grow with the field's motion; shuffle and deflate halve them
+  const bool compress = path.rfind("/snapshots/rows/", 0) == 0;
   return create_series(parent_group(file, path), split_path(path).second, type, row_shape, chunk_rows, units,
-                       e.description);
+                       e.description, compress);
 }
 Series schema_series(H5::H5File& file, const std::string& path, const H5::DataType& type, const std::vector<hsize_t>& row_shape,
                      hsize_t chunk_rows) {
@@ -74,7 +76,9 @@ Series schema_series(H5::H5File& file, const std::string& path, const H5::DataTy
 void schema_fixed(H5::H5File& file, const std::string& path, const H5::DataType& file_type, const H5::DataType& mem_type,
                   const std::vector<hsize_t>& dims, const void* data) {
   const DatasetEntry& e = dataset_entry(path);
-  write_fixed(parent_group(file, path), split_path(path).second, file_type, mem_type, dims, data, e.unit, e.description);
+  // /bodies grows with the field: compressed, a field of equal outlines costs almost nothing
+  write_fixed(parent_group(file, path), split_path(path).second, file_type, mem_type, dims, data, e.unit, e.description,
+              true);
 }
 
 }  // namespace
