@@ -34,10 +34,7 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
     stand_in_pose.setOrigin(btVector3(floe.centre.x(), y, floe.centre.y()));
     stand_in_pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + whole.principal_yaw));
     DormantLattice d;
-    // out of the world until reached, as a rigid floe (dem/unreached_floes.hpp)
-    const bool unreached = world.keeps_unreached();
-    d.stand_in = world.add_body(whole, stand_in_pose, floe_id, friction, -1, !unreached);
-    if (unreached) world.keep_unreached(d.stand_in);
+    d.stand_in = world.add_resting_floe(whole, stand_in_pose, floe_id, friction);
     world.floes()[d.stand_in].stand_in = true;
     world.floes()[d.stand_in].lattice = static_cast<int>(world.lattices().size());
     d.first_element = static_cast<int>(world.floes().size());

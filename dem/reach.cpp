@@ -34,10 +34,10 @@ void enter_reached_floes(const Scene& scene, State& state) {
   // the structure moves by its speed; Bullet's box of it already spans its last step
   near_box(world, *world.structure(), kReachMargin + 2 * std::abs(scene.structure.speed) * dt, reached);
   // every awake body (sleeping and fixed ones do not move)
-  const btAlignedObjectArray<btRigidBody*>& bodies = world.dynamics().getNonStaticRigidBodies();
-  for (int i = 0; i < bodies.size(); ++i)
-    if (bodies[i]->isActive() && !bodies[i]->isStaticOrKinematicObject())
-      near_box(world, *bodies[i], kReachMargin + box_travel(*bodies[i], 2 * dt), reached);
+  for (int i : world.awake_floe_indices()) {
+    const btRigidBody& body = *world.floes()[static_cast<std::size_t>(i)].body;
+    near_box(world, body, kReachMargin + box_travel(body, 2 * dt), reached);
+  }
   for (int index : reached) world.enter_reached(index);  // a floe met twice enters once
 }
 

@@ -31,7 +31,7 @@ btScalar combined_restitution(const btCollisionObject* a, const btCollisionObjec
 }  // namespace
 
 Liveness liveness(const btRigidBody& body) {
-  // out of the world: a floe nothing has reached yet is at rest, asleep (World::keep_unreached)
+  // out of the world: a floe nothing has reached yet is at rest, asleep (World::add_resting_floe)
   if (!body.isInWorld()) return body.getActivationState() == ISLAND_SLEEPING ? Liveness::kAsleep : Liveness::kOutside;
   return body.isActive() ? Liveness::kAwake : Liveness::kAsleep;
 }
@@ -286,29 +286,27 @@ void World::enter_world(btRigidBody& body) {
   // Bullet's sweep and prune has a fixed number of handles and writes past them (a crash)
   if (settings_.solver.broadphase == Broadphase::kSweepAndPrune)
     require_sweep_and_prune_room(static_cast<std::size_t>(dynamics_->getNumCollisionObjects()) + 1);
+  if (!dbvt_) {
+    dynamics_->addRigidBody(&body);
+    return;
+  }
   // Bullet orders the two bodies of a pair, and so the sides its collision detection works
   // from, by their broadphase ids, which its dbvt hands out in the order bodies enter. A floe
   // that enters when it is reached (dem/reach.hpp) would then meet its neighbours from the other
   // side than had it been in the world from the start, and their contact points would differ
   // in round-off: the id is the body's index in bodies() instead, its order of making
-  if (dbvt_) {
-    const int next_id = dbvt_->m_gid;
-    dbvt_->m_gid = body.getUserIndex3();  // the broadphase gives the body m_gid + 1
-    dynamics_->addRigidBody(&body);
-    dbvt_->m_gid = std::max(next_id, body.getUserIndex3() + 1);
-  } else {
-    dynamics_->addRigidBody(&body);
-  }
+  const int next_id = dbvt_->m_gid;
+  dbvt_->m_gid = body.getUserIndex3();  // the broadphase gives the body m_gid + 1
+  dynamics_->addRigidBody(&body);
+  dbvt_->m_gid = std::max(next_id, body.getUserIndex3() + 1);
   // Each box enters the dbvt's tree of moving boxes next to the box nearest it, and a field
   // made row by row, each floe nearest the one before, grows a chain: 96,000 floes took 5 s
   // to enter. Rebuilt balanced every 4 sqrt(N) entries, the chain stays that short, and the
   // entries and rebuilds cost about N^1.5 together.
-  if (dbvt_) {
-    btDbvt& moving = dbvt_->m_sets[btDbvtBroadphase::DYNAMIC_SET];
-    if (++entered_since_rebuild_ >= std::max(256.0, 4.0 * std::sqrt(static_cast<double>(moving.m_leaves)))) {
-      moving.optimizeTopDown(kBottomUpLeaves);
-      entered_since_rebuild_ = 0;
-    }
+  btDbvt& moving = dbvt_->m_sets[btDbvtBroadphase::DYNAMIC_SET];
+  if (++entered_since_rebuild_ >= std::max(256.0, 4.0 * std::sqrt(static_cast<double>(moving.m_leaves)))) {
+    moving.optimizeTopDown(kBottomUpLeaves);
+    entered_since_rebuild_ = 0;
   }
 }
 
@@ -328,12 +326,16 @@ bool World::keeps_unreached() const {
          !a.freeze_outside_region;
 }
 
-void World::keep_unreached(int index) {
-  btRigidBody& body = *floes_.at(static_cast<std::size_t>(index)).body;
+int World::add_resting_floe(const FloeShape& shape, const btTransform& pose, int floe_id, double friction) {
+  const bool unreached = keeps_unreached();
+  const int index = add_body(shape, pose, floe_id, friction, -1, !unreached);
+  if (!unreached) return index;
+  btRigidBody& body = *floes_[static_cast<std::size_t>(index)].body;
   btVector3 lo, hi;
   body.getCollisionShape()->getAabb(body.getWorldTransform(), lo, hi);
   unreached_.add(index, lo, hi);
   body.forceActivationState(ISLAND_SLEEPING);  // asleep, out of the world (liveness)
+  return index;
 }
 
 void World::enter_reached(int index) {

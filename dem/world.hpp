@@ -186,9 +186,10 @@ class World {
   /// tow), for a reason not yet found.
   bool keeps_unreached() const;
 
-  /// Keep floe `index`, made out of the world (add_body's `in_world` false) and at rest where
-  /// the layout put it, out of the world until reached (dem/unreached_floes.hpp).
-  void keep_unreached(int index);
+  /// Add a floe resting where the layout put it (a rigid floe or a lattice's stand-in): in the
+  /// world, asleep, or kept out of it until reached when keeps_unreached() (dem/unreached_floes.hpp).
+  /// Returns its index in floes().
+  int add_resting_floe(const FloeShape& shape, const btTransform& pose, int floe_id, double friction);
 
   /// Floe `index`, kept out of the world until reached, enters it asleep where it lies, as a
   /// floe in the world all along that nothing has touched is.

@@ -119,10 +119,7 @@ void add_floes(World& world, const Scene& scene, const std::vector<Floe>& floes)
     pose.setIdentity();
     pose.setOrigin(btVector3(floe.centre.x(), y, floe.centre.y()));
     pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + shape.principal_yaw));
-    // out of the world until reached (dem/unreached_floes.hpp)
-    const bool unreached = world.keeps_unreached();
-    const int index = world.add_body(shape, pose, floe_id++, scene.friction.ice_ice, -1, !unreached);
-    if (unreached) world.keep_unreached(index);
+    world.add_resting_floe(shape, pose, floe_id++, scene.friction.ice_ice);
   }
 }
 

@@ -118,11 +118,8 @@ void restore_world(World& world, const WorldState& s) {
         s.bodies.size(), s.lattice_replaced.size(), s.joint_broken.size(), bodies.size(), world.lattices().size(),
         world.joints().size()));
   // the floes the run had reached, in the world (asleep where they lay, as the run found them)
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const FloeBody* f = world.ice_body(bodies[i].get());
-    if (f && s.bodies[i].in_world && world.unreached().contains(static_cast<int>(f - world.floes().data())))
-      world.enter_reached(static_cast<int>(f - world.floes().data()));
-  }
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (s.bodies[i].in_world && world.ice_body(bodies[i].get())) world.enter_reached(bodies[i]->getUserIndex2());
   // the lattices in the world and the broken joints, as the run left them
   for (std::size_t l = 0; l < world.lattices().size(); ++l)
     if (s.lattice_replaced[l]) wake_lattice(world, world.lattices()[l]);
