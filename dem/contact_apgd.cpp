@@ -1,6 +1,7 @@
 #include "dem/contact_apgd.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -20,12 +21,12 @@ constexpr int kCheckEvery = 4;
 // larger one keeps its joint rows as unknowns
 constexpr int kMaxFoldedBodies = 24;
 
-// R rows of J on their one or two bodies (-1: none): a contact's three rows (R = 3) or
-// one joint row (R = 1). Plain arrays of six, one per row, so that the products are short
-// loops the compiler unrolls (Eigen's small fixed-size products over blocks of a dynamic
-// vector were not inlined and took a third of a jammed run's CPU time), and only J: M^-1
-// is applied per body, between the two passes, which halves the memory a pass streams
-// through
+// R rows of J on their one or two bodies (-1: none): a joint row (R = 1) or a contact's
+// side kept apart (ContactRows below, R = 3). Plain arrays of six, one per row, so that
+// the products are short loops the compiler unrolls (Eigen's small fixed-size products
+// over blocks of a dynamic vector were not inlined and took a third of a jammed run's CPU
+// time), and only J: M^-1 is applied per body, between the two passes, which halves the
+// memory a pass streams through
 template <int R>
 struct Blocks {
   int a, b;
@@ -85,6 +86,76 @@ void row_products(const std::vector<Blocks<R>>& blocks, const double* free, cons
   }
 }
 
+// A contact's three rows (normal, two tangents) on its one or two bodies. Bullet's rows
+// act along the same directions on both bodies, opposite: J_a = [L A_a], J_b = [-L A_b],
+// so L is kept once, 27 values where two blocks of J hold 36. On a jammed island's
+// thousands of contacts the two passes a step makes over them stream from beyond the L2
+// cache, and their time follows the bytes. A contact whose sides are not opposite (none of
+// Bullet's) keeps its b side apart, as a SideRows.
+struct ContactRows {
+  int a, b;                         // -1: no body (or b kept apart)
+  double lin[3][3];                 // the rows' linear part on a; on b, its negative
+  double ang_a[3][3], ang_b[3][3];  // the rows' angular parts on a and on b
+};
+
+struct SideRows {
+  int contact, body;
+  double j[3][6];
+};
+
+inline double dot3(const double (&p)[3], const double* q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; }
+
+// body += J^T x over the contacts; body stacked per body
+void add_contact_impulses(const std::vector<ContactRows>& contacts, const std::vector<SideRows>& sides,
+                          const double* x, double* body) {
+  const double* xc = x;
+  for (const ContactRows& k : contacts) {
+    // at the answer of a jammed island about half the contacts carry nothing (the
+    // manifolds' points not touching), and so do their projected iterates
+    if (xc[0] == 0.0 && xc[1] == 0.0 && xc[2] == 0.0) {
+      xc += 3;
+      continue;
+    }
+    double l[3];
+    for (int i = 0; i < 3; ++i) l[i] = xc[0] * k.lin[0][i] + xc[1] * k.lin[1][i] + xc[2] * k.lin[2][i];
+    if (k.a >= 0) {
+      double* o = body + 6 * k.a;
+      for (int i = 0; i < 3; ++i) o[i] += l[i];
+      for (int i = 0; i < 3; ++i) o[3 + i] += xc[0] * k.ang_a[0][i] + xc[1] * k.ang_a[1][i] + xc[2] * k.ang_a[2][i];
+    }
+    if (k.b >= 0) {
+      double* o = body + 6 * k.b;
+      for (int i = 0; i < 3; ++i) o[i] -= l[i];
+      for (int i = 0; i < 3; ++i) o[3 + i] += xc[0] * k.ang_b[0][i] + xc[1] * k.ang_b[1][i] + xc[2] * k.ang_b[2][i];
+    }
+    xc += 3;
+  }
+  for (const SideRows& s : sides) add_rows<3>(s.j, x + 3 * s.contact, body + 6 * s.body);
+}
+
+// rows = free + J v over the contacts (rows may be free); v stacked per body
+void contact_products(const std::vector<ContactRows>& contacts, const std::vector<SideRows>& sides,
+                      const double* free, const double* v, double* rows) {
+  double* out = rows;
+  for (const ContactRows& k : contacts) {
+    double rel[3] = {0.0, 0.0, 0.0}, on_a[3] = {0.0, 0.0, 0.0}, on_b[3] = {0.0, 0.0, 0.0};
+    if (k.a >= 0) {
+      const double* va = v + 6 * k.a;
+      for (int i = 0; i < 3; ++i) rel[i] = va[i];
+      for (int r = 0; r < 3; ++r) on_a[r] = dot3(k.ang_a[r], va + 3);
+    }
+    if (k.b >= 0) {
+      const double* vb = v + 6 * k.b;
+      for (int i = 0; i < 3; ++i) rel[i] -= vb[i];
+      for (int r = 0; r < 3; ++r) on_b[r] = dot3(k.ang_b[r], vb + 3);
+    }
+    for (int r = 0; r < 3; ++r) out[r] = free[r] + (dot3(k.lin[r], rel) + (on_a[r] + on_b[r]));
+    free += 3, out += 3;
+  }
+  for (const SideRows& s : sides)
+    for (int r = 0; r < 3; ++r) rows[3 * s.contact + r] += row_dot(s.j[r], v + 6 * s.body);
+}
+
 // The problem's operators on the stacked impulses x: the contacts' r and, unless the
 // joints are folded, the joint rows' l.
 //
@@ -125,7 +196,8 @@ class DualProblem {
     // bodies (Blocks): this set-up, paid on every island of every step, is a copy
     contacts_.reserve(nc_);
     joints_.reserve(nj_all_);
-    for (const ProblemContact& from : p.contacts) contacts_.emplace_back(from.a, from.b, from.ja, from.jb, scaling);
+    contact_diagonal_.reserve(nc_);
+    for (int c = 0; c < nc_; ++c) add_contact(c, p.contacts[c], scaling);
     for (const ProblemJointRow& from : p.joints) joints_.emplace_back(from.a, from.b, from.ja, from.jb, inv_mass_);
     rows_free_.resize(size());
     mu_.resize(nc_);
@@ -147,7 +219,7 @@ class DualProblem {
       all_compliance_(r) = from.compliance;
       bias_(r) = from.bias;
     }
-    set_step_scale();
+    set_step_scale(p);
     // the rows' velocities at x = 0
     gather(rows_free_, rows_free_);
     // the merit's q: the contacts' free velocity, the joints folded (the local form's q;
@@ -184,7 +256,7 @@ class DualProblem {
   // then the joint rows' J v + b
   void row_velocities(const Eigen::VectorXd& x, Eigen::VectorXd& rows) const {
     body_impulse_.setZero();  // J^T x
-    add_body_impulses(contacts_, x.data(), body_impulse_.data());
+    add_contact_impulses(contacts_, sides_, x.data(), body_impulse_.data());
     if (!folded_) add_body_impulses(joints_, x.data() + 3 * nc_, body_impulse_.data());
     for (int i = 0; i < nb_; ++i)
       if (group_of_.empty() || group_of_[i] < 0)
@@ -224,7 +296,7 @@ class DualProblem {
   // neighbours as at one with twenty, where the plain diagonal let the most crowded body
   // set a short step for all. On 237 islands of the paper's small-floe run (2536 contacts on
   // average) it took 14 % fewer gradient steps to a merit of 1e-3.
-  void set_step_scale() {
+  void set_step_scale(const ContactProblem& problem) {
     std::vector<int> blocks(nb_, 0);
     auto count = [&](int a, int b) {  // a row block between two bodies of one lattice counts once
       const bool one = a >= 0 && b >= 0 &&
@@ -232,7 +304,7 @@ class DualProblem {
       if (a >= 0) ++blocks[a];
       if (b >= 0 && !one) ++blocks[b];
     };
-    for (const Blocks<3>& k : contacts_) count(k.a, k.b);
+    for (const ProblemContact& k : problem.contacts) count(k.a, k.b);
     if (!folded_)
       for (const Blocks<1>& k : joints_) count(k.a, k.b);
     // a folded lattice's bodies share their count: their velocities answer every impulse on it
@@ -243,21 +315,52 @@ class DualProblem {
       for (int i = 0; i < nb_; ++i)
         if (group_of_[i] >= 0) blocks[i] = in_group[group_of_[i]];
     }
-    auto bound = [&](const auto& k, int r) {
-      return (k.a >= 0 ? blocks[k.a] * k.diagonal_a[r] : 0.0) + (k.b >= 0 ? blocks[k.b] * k.diagonal_b[r] : 0.0);
+    auto split = [&](int a, int b, double on_a, double on_b) {
+      return (a >= 0 ? blocks[a] * on_a : 0.0) + (b >= 0 ? blocks[b] * on_b : 0.0);
     };
     step_.resize(size());
     for (int c = 0; c < nc_; ++c) {
-      const Blocks<3>& k = contacts_[c];
-      step_.segment<3>(3 * c).setConstant(3.0 / (bound(k, 0) + bound(k, 1) + bound(k, 2)));
+      const ProblemContact& k = problem.contacts[c];
+      const auto& d = contact_diagonal_[c];
+      step_.segment<3>(3 * c).setConstant(3.0 / split(k.a, k.b, d[0], d[1]));
     }
-    for (int r = 0; r < nj_; ++r) step_(3 * nc_ + r) = 1.0 / (bound(joints_[r], 0) + compliance_(r));
+    for (int r = 0; r < nj_; ++r) {
+      const Blocks<1>& k = joints_[r];
+      step_(3 * nc_ + r) = 1.0 / (split(k.a, k.b, k.diagonal_a[0], k.diagonal_b[0]) + compliance_(r));
+    }
     inverse_step_ = step_.cwiseInverse();
+  }
+
+  // contact c's rows as ContactRows (its b side apart if not opposite to a's), and each
+  // side's part of the trace of its block of J M^-1 J^T
+  void add_contact(int c, const ProblemContact& from, const std::vector<Eigen::Matrix<double, 6, 6>>& inv_mass) {
+    ContactRows k;
+    k.a = from.a;
+    k.b = from.b;
+    const bool opposite = from.a < 0 || from.b < 0 || from.ja.leftCols<3>() == -from.jb.leftCols<3>();
+    for (int r = 0; r < 3; ++r)
+      for (int i = 0; i < 3; ++i) {
+        k.lin[r][i] = from.a >= 0 ? from.ja(r, i) : -from.jb(r, i);
+        k.ang_a[r][i] = from.ja(r, 3 + i);
+        k.ang_b[r][i] = from.jb(r, 3 + i);
+      }
+    if (!opposite) {
+      SideRows side;
+      side.contact = c;
+      side.body = from.b;
+      for (int r = 0; r < 3; ++r)
+        for (int i = 0; i < 6; ++i) side.j[r][i] = from.jb(r, i);
+      sides_.push_back(side);
+      k.b = -1;
+    }
+    contacts_.push_back(k);
+    contact_diagonal_.push_back({from.a >= 0 ? (from.ja * inv_mass[from.a] * from.ja.transpose()).trace() : 0.0,
+                                 from.b >= 0 ? (from.jb * inv_mass[from.b] * from.jb.transpose()).trace() : 0.0});
   }
 
   // rows = free + J body_velocity_ (rows may be free)
   void gather(const Eigen::VectorXd& free, Eigen::VectorXd& rows) const {
-    row_products(contacts_, free.data(), body_velocity_.data(), rows.data());
+    contact_products(contacts_, sides_, free.data(), body_velocity_.data(), rows.data());
     if (!folded_) row_products(joints_, free.data() + 3 * nc_, body_velocity_.data(), rows.data() + 3 * nc_);
   }
 
@@ -358,7 +461,9 @@ class DualProblem {
   std::vector<Group> groups_;
   std::vector<int> group_of_;             // each body's group, -1 if it has no joint
   Eigen::VectorXd start_velocity_, bias_, all_compliance_;  // v_free (v_free_t if folded); every joint row's b, C
-  std::vector<Blocks<3>> contacts_;
+  std::vector<ContactRows> contacts_;
+  std::vector<SideRows> sides_;                          // b sides not opposite to a (none of Bullet's)
+  std::vector<std::array<double, 2>> contact_diagonal_;  // on a, on b: trace of J M^-1 J^T
   std::vector<Blocks<1>> joints_;
   Eigen::VectorXd compliance_, rows_free_, mu_;  // compliance_: the joint rows' C
   Eigen::VectorXd row_mass_;                     // the iterated joint rows' 1 / (J M^-1 J^T + C)

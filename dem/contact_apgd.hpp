@@ -9,8 +9,9 @@
 //   x+ = P(y - t D g(y)),   g(x) = J v(x) + (w, b) + (shift, C l),
 //
 // where P projects each contact's impulse onto its friction cone (a joint row is free),
-// D scales each contact and joint row by its effective inverse mass (a scalar per
-// contact, so P is unchanged by it) and t = 1/L comes from a backtracking test on
+// D scales each contact and joint row by its effective mass, split among the rows on its
+// bodies (a scalar per contact, so P is unchanged by it) and t = 1/L comes from a
+// backtracking test on
 // f(x) = 1/2 x^T (J M^-1 J^T + C) x + x^T (J v_free + (w, b) + shift). The shift is
 // De Saxce's mu |u_T| on each normal, taken at y: without it the method solves the
 // convex relaxation of Coulomb's law (Chrono's cone complementarity problem), where a

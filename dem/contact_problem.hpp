@@ -171,11 +171,13 @@ double natural_map_squared(const Eigen::Ref<const Eigen::VectorXd>& r, const Eig
 inline double tangential_norm(double t1, double t2) { return std::sqrt(t1 * t1 + t2 * t2); }
 
 /// Projection of x = (normal, t1, t2) onto the cone |x_T| <= mu x_N (inline: the
-/// methods call it for every contact in every iteration).
+/// methods call it for every contact in every iteration). The two tests compare squares,
+/// so that only a point projected onto the cone's surface pays for a square root.
 inline Eigen::Vector3d project_on_cone(const Eigen::Vector3d& x, double mu) {
-  const double tangent = tangential_norm(x(1), x(2));
-  if (mu * tangent <= -x(0)) return Eigen::Vector3d::Zero();  // in the polar cone
-  if (tangent <= mu * x(0)) return x;                        // inside
+  const double tangent2 = x(1) * x(1) + x(2) * x(2), normal2 = mu * mu * x(0) * x(0);
+  if (x(0) <= 0 && tangent2 * mu * mu <= x(0) * x(0)) return Eigen::Vector3d::Zero();  // in the polar cone
+  if (x(0) >= 0 && tangent2 <= normal2) return x;                                      // inside
+  const double tangent = std::sqrt(tangent2);
   const double normal = (mu * tangent + x(0)) / (mu * mu + 1.0);
   return {normal, mu * normal * x(1) / tangent, mu * normal * x(2) / tangent};
 }
