@@ -492,26 +492,28 @@ void gradient(const DualProblem& dual, const Eigen::VectorXd& x, const Eigen::Ve
   grad.tail(nj) = rows.tail(nj) + dual.compliance().cwiseProduct(x.tail(nj));
 }
 
-// f(x) = 1/2 x^T (J M^-1 J^T + C) x + x^T (rows_free + s) from the rows' velocities at x
-// (rows = J M^-1 J^T x + rows_free): 1/2 x.(rows + rows_free) + 1/2 x.C x + x.s
-double objective(const DualProblem& dual, const Eigen::VectorXd& x, const Eigen::VectorXd& rows,
-                 const Eigen::VectorXd& s) {
-  const int nc = dual.contacts(), nj = dual.joint_rows();
-  double f = 0.5 * x.dot(rows + dual.rows_free());
-  for (int c = 0; c < nc; ++c) f += x(3 * c) * s(c);
-  return f + 0.5 * x.tail(nj).dot(dual.compliance().cwiseProduct(x.tail(nj)));
-}
-
-// the projected gradient step from y with step 1/L, into next; returns the quadratic
-// model's increase over f(y): g.(next - y) + L/2 |next - y|^2 in D^-1's metric (as two
-// reductions Eigen vectorises, with D^-1 stored: one sum carried through a division per
-// row was an eighth of a jammed run's CPU)
-double gradient_step(const DualProblem& dual, const Eigen::VectorXd& y, const Eigen::VectorXd& grad_y, double L,
-                     Eigen::VectorXd& next, Eigen::VectorXd& change) {
+// the projected gradient step from y with step 1/L, into next, and change = next - y
+void gradient_step(const DualProblem& dual, const Eigen::VectorXd& y, const Eigen::VectorXd& grad_y, double L,
+                   Eigen::VectorXd& next, Eigen::VectorXd& change) {
   next = y - (1.0 / L) * dual.scale().cwiseProduct(grad_y);
   dual.project(next);
   change = next - y;
-  return change.dot(grad_y) + 0.5 * L * change.cwiseAbs2().dot(dual.inverse_scale());
+}
+
+// whether the quadratic model with L lies above f at the new point, f(next) <= f(y) +
+// g(y).d + L/2 |d|^2 in D^-1's metric, d = next - y. For the fixed shift f(x) = 1/2 x^T (J
+// M^-1 J^T + C) x + x^T (rows_free + s) is quadratic, so f(next) - f(y) - g(y).d =
+// 1/2 d^T (J M^-1 J^T + C) d, and J M^-1 J^T d is rows_next - rows_y (the rows are affine
+// in the impulses): the test is d.(rows_next - rows_y) + d.C d <= L |d|^2, two reductions
+// Eigen vectorises, where evaluating f at both points cost a pass each and a difference
+// of two large numbers
+bool model_above(const DualProblem& dual, const Eigen::VectorXd& change, const Eigen::VectorXd& rows_next,
+                 const Eigen::VectorXd& rows_y, double L) {
+  const int nj = dual.joint_rows();
+  const double curvature = change.dot(rows_next - rows_y) +
+                           change.tail(nj).dot(dual.compliance().cwiseProduct(change.tail(nj)));
+  const double bound = L * change.cwiseAbs2().dot(dual.inverse_scale());
+  return curvature <= bound * (1.0 + 1e-12);
 }
 
 // the slope of f (with the shift at x+) along the step just taken, g(x+).(x+ - x): positive
@@ -560,14 +562,12 @@ SolverAnswer AcceleratedProjectedGradient::solve(const ContactProblem& p, const 
   while (answer.residual > options.tolerance && steps < options.max_iterations) {
     shift(dual, rows_y, s);
     gradient(dual, y, rows_y, s, grad_y);
-    const double f_y = objective(dual, y, rows_y, s);
     // backtracking: the quadratic model with L must lie above f at the new point
     for (int trial = 0; trial < 30; ++trial) {
-      const double model = gradient_step(dual, y, grad_y, L, next, change);
+      gradient_step(dual, y, grad_y, L, next, change);
       dual.row_velocities(next, rows_next);
       ++steps;
-      const double f_next = objective(dual, next, rows_next, s);
-      if (f_next <= f_y + model + 1e-14 * std::abs(f_y)) break;
+      if (model_above(dual, change, rows_next, rows_y, L)) break;
       L *= 2.0;
     }
     if (++iteration % kCheckEvery == 0 || steps >= options.max_iterations) {
