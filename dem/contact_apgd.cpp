@@ -192,8 +192,8 @@ class DualProblem {
           folded_inv_mass[g.bodies[k]] = g.inverse.block<6, 6>(6 * k, 6 * k);
     }
     const auto& scaling = groups_.empty() ? inv_mass_ : folded_inv_mass;
-    // J kept as each contact's 3x6 blocks (each joint row's 1x6) on its one or two
-    // bodies (Blocks): this set-up, paid on every island of every step, is a copy
+    // J kept as each contact's rows (ContactRows) and each joint row's 1x6 blocks on its
+    // one or two bodies (Blocks): this set-up, paid on every island of every step, is a copy
     contacts_.reserve(nc_);
     joints_.reserve(nj_all_);
     contact_diagonal_.reserve(nc_);
