@@ -104,10 +104,12 @@ std::vector<KeySpec> make_keys() {
                    "to, if below solver.merit_tolerance: the structure's load is read off that island's "
                    "impulses, and a loose solve leaves it low along the force chains (on the paper's "
                    "small-floe run, 3-5 % low at 1e-3; docs/model/convergence.md)"));
-  k.push_back(integer("solver.method_iterations", 3000, 1, 100000,
+  k.push_back(integer("solver.method_iterations", 1000, 1, 100000,
                       "solver.method other than \"pgs\": cap of the method's iterations per island and Bullet "
-                      "step (Newton steps, or sweeps); a safeguard, not a setting of accuracy: on the paper's "
-                      "small-floe run one island in 15,000 steps needed 1022 gradient steps, the rest at most 740"));
+                      "step (Newton steps, or sweeps); the paper's small-floe run needs at most 589 gradient steps "
+                      "(1022 on one island in one build); lattices of more than 24 elements, whose joints are not "
+                      "folded, reach it on every step (scenarios/stress/small_elements.toml), where a higher cap "
+                      "costs its multiple in CPU"));
   k.push_back(integer("solver.position_iterations", 30, 1, 100000,
                       "(profile) cap of the split-impulse position sweeps per island and Bullet step: they push "
                       "penetrating contacts apart by solver.contact_erp of their depth, apart from the contact "
