@@ -17,7 +17,7 @@ namespace icedem {
 struct OutputDatasets {
   std::vector<Series> series;  // series_columns() order
   // snapshots: the first holds every body, each later one the bodies whose pose or awake flag
-  // changed since the one before (rows from first_row on)
+  // changed since the one before (snapshot i: rows end_row[i-1] to end_row[i] of snap_body etc.)
   Series snap_time, snap_end_row, snap_body, snap_position, snap_orientation, snap_awake;
   Series events;
 

@@ -146,10 +146,8 @@ struct Recorder::Impl {
 
   // bytes the buffered rows take in the file (as in memory: doubles and ints, unpadded)
   std::size_t buffered_bytes() const {
-    return load_buffer.size() * sizeof(LoadSample) +
-           8 * (snap_time_buffer.size() + snap_position_buffer.size() + snap_orientation_buffer.size() +
-                snap_end_row_buffer.size()) +
-           4 * snap_body_buffer.size() + snap_awake_buffer.size() + event_buffer.size() * sizeof(FractureEvent);
+    return load_buffer.size() * sizeof(LoadSample) + snapshot_buffer_bytes() +
+           event_buffer.size() * sizeof(FractureEvent);
   }
 
   // the buffered rows that did not fit: dropped, so that the file can still be closed
