@@ -43,6 +43,7 @@ BreakContext break_context(const Scene& scene, const World& world, int floe_id, 
   c.depth = -midpoint.y();
   c.distance = distance_from_structure(scene, structure_position, midpoint);
   Eigen::Vector3d structure_force = Eigen::Vector3d::Zero();
+  double down = 0, toward = 0;  // N, the other floes' contact force on the floe
   btDispatcher& dispatcher = *const_cast<World&>(world).dynamics().getDispatcher();
   for (int i = 0; i < dispatcher.getNumManifolds(); ++i) {
     const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
@@ -66,11 +67,16 @@ BreakContext break_context(const Scene& scene, const World& world, int floe_id, 
       const Eigen::Vector3d at = to_eigen(floe_is_0 ? p.getPositionWorldOnA() : p.getPositionWorldOnB());
       Eigen::Vector3d inward(structure_position.x() - at.x(), 0.0, structure_position.z() - at.z());
       if (inward.norm() > 0) inward.normalize();
-      c.press_down += std::max(0.0, -force.y());
-      c.press_toward += std::max(0.0, force.dot(inward));
+      // signed sums: a floe resting flush on elements has contacts on their side faces
+      // whose friction pushes some elements up and others down; those cancel in the
+      // force the other floes exert, which is what presses the floe
+      down += -force.y();
+      toward += force.dot(inward);
     }
   }
   c.structure_force = structure_force.norm();
+  c.press_down = std::max(0.0, down);
+  c.press_toward = std::max(0.0, toward);
   return c;
 }
 

@@ -54,8 +54,8 @@ constexpr double kNearStructureDistance = 1.0;  // m
 struct BreakContext {
   bool touching_structure = false;  // an element of the floe has a contact with the structure
   double structure_force = 0;       // N, magnitude of the structure's contact force on the floe
-  double press_down = 0;            // N, other floes' contact force on it, downward component
-  double press_toward = 0;          // N, the same, horizontal component towards the structure axis
+  double press_down = 0;            // N, other floes' net contact force on it, downward component (0 if upward)
+  double press_toward = 0;          // N, the same, horizontal component towards the structure axis (0 if away)
   double depth = 0;                 // m, depth of the joint midpoint below the waterline (+ down)
   double distance = 0;              // m, distance_from_structure() of the joint midpoint
   std::array<double, kFailureModes> ratios{};  // load / capacity per criterion (FailureMode order)

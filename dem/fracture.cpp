@@ -1,6 +1,7 @@
 #include "dem/fracture.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include "dem/break_context.hpp"
 #include "dem/bullet_eigen.hpp"
@@ -45,6 +46,11 @@ void check_fracture(const Scene& scene, State& state, double h) {
   if (tau > 0 && state.filtered_joint_loads.size() != joints.size())
     state.filtered_joint_loads.resize(joints.size(), JointLoads{});
 
+  // The joints that fail this step are broken after all of them are found: breaking one
+  // refreshes its floe's broadphase proxies, which drops the floe's contact manifolds until
+  // the next collision pass, and the context of the floe's other breaks of the step (its
+  // contacts with the structure and with other floes) must be read from those manifolds.
+  std::vector<std::size_t> failed;
   for (std::size_t i = 0; i < joints.size(); ++i) {
     IceJoint& joint = joints[i];
     if (!joint.constraint) continue;  // broken already
@@ -80,8 +86,9 @@ void check_fracture(const Scene& scene, State& state, double h) {
         context.structure_force, context.press_down, context.press_toward, r[0], r[1], r[2], r[3], r[4]});
     ++state.breaks_by_mode[static_cast<int>(mode)];
     ++state.breaks_by_mechanism[static_cast<int>(mechanism)];
-    break_joint(world, joint);
+    failed.push_back(i);
   }
+  for (std::size_t i : failed) break_joint(world, joints[i]);
 }
 
 }  // namespace icedem

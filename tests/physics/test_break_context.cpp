@@ -62,3 +62,130 @@ TEST(BreakContext, AFloeLyingOnAnElementPressesItDownAndTheBreakRecordsIt) {
   EXPECT_NEAR(e.press_down, weight, 0.02 * weight) << "weight " << weight;
   EXPECT_EQ(state.breaks_by_mechanism[static_cast<int>(BreakMechanism::kInPack)], 1);
 }
+
+// Scenes with the structure, where what the floe was doing is known by construction
+// (issue: the mechanism classifier tested on constructed scenes). A 0.6 m floe A of
+// 4 x 4 elements of 0.15 m floats in front of the cone; the channel's end wall (rigid
+// mother ice) 1 cm behind it holds it, as the pack ahead holds a floe in the paper's runs,
+// so the cone's push bends it instead of pushing it away. The ice's bending strength is
+// lowered once the scene has settled, so that the break comes within a second of contact:
+// the classifier reads only the contacts, the joint's depth and whether the floe touches
+// the structure, none of which depends on the strength.
+namespace {
+
+constexpr double kFloeA = 10.0;  // m, x of floe A's centre; its near edge is at 9.7
+constexpr double kConeWaterlineRadius = 0.614;  // m, the default hull (Table 2)
+
+// The cone `gap` m from floe A's near edge, towed at `speed` towards it; the end wall 1 cm
+// behind A. Joints unbreakable until the test lowers the strength.
+Scene cone_scene(double gap, double speed) {
+  std::vector<std::string> keys(kUnbreakable.begin(), kUnbreakable.end());
+  keys.push_back("structure.speed=" + std::to_string(speed));
+  keys.push_back("structure.start_x=" + std::to_string(kFloeA - 0.3 - kConeWaterlineRadius - gap));
+  keys.push_back("channel.start_x=6");
+  keys.push_back("channel.length=" + std::to_string(kFloeA + 0.31 - 6.0));
+  return bench_scene(keys);
+}
+
+// Floe A alone, or with a square floe B of side `b_side` laid on its centre (rafted: one
+// thickness plus 1 mm above A, so it lands on A): B's weight sinks A under the waterline.
+State floe_a(const Scene& scene, double b_side) {
+  std::vector<Floe> floes{square_floe(kFloeA, 0.0, 0.6)};
+  if (b_side > 0) floes.push_back(square_floe(kFloeA, 3.0, b_side));  // placed apart, moved below
+  State state = initial_state(scene, floes);
+  for (FloeBody& f : state.world->floes()) {
+    if (f.floe_id != 1) continue;
+    btTransform t = f.body->getWorldTransform();
+    t.getOrigin() += btVector3(0, scene.ice.thickness + 0.001, -3.0);
+    f.body->setWorldTransform(t);
+  }
+  return state;
+}
+
+// Step until floe A (layout floe 0) breaks, at most `seconds`; the events of A's first break step.
+std::vector<FractureEvent> first_breaks_of_a(const Scene& scene, State& state, double seconds) {
+  const int steps = static_cast<int>(seconds / scene.time.dt);
+  for (int i = 0; i < steps; ++i) {
+    step(scene, state);
+    std::vector<FractureEvent> of_a;
+    for (const FractureEvent& e : state.fracture_events)
+      if (e.floe == 0) of_a.push_back(e);
+    if (!of_a.empty()) return of_a;
+  }
+  return {};
+}
+
+}  // namespace
+
+TEST(BreakMechanismScene, AFloeBentDownTheSlopeAloneBreaksOnTheSlope) {
+  // A alone: the cone arrives at 0.7 s and pushes its edge down the 45 degree slope while
+  // the wall holds it. Every joint that fails in the break step is on the slope: A touches
+  // the structure, and no other floe is there to press it (press exactly 0).
+  Scene scene = cone_scene(0.05, 0.07);
+  State state = floe_a(scene, 0.0);
+  for (int i = 0; i < 50; ++i) step(scene, state);  // 1 s: settled, the cone on A's edge
+  ASSERT_TRUE(state.fracture_events.empty());
+  scene.ice.bending_strength = 10e3;
+  const std::vector<FractureEvent> breaks = first_breaks_of_a(scene, state, 5.0);
+  ASSERT_FALSE(breaks.empty()) << "A did not break within 5 s";
+  for (const FractureEvent& e : breaks) {
+    EXPECT_EQ(e.mechanism, static_cast<int>(BreakMechanism::kOnSlope)) << "joint " << e.joint;
+    EXPECT_EQ(e.touching_structure, 1) << "joint " << e.joint;
+    EXPECT_GT(e.structure_force, kPressingForce) << "joint " << e.joint;
+    EXPECT_EQ(e.press_down + e.press_toward, 0.0) << "joint " << e.joint;
+  }
+}
+
+TEST(BreakMechanismScene, AFloeUnderAnotherBrokenAgainstTheConeIsPressedUnder) {
+  // B (0.3 m) rafted on A's centre sinks A under the waterline (A's mid-plane about 38 mm
+  // deep, more than the 33 mm thickness); the cone then pushes A's edge down the slope,
+  // with B on top pressing it: A's breaks are pressed under. Several joints fail in one
+  // step; each must carry the same floe context (the contacts are read before any joint
+  // of the step is broken).
+  Scene scene = cone_scene(0.05, 0.07);
+  State state = floe_a(scene, 0.3);
+  for (int i = 0; i < 50; ++i) step(scene, state);
+  ASSERT_TRUE(state.fracture_events.empty());
+  scene.ice.bending_strength = 10e3;
+  const std::vector<FractureEvent> breaks = first_breaks_of_a(scene, state, 5.0);
+  ASSERT_FALSE(breaks.empty()) << "A did not break within 5 s";
+  for (const FractureEvent& e : breaks) {
+    EXPECT_EQ(e.mechanism, static_cast<int>(BreakMechanism::kPressedUnder)) << "joint " << e.joint;
+    EXPECT_EQ(e.touching_structure, 1) << "joint " << e.joint;
+    EXPECT_GE(e.depth, scene.ice.thickness) << "joint " << e.joint;
+    EXPECT_GT(e.press_down + e.press_toward, kPressingForce) << "joint " << e.joint;
+  }
+}
+
+TEST(BreakMechanismScene, AFloeSunkUnderAnotherAwayFromTheConeBreaksInTheRubble) {
+  // The same stack with the structure parked 5 m away. At rest, A is fully submerged and
+  // B floats with part of its thickness above water: A's buoyancy minus its weight holds
+  // B's weight minus B's buoyancy, so A's top is d = (m_A + m_B - rho_w V_A) / (rho_w
+  // A_B) deep and its mid-plane d + h/2 (38.0 mm); B presses A with that net force
+  // (8.16 N). Then the strength is lowered until B's load breaks A: in the rubble (not
+  // touching, submerged), with the depth within 2 mm of the hydrostatic one (the lattice
+  // bends under B) and the press within 2 % of B's net weight (the contact solve's merit),
+  // none of it towards the structure. B's edges lie on A's element edges, so many of
+  // its contacts are on side faces, with friction pushing some elements up and others
+  // down: only the net force equals B's net weight (the per-point downward parts summed
+  // to 11.3 N, which is why the press is a net force).
+  Scene scene = cone_scene(5.0, 0.0);
+  State state = floe_a(scene, 0.3);
+  for (int i = 0; i < 250; ++i) step(scene, state);  // 5 s: the stack at rest
+  ASSERT_TRUE(state.fracture_events.empty());
+  const double h = scene.ice.thickness, rho_i = scene.ice.density, rho_w = scene.water.density;
+  const double area_a = 0.36, area_b = 0.09;  // m^2
+  const double top = ((area_a + area_b) * h * rho_i - rho_w * area_a * h) / (rho_w * area_b);  // m
+  const double mid_plane = top + h / 2;
+  const double press = scene.water.gravity * (rho_i * area_b * h - rho_w * area_b * top);  // N
+  scene.ice.bending_strength = 1.2e3;
+  const std::vector<FractureEvent> breaks = first_breaks_of_a(scene, state, 2.0);
+  ASSERT_FALSE(breaks.empty()) << "A did not break within 2 s";
+  for (const FractureEvent& e : breaks) {
+    EXPECT_EQ(e.mechanism, static_cast<int>(BreakMechanism::kInRubble)) << "joint " << e.joint;
+    EXPECT_EQ(e.touching_structure, 0) << "joint " << e.joint;
+    EXPECT_NEAR(e.depth, mid_plane, 0.002) << "joint " << e.joint;
+    EXPECT_NEAR(e.press_down, press, 0.02 * press) << "joint " << e.joint;
+    EXPECT_LT(e.press_toward, 0.02 * press) << "joint " << e.joint;
+  }
+}
