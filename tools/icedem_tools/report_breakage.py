@@ -12,6 +12,69 @@ def breaks_of(records, scenario, fii=None):
     runs = [(r, rec) for r, rec in records.get(scenario, []) if fii is None or dict(r.grid).get(FII) == fii]
     return [(r, e) for r, rec in runs for e in rec.get("fracture_events", [])], runs
 
+# Intervals of mechanism shares: breaks cluster in runs (a floe breaks at several joints
+# in a step or two, and one run's jam breaks several floes), so the runs, not the breaks,
+# are the independent samples; the shares' 95 % intervals resample the runs (a cluster
+# bootstrap, seeded so that a report is reproducible).
+BOOTSTRAP = 2000
+
+
+def run_counts(runs, mechanisms):
+    """Per run, its breaks by mechanism: an array (runs x mechanisms)."""
+    import numpy as np
+    rows = []
+    for _, rec in runs:
+        c = collections.Counter(e.get("mechanism_name", "") for e in rec.get("fracture_events", []))
+        rows.append([c[m] for m in mechanisms])
+    return np.array(rows, dtype=float).reshape(len(rows), len(mechanisms))
+
+
+def bootstrap_shares(counts, rng):
+    """BOOTSTRAP resampled share vectors (mechanism shares of all breaks of the resampled runs);
+    rows whose resample has no break are NaN."""
+    import numpy as np
+    n = counts.shape[0]
+    picks = rng.integers(0, n, size=(BOOTSTRAP, n))
+    totals = counts[picks].sum(axis=1)  # BOOTSTRAP x mechanisms
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return totals / totals.sum(axis=1, keepdims=True)
+
+
+def interval(samples):
+    """The 2.5 and 97.5 percentiles of bootstrap samples, ignoring NaN: (lo, hi) or None."""
+    import numpy as np
+    ok = samples[~np.isnan(samples)]
+    return (float(np.percentile(ok, 2.5)), float(np.percentile(ok, 97.5))) if ok.size else None
+
+
+def shift_verdict(diff_interval, paper_sign):
+    """Whether a difference of shares, with its interval, shows the paper's shift: 'appears'
+    when the interval lies on the paper's side of 0, 'reversed' on the other, 'not resolved'."""
+    if diff_interval is None:
+        return "not resolved"
+    lo, hi = diff_interval
+    if paper_sign * lo > 0 and paper_sign * hi > 0:
+        return "appears"
+    if paper_sign * lo < 0 and paper_sign * hi < 0:
+        return "reversed"
+    return "not resolved"
+
+
+def fig18_shift(low, high, mechanisms, rng):
+    """The paper's Fig. 18 shift between f_ii 0.3 (`low`, per-run counts) and 0.7 (`high`):
+    pressed under falls and on the slope rises. Returns {mechanism: (difference 0.7 - 0.3,
+    its 95 % interval, verdict)} for those two."""
+    import numpy as np
+    a, b = bootstrap_shares(low, rng), bootstrap_shares(high, rng)
+    out = {}
+    for m, sign in (("pressed under", -1), ("on the slope", +1)):
+        k = mechanisms.index(m)
+        point = high[:, k].sum() / max(high.sum(), 1) - low[:, k].sum() / max(low.sum(), 1)
+        iv = interval(b[:, k] - a[:, k])
+        out[m] = (float(point), iv, shift_verdict(iv, sign))
+    return out
+
+
 def mechanism_section(records, figs, report):
     """Breaks by mechanism per f_ii (dem/break_context.hpp), against the paper's Fig. 18."""
     L = ["## Breakage mechanisms", "",
@@ -21,8 +84,11 @@ def mechanism_section(records, figs, report):
          "towards the structure axis) and its distance from the structure. Classes: **on the slope** "
          "(touching the structure), **pressed under** (touching, submerged at least one thickness and "
          "pressed by another floe), **in the rubble** (not touching, submerged), **in the pack** (not "
-         "touching, afloat). Summed over f_is and seeds.", ""]
-    share = {}
+         "touching, afloat). Summed over f_is and seeds; each share with its 95 % interval "
+         "(a bootstrap over the runs: breaks cluster in runs, so the runs are the samples).", ""]
+    import numpy as np
+    rng = np.random.default_rng(18)
+    per_run = {}
     # the mechanisms as the events name them (icedem declares them; every summary counts all)
     mechanisms = [m.replace("_", " ") for m in agg.break_names(
         [rec["summary"] for v in records.values() for _, rec in v], "breaks_by_mechanism")]
@@ -37,24 +103,39 @@ def mechanism_section(records, figs, report):
             ev, runs = breaks_of(records, s, fii)
             counts = collections.Counter(e.get("mechanism_name", "") for _, e in ev)
             n = len(ev)
-            share[(s, fii)] = {m: counts[m] / n for m in mechanisms} if n else None
-            cells = " | ".join(f"{counts[m]} ({100 * counts[m] / n:.0f} %)" if n else "0" for m in mechanisms)
+            per_run[(s, fii)] = run_counts(runs, mechanisms)
+            boot = bootstrap_shares(per_run[(s, fii)], rng) if n else None
+
+            def cell(k, m):
+                if not n:
+                    return "0"
+                iv = interval(boot[:, k])
+                return (f"{counts[m]} ({100 * counts[m] / n:.0f} %" +
+                        (f", {100 * iv[0]:.0f}-{100 * iv[1]:.0f}" if iv else "") + ")")
+            cells = " | ".join(cell(k, m) for k, m in enumerate(mechanisms))
             depth = quantile([1e3 * e["depth"] for _, e in ev if "depth" in e], 0.5)
             dist = quantile([e["distance"] for _, e in ev if "distance" in e], 0.5)
             press = quantile([e["press_down"] + e["press_toward"] for _, e in ev if "press_down" in e], 0.5)
             L.append(f"| {fii:g} | {len(runs)} | {n} | {n / len(runs):.2f} | {cells} | {fmt(depth, '', 0)} | "
                      f"{fmt(dist, '', 2)} | {fmt(press, '', 1)} |")
         L.append("")
-        lo, hi = share.get((s, 0.3)), share.get((s, 0.7))
-        if lo and hi:
-            pu = (lo["pressed under"], hi["pressed under"])
-            sl = (lo["on the slope"], hi["on the slope"])
-            agree = pu[0] > pu[1] and sl[1] > sl[0]
-            L += [f"Fig. 18 says: at f_ii 0.3 a submerged floe pressed against the cone by an approaching floe "
-                  f"breaks; at 0.7 floes break sliding on the slope. Here pressed under is {100 * pu[0]:.0f} % of "
-                  f"the breaks at f_ii 0.3 and {100 * pu[1]:.0f} % at 0.7; on the slope {100 * sl[0]:.0f} % and "
-                  f"{100 * sl[1]:.0f} %: the shift with f_ii {'agrees' if agree else '**does not agree**'} with "
-                  "the paper's picture.", ""]
+        low, high = per_run.get((s, 0.3)), per_run.get((s, 0.7))
+        if (low is not None and high is not None and low.sum() and high.sum()
+                and "pressed under" in mechanisms and "on the slope" in mechanisms):
+            shift = fig18_shift(low, high, mechanisms, rng)
+
+            def said(m):
+                d, iv, verdict = shift[m]
+                return (f"{m} {100 * d:+.0f} points" + (f" ({100 * iv[0]:+.0f} to {100 * iv[1]:+.0f})" if iv else "")
+                        + f": {verdict}")
+            both = {shift[m][2] for m in shift}
+            overall = ("**appears**" if both == {"appears"} else "**is reversed**" if "reversed" in both
+                       and "appears" not in both else "**is not resolved**" if "appears" not in both
+                       else "appears in part")
+            L += ["Fig. 18 says: at f_ii 0.3 a submerged floe pressed against the cone by an approaching floe "
+                  "breaks; at 0.7 floes break sliding on the slope. From f_ii 0.3 to 0.7 here (shares of the "
+                  f"breaks, 95 % intervals over runs): {said('pressed under')}; {said('on the slope')}. "
+                  f"The paper's shift {overall}.", ""]
         pictures = [f for f in sorted(os.listdir(figs)) if f.startswith(f"break_{s}_")] if os.path.isdir(figs) else []
         if pictures:
             L += ["Just before a break, like the paper's Fig. 18 (scripts/break_pictures.py: side and top view, the "
