@@ -6,6 +6,7 @@
 //   icedem keys                                 every scenario key (markdown)
 //   icedem schema                               every output: datasets, attributes, summary keys
 //   icedem stl SCENARIO.toml -o hull.stl        the structure's surface
+//   icedem cone-load SCENARIO.toml             the ISO 19906 load of level ice on the structure
 //   icedem calibrate PLATE.toml [--target-modulus PA] [--write OUT.toml]
 //                                               joint CFM for a target elastic modulus
 //   icedem foam-case SCENARIO.toml -o DIR       a runnable OpenFOAM case (DIR/Allrun)
@@ -28,6 +29,7 @@
 #include "coupling/foam_case.hpp"
 #include "coupling/foam_runner.hpp"
 #include "dem/calibration.hpp"
+#include "dem/iso19906.hpp"
 #include "dem/checkpoint.hpp"
 #include "dem/cone_geometry.hpp"
 #include "dem/constants.hpp"
@@ -227,6 +229,24 @@ int stl_command(const std::string& scenario_path, const std::vector<std::string>
   return kExitOk;
 }
 
+int cone_load_command(const std::string& scenario_path, const std::vector<std::string>& sets) {
+  const Scene scene = load_scene(scenario_path, sets);
+  const ConeLoadInputs in = cone_load_inputs(scene);
+  const ConeLoad r = iso19906_cone_load(in);
+  std::cout << fmt::format(
+      "ISO 19906 (Croasdale and Cammaert) load of level ice on the {} slope, dem/iso19906.hpp:\n"
+      "  inputs: D {:.3f} m, slope {:.1f} deg, ride height {:.3f} m, h {:.4f} m, sigma_f {:.0f} Pa, E {:.3g} Pa, "
+      "nu {:.2f}, rho_i {:.0f}, rho_w {:.0f} kg/m^3, mu {:.2f}\n"
+      "  L_c {:.3f} m, crack width {:.3f} m, xi {:.3f}\n"
+      "  breaking H_B {:.1f} N, ride H_R {:.1f} N, turning H_T {:.1f} N\n"
+      "  total H {:.1f} N (breaking alone {:.1f} N)\n",
+      in.downward ? "downward-breaking" : "upward-breaking", in.waterline_diameter, in.slope * 180.0 / M_PI,
+      in.ride_height, in.thickness, in.flexural_strength, in.elastic_modulus, in.poisson_ratio, in.ice_density,
+      in.water_density, in.friction, r.characteristic_length, r.crack_width, r.slope_factor, r.breaking, r.ride,
+      r.turning, r.total, r.breaking_only);
+  return kExitOk;
+}
+
 int foam_case_command(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& output) {
   const Scene scene = load_scene(scenario_path, sets);
   const FoamCaseSpec spec = foam_case_spec(scene);
@@ -349,6 +369,11 @@ int main(int argc, char** argv) {
   stl->add_option("--set", sets, "override a scenario key")->take_all();
   stl->add_option("-o,--output", output, "STL file")->required();
 
+  CLI::App* cone_load = app.add_subcommand(
+      "cone-load", "the ISO 19906 (Croasdale) load of level ice on the scenario's structure, term by term");
+  cone_load->add_option("scenario", scenario, "scenario TOML file")->required();
+  cone_load->add_option("--set", sets, "override a scenario key")->take_all();
+
   CLI::App* foam_case = app.add_subcommand("foam-case", "write the OpenFOAM potential-flow case of a scenario");
   foam_case->add_option("scenario", scenario, "scenario TOML file")->required();
   foam_case->add_option("--set", sets, "override a scenario key")->take_all();
@@ -388,6 +413,7 @@ int main(int argc, char** argv) {
     if (*info) return info_command(output);
     if (*check) return check_command(scenario, sets);
     if (*stl) return stl_command(scenario, sets, output);
+    if (*cone_load) return cone_load_command(scenario, sets);
     if (*calibrate) return calibrate_command(scenario, sets, target_modulus, write_path);
     if (*foam_case) return foam_case_command(scenario, sets, output);
     if (*foam_solve) return foam_solve_command(scenario, sets);
