@@ -27,7 +27,7 @@ ConeLoad iso19906_cone_load(const ConeLoadInputs& in) {
                std::pow(in.water_density * g * std::pow(h, 5) / in.elastic_modulus, 0.25) * r.crack_width;
   r.ride = in.waterline_diameter * in.ride_height * h * ride_density * g * (s + mu * c) / (s * (c - mu * s));
   r.turning = 1.5 * in.waterline_diameter * h * h * ride_density * g * c / (s - mu * c);
-  // the sheet must carry the breaking load over its crack width: the amplification of eq. (H)
+  // the sheet must also carry the breaking load over its crack width: the amplification in H
   const double amplification = 1.0 / (1.0 - r.breaking / (in.flexural_strength * r.crack_width * h));
   r.total = (r.breaking + r.ride + r.turning) * amplification;
   r.breaking_only = r.breaking * amplification;

@@ -1,10 +1,10 @@
 // The design standard's analytic load of level ice failing in bending on a sloping
-// structure: ISO 19906 (A.8.2.4.4.3), the method of Croasdale and Cammaert (1994,
-// "An improved method for the calculation of ice loads on sloping structures in first-year
-// ice", Hydrotechnical Construction 28(3)). A designer checks any simulated load against it.
+// structure: ISO 19906 (A.8.2.4.4.3), the method of Croasdale and Cammaert ("An improved
+// method for the calculation of ice loads on sloping structures", Hydrotechnical
+// Construction 28(3), 1994). A designer checks any simulated load against it.
 //
-// The horizontal load is the sum of named terms, the breaking one amplified by the
-// load needed to break the sheet over its crack width:
+// The horizontal load is the sum of named terms, amplified because the sheet must also
+// carry the breaking load over its crack width:
 //   H = (H_B + H_R + H_T) / (1 - H_B / (sigma_f w h)),  w = D + pi^2 L_c / 4,
 //   xi   = (sin a + mu cos a) / (cos a - mu sin a)                    slope and friction
 //   L_c  = (E h^3 / (12 rho_w g (1 - nu^2)))^(1/4)                   characteristic length
@@ -22,9 +22,9 @@
 // For the paper's cone (Table 2: 45 degrees, downward-breaking, D 1.228 m, 0.443 m deep)
 // and ice (Table 3) these give 132, 164 and 205 N at mu 0.1, 0.2 and 0.3 with h_r the cone's
 // full depth (an upper bound), of which breaking alone 108, 134 and 168 N: the load of
-// *level* ice, an upper reference for managed floes (docs/model/validation_targets.md, 4a). Against more than 50 events at the
-// Confederation Bridge the method over-predicted by a factor of about 1.6 (Croasdale et al.
-// 2016, OTC-27385-MS).
+// *level* ice, an upper reference for managed floes (docs/model/validation_targets.md, 4a).
+// Against more than 50 events at the Confederation Bridge the method over-predicted by a
+// factor of about 1.6 (Croasdale et al. 2016, OTC-27385-MS).
 #pragma once
 
 #include "dem/scene.hpp"

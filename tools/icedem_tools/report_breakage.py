@@ -4,6 +4,8 @@ paper's Fig. 18, with pictures, and how close the floes near the structure came 
 import collections
 import os
 
+import numpy as np
+
 from . import aggregate as agg
 from .report_tables import BREAKABLE, FII, fmt, quantile
 
@@ -21,7 +23,6 @@ BOOTSTRAP = 2000
 
 def run_counts(runs, mechanisms):
     """Per run, its breaks by mechanism: an array (runs x mechanisms)."""
-    import numpy as np
     rows = []
     for _, rec in runs:
         c = collections.Counter(e.get("mechanism_name", "") for e in rec.get("fracture_events", []))
@@ -32,7 +33,6 @@ def run_counts(runs, mechanisms):
 def bootstrap_shares(counts, rng):
     """BOOTSTRAP resampled share vectors (mechanism shares of all breaks of the resampled runs);
     rows whose resample has no break are NaN."""
-    import numpy as np
     n = counts.shape[0]
     picks = rng.integers(0, n, size=(BOOTSTRAP, n))
     totals = counts[picks].sum(axis=1)  # BOOTSTRAP x mechanisms
@@ -42,7 +42,6 @@ def bootstrap_shares(counts, rng):
 
 def interval(samples):
     """The 2.5 and 97.5 percentiles of bootstrap samples, ignoring NaN: (lo, hi) or None."""
-    import numpy as np
     ok = samples[~np.isnan(samples)]
     return (float(np.percentile(ok, 2.5)), float(np.percentile(ok, 97.5))) if ok.size else None
 
@@ -64,7 +63,6 @@ def fig18_shift(low, high, mechanisms, rng):
     """The paper's Fig. 18 shift between f_ii 0.3 (`low`, per-run counts) and 0.7 (`high`):
     pressed under falls and on the slope rises. Returns {mechanism: (difference 0.7 - 0.3,
     its 95 % interval, verdict)} for those two."""
-    import numpy as np
     a, b = bootstrap_shares(low, rng), bootstrap_shares(high, rng)
     out = {}
     for m, sign in (("pressed under", -1), ("on the slope", +1)):
@@ -86,7 +84,6 @@ def mechanism_section(records, figs, report):
          "pressed by another floe), **in the rubble** (not touching, submerged), **in the pack** (not "
          "touching, afloat). Summed over f_is and seeds; each share with its 95 % interval "
          "(a bootstrap over the runs: breaks cluster in runs, so the runs are the samples).", ""]
-    import numpy as np
     rng = np.random.default_rng(18)
     per_run = {}
     # the mechanisms as the events name them (icedem declares them; every summary counts all)
