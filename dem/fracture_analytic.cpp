@@ -23,7 +23,7 @@ BeamState rk4(const BeamState& y, double c, double h) {
   return out;
 }
 
-// the solution from y0 over n steps: w'' at every section
+// the solution from y over n steps: the state at every section, s_i = i length / n
 std::vector<BeamState> integrate(BeamState y, double c, double length, int n) {
   std::vector<BeamState> path{y};
   const double h = length / n;

@@ -98,18 +98,18 @@ def mechanism_section(records, figs, report):
         fiis = sorted({dict(r.grid).get(FII) for r, _ in records[s]} - {None})
         for fii in fiis:
             ev, runs = breaks_of(records, s, fii)
-            counts = collections.Counter(e.get("mechanism_name", "") for _, e in ev)
             n = len(ev)
             per_run[(s, fii)] = run_counts(runs, mechanisms)
+            counts = per_run[(s, fii)].sum(axis=0)  # breaks by mechanism, over the runs
             boot = bootstrap_shares(per_run[(s, fii)], rng) if n else None
 
-            def cell(k, m):
+            def cell(k):
                 if not n:
                     return "0"
                 iv = interval(boot[:, k])
-                return (f"{counts[m]} ({100 * counts[m] / n:.0f} %" +
+                return (f"{counts[k]:.0f} ({100 * counts[k] / n:.0f} %" +
                         (f", {100 * iv[0]:.0f}-{100 * iv[1]:.0f}" if iv else "") + ")")
-            cells = " | ".join(cell(k, m) for k, m in enumerate(mechanisms))
+            cells = " | ".join(cell(k) for k in range(len(mechanisms)))
             depth = quantile([1e3 * e["depth"] for _, e in ev if "depth" in e], 0.5)
             dist = quantile([e["distance"] for _, e in ev if "distance" in e], 0.5)
             press = quantile([e["press_down"] + e["press_toward"] for _, e in ev if "press_down" in e], 0.5)
