@@ -39,6 +39,14 @@ int floe_of(const World& world, const btCollisionObject* object) {
 
 BreakContext break_context(const Scene& scene, const World& world, int floe_id, const Eigen::Vector3d& midpoint,
                            const Eigen::Vector3d& structure_position, double h) {
+  return break_context(
+      scene, world, [&](const btCollisionObject* o) { return floe_of(world, o) == floe_id; }, midpoint,
+      structure_position, h);
+}
+
+BreakContext break_context(const Scene& scene, const World& world,
+                           const std::function<bool(const btCollisionObject*)>& is_floe,
+                           const Eigen::Vector3d& midpoint, const Eigen::Vector3d& structure_position, double h) {
   BreakContext c;
   c.depth = -midpoint.y();
   c.distance = distance_from_structure(scene, structure_position, midpoint);
@@ -47,8 +55,8 @@ BreakContext break_context(const Scene& scene, const World& world, int floe_id, 
   btDispatcher& dispatcher = *const_cast<World&>(world).dynamics().getDispatcher();
   for (int i = 0; i < dispatcher.getNumManifolds(); ++i) {
     const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
-    const bool floe_is_0 = floe_of(world, m->getBody0()) == floe_id;
-    const bool floe_is_1 = floe_of(world, m->getBody1()) == floe_id;
+    const bool floe_is_0 = is_floe(m->getBody0());
+    const bool floe_is_1 = is_floe(m->getBody1());
     if (floe_is_0 == floe_is_1) continue;  // not this floe's, or between two of its fragments
     const btCollisionObject* other = floe_is_0 ? m->getBody1() : m->getBody0();
     const bool structure = other == world.structure();

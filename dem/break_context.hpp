@@ -14,6 +14,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -21,6 +22,8 @@
 
 #include "dem/joint_loads.hpp"
 #include "dem/scene.hpp"
+
+class btCollisionObject;
 
 namespace icedem {
 
@@ -66,6 +69,11 @@ struct BreakContext {
 /// Bullet step of `h` seconds just taken.
 BreakContext break_context(const Scene& scene, const World& world, int floe_id, const Eigen::Vector3d& midpoint,
                            const Eigen::Vector3d& structure_position, double h);
+
+/// The same for the floe made of the collision objects `is_floe` picks (one rigid body, say).
+BreakContext break_context(const Scene& scene, const World& world,
+                           const std::function<bool(const btCollisionObject*)>& is_floe,
+                           const Eigen::Vector3d& midpoint, const Eigen::Vector3d& structure_position, double h);
 
 /// Horizontal distance of a point from the structure's section at the point's
 /// height (the round profile, not its facets), m; 0 at or inside it.

@@ -115,6 +115,7 @@ void write_group(H5::H5File& file, const Checkpoint& c) {
   write_records(g, "bodies", c.world.bodies);
   write_records(g, "lattice_replaced", c.world.lattice_replaced);
   write_records(g, "joint_broken", c.world.joint_broken);
+  write_records(g, "floe_splits", c.world.splits);
   std::vector<ManifoldRow> rows;
   std::vector<btManifoldPoint> points;
   std::vector<int> has_memory;
@@ -173,6 +174,8 @@ Checkpoint read_group(const H5::H5File& file, const std::string& path) {
   c.world.bodies = read_records<BodyState>(g, "bodies", path);
   c.world.lattice_replaced = read_records<uint8_t>(g, "lattice_replaced", path);
   c.world.joint_broken = read_records<uint8_t>(g, "joint_broken", path);
+  if (H5Lexists(g.getId(), "floe_splits", H5P_DEFAULT) > 0)  // written since floes split (fracture.mode "analytic")
+    c.world.splits = read_records<FloeSplit>(g, "floe_splits", path);
   const std::vector<ManifoldRow> rows = read_records<ManifoldRow>(g, "manifolds", path);
   const std::vector<btManifoldPoint> points = read_records<btManifoldPoint>(g, "contact_points", path);
   const std::vector<int> has_memory = read_records<int>(g, "friction_remembered", path);

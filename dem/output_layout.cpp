@@ -18,6 +18,9 @@ namespace {
 // rows per chunk of the per-step series: 1024 doubles = 8 KiB, a few seconds of a run
 constexpr hsize_t kSeriesChunkRows = 1024;
 
+// rows per chunk of /bodies (a 96,000-floe field: 24 chunks, each a few kB compressed)
+constexpr hsize_t kBodyChunkRows = 4096;
+
 // target chunk size of the snapshot arrays, bytes (HDF5 advice: 10 KiB to 1 MiB)
 constexpr std::size_t kSnapshotChunkBytes = std::size_t(256) << 10;
 
@@ -62,8 +65,9 @@ H5::Group parent_group(H5::H5File& file, const std::string& path) {
 Series schema_series(H5::H5File& file, const std::string& path, const H5::DataType& type, const std::vector<hsize_t>& row_shape,
                      hsize_t chunk_rows, const std::string& units) {
   const DatasetEntry& e = dataset_entry(path);
-  // the snapshots' rows grow with the field's motion; shuffle and deflate halve them
-  const bool compress = path.rfind("/snapshots/rows/", 0) == 0;
+  // the snapshots' rows grow with the field's motion; shuffle and deflate halve them. /bodies
+  // holds the field: compressed, a field of equal outlines costs almost nothing
+  const bool compress = path.rfind("/snapshots/rows/", 0) == 0 || path.rfind("/bodies/", 0) == 0;
   return create_series(parent_group(file, path), split_path(path).second, type, row_shape, chunk_rows, units,
                        e.description, compress);
 }
@@ -127,25 +131,18 @@ OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const 
 
   const H5::DataType& f8 = H5::PredType::IEEE_F64LE;
 
-  // body outlines: a flat vertex list indexed by offsets (CSR), since outlines differ in size
-  const std::size_t bodies = outlines.size();
-  std::vector<int> floe_id(bodies);
-  std::vector<double> thickness(bodies), vertices;
-  std::vector<int64_t> offset(bodies + 1, 0);
-  for (std::size_t i = 0; i < bodies; ++i) {
-    floe_id[i] = outlines[i].floe_id;
-    thickness[i] = outlines[i].thickness;
-    for (const Eigen::Vector2d& v : outlines[i].outline) {
-      vertices.push_back(v.x());
-      vertices.push_back(v.y());
-    }
-    offset[i + 1] = offset[i] + static_cast<int64_t>(outlines[i].outline.size());
-  }
-  const hsize_t nb = bodies, nv = vertices.size() / 2;
-  schema_fixed(file, "/bodies/floe_id", H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT, {nb}, floe_id.data());
-  schema_fixed(file, "/bodies/thickness", f8, H5::PredType::NATIVE_DOUBLE, {nb}, thickness.data());
-  schema_fixed(file, "/bodies/vertex_offset", H5::PredType::STD_I64LE, H5::PredType::NATIVE_INT64, {nb + 1}, offset.data());
-  schema_fixed(file, "/bodies/vertices", f8, H5::PredType::NATIVE_DOUBLE, {nv, 2}, vertices.data());
+  // body outlines: a flat vertex list indexed by offsets (CSR), since outlines differ in size;
+  // growing datasets, since a floe that splits adds its pieces (fracture.mode = "analytic")
+  const H5::DataType& i4_file = H5::PredType::STD_I32LE;
+  d.body_floe_id = schema_series(file, "/bodies/floe_id", i4_file, {}, kBodyChunkRows);
+  d.body_thickness = schema_series(file, "/bodies/thickness", f8, {}, kBodyChunkRows);
+  d.body_vertex_offset = schema_series(file, "/bodies/vertex_offset", H5::PredType::STD_I64LE, {}, kBodyChunkRows);
+  d.body_vertices = schema_series(file, "/bodies/vertices", f8, {2}, 4 * kBodyChunkRows);
+  d.body_parent = schema_series(file, "/bodies/parent", i4_file, {}, kBodyChunkRows);
+  d.body_born = schema_series(file, "/bodies/born", f8, {}, kBodyChunkRows);
+  const int64_t zero = 0;
+  d.body_vertex_offset.write(&zero, 1, H5::PredType::NATIVE_INT64);
+  append_bodies(d, outlines);
 
   // the joints of breakable floes (all of them from the start: dormant lattices' joints exist too)
   const hsize_t nj = joints.size();
@@ -178,6 +175,31 @@ OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const 
   return d;
 }
 
+void append_bodies(OutputDatasets& d, const std::vector<BodyOutline>& outlines) {
+  const std::size_t n = outlines.size();
+  if (n == 0) return;
+  std::vector<int> floe_id(n), parent(n);
+  std::vector<double> thickness(n), born(n), vertices;
+  std::vector<int64_t> offset(n);
+  int64_t end = static_cast<int64_t>(d.body_vertices.rows);
+  for (std::size_t i = 0; i < n; ++i) {
+    floe_id[i] = outlines[i].floe_id;
+    parent[i] = outlines[i].parent;
+    thickness[i] = outlines[i].thickness;
+    born[i] = outlines[i].born;
+    for (const Eigen::Vector2d& v : outlines[i].outline) vertices.insert(vertices.end(), {v.x(), v.y()});
+    offset[i] = end += static_cast<int64_t>(outlines[i].outline.size());
+  }
+  // the vertices and offsets before the bodies that name them: a file cut between the writes
+  // holds vertices no body uses, never a body without its outline
+  d.body_vertices.write(vertices.data(), vertices.size() / 2, H5::PredType::NATIVE_DOUBLE);
+  d.body_vertex_offset.write(offset.data(), n, H5::PredType::NATIVE_INT64);
+  d.body_thickness.write(thickness.data(), n, H5::PredType::NATIVE_DOUBLE);
+  d.body_parent.write(parent.data(), n, H5::PredType::NATIVE_INT);
+  d.body_born.write(born.data(), n, H5::PredType::NATIVE_DOUBLE);
+  d.body_floe_id.write(floe_id.data(), n, H5::PredType::NATIVE_INT);
+}
+
 OutputDatasets open_output_layout(H5::H5File& file) {
   auto open = [&](const std::string& path) {
     return open_series(file.openGroup(split_path(path).first), split_path(path).second);
@@ -191,6 +213,12 @@ OutputDatasets open_output_layout(H5::H5File& file) {
   d.snap_orientation = open("/snapshots/rows/orientation");
   d.snap_awake = open("/snapshots/rows/awake");
   d.events = open("/fracture/events");
+  d.body_floe_id = open("/bodies/floe_id");
+  d.body_thickness = open("/bodies/thickness");
+  d.body_vertex_offset = open("/bodies/vertex_offset");
+  d.body_vertices = open("/bodies/vertices");
+  d.body_parent = open("/bodies/parent");
+  d.body_born = open("/bodies/born");
   return d;
 }
 
@@ -204,7 +232,8 @@ void write_floe_margin_datasets(H5::H5File& file, const std::vector<double>& max
 }
 
 void OutputDatasets::close() {
-  for (Series* s : {&snap_time, &snap_end_row, &snap_body, &snap_position, &snap_orientation, &snap_awake, &events})
+  for (Series* s : {&snap_time, &snap_end_row, &snap_body, &snap_position, &snap_orientation, &snap_awake, &events,
+                    &body_floe_id, &body_thickness, &body_vertex_offset, &body_vertices, &body_parent, &body_born})
     s->dataset.reset();
   for (Series& s : series) s.dataset.reset();
 }

@@ -20,6 +20,8 @@ struct OutputDatasets {
   // changed since the one before (snapshot i: rows end_row[i-1] to end_row[i] of snap_body etc.)
   Series snap_time, snap_end_row, snap_body, snap_position, snap_orientation, snap_awake;
   Series events;
+  // the bodies' outlines: rows appended as floes split (fracture.mode = "analytic")
+  Series body_floe_id, body_thickness, body_vertex_offset, body_vertices, body_parent, body_born;
 
   /// Releases every dataset: HDF5 closes a file only once no object of it is open.
   void close();
@@ -29,6 +31,9 @@ struct OutputDatasets {
 /// so that a process killed from here on leaves a file that says what run it belongs to.
 OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const std::vector<BodyOutline>& outlines,
                                     const std::vector<JointRecord>& joints);
+
+/// Appends `outlines` to /bodies (their /bodies/parent and /bodies/born included).
+void append_bodies(OutputDatasets& d, const std::vector<BodyOutline>& outlines);
 
 /// The growing datasets of `file`, laid out by create_output_layout and written up to some
 /// row: a run resumed from a checkpoint appends after them.

@@ -19,6 +19,8 @@ struct BodyOutline {
   int floe_id;                            // id of the floe this body belongs to
   std::vector<Eigen::Vector2d> outline;   // m, polygon vertices in the body frame (x, z)
   double thickness;                       // m
+  int parent = -1;                        // a piece of a split floe: the body it was split from, else -1
+  double born = 0;                        // s, when the body came into the run (0: from the start)
 };
 
 /// A joint of a breakable floe as it is stored under /joints: the two bodies it glues
@@ -42,11 +44,18 @@ struct RunMeta {
   uint64_t seed = 0;           // random seed of the layout
 };
 
+/// What a body is doing at a snapshot (/snapshots/rows/awake).
+enum BodyActivity : uint8_t {
+  kBodyAsleep = 0,  // at rest, not solved
+  kBodyAwake = 1,   // being solved
+  kBodyGone = 2,    // split into pieces (later bodies whose /bodies/parent names it): no longer in the run
+};
+
 /// The pose of one body at a snapshot.
 struct BodyPose {
   Eigen::Vector3d position;        // m, body origin in the tank frame
   Eigen::Quaterniond orientation;  // body-to-tank rotation
-  bool awake;                      // true if the body is being solved
+  uint8_t awake;                   // BodyActivity
 };
 
 /// One row of the per-step load time series.

@@ -57,11 +57,16 @@ const std::vector<SeriesColumn>& series_columns() {
 
 const std::vector<DatasetEntry>& other_datasets() {
   static const std::vector<DatasetEntry> entries{
-      {"/bodies/floe_id", "nb", Element::i4, "1", "floe id of each body; body order is the snapshot order"},
+      {"/bodies/floe_id", "nb", Element::i4, "1",
+       "floe id of each body; body order is the snapshot order. The bodies of the start come first; a floe that "
+       "splits (fracture.mode = \"analytic\") adds its two pieces at the end, with its floe id"},
       {"/bodies/thickness", "nb", Element::f8, "m", "body thickness"},
       {"/bodies/vertex_offset", "nb + 1", Element::i8, "1",
        "outline of body i is vertices[vertex_offset[i]:vertex_offset[i+1]]"},
       {"/bodies/vertices", "nv x 2", Element::f8, "m", "outline vertices in the body frame (x, z)"},
+      {"/bodies/parent", "nb", Element::i4, "1",
+       "the body a piece was split from (a row of /bodies), -1 for the bodies of the start"},
+      {"/bodies/born", "nb", Element::f8, "s", "when the body came into the run: 0, or the time of the split that made it"},
       {"/joints/bodies", "nj x 2", Element::i4, "1",
        "the two bodies (rows of /bodies) each joint of a breakable floe glues; empty for rigid floes"},
       {"/joints/floe", "nj", Element::i4, "1", "floe id of each joint"},
@@ -78,9 +83,11 @@ const std::vector<DatasetEntry>& other_datasets() {
       {"/snapshots/rows/position", "m x 3", Element::f8, "m", "body origin, tank frame"},
       {"/snapshots/rows/orientation", "m x 4", Element::f8, "1",
        "body-to-tank rotation as a unit quaternion (w, x, y, z)"},
-      {"/snapshots/rows/awake", "m", Element::u1, "1", "1 if the body was awake (being solved)"},
+      {"/snapshots/rows/awake", "m", Element::u1, "1", "1 if the body was awake (being solved), 0 at rest, 2 gone: split into the pieces whose /bodies/parent "
+       "names it (a body has no row before it is born)"},
       {"/fracture/events", "e", Element::compound, "",
-       "joint breaks, one row per break, with the floe's state at the break (fields below; empty for rigid floes)"},
+       "joint breaks and rigid floes' splits, one row per break, with the floe's state at the break (fields below; "
+       "empty when nothing breaks)"},
       {"/fracture/floe_max_ratio", "f", Element::f8, "1",
        "per layout floe: the largest load / capacity ratio of any of its joints under any criterion over the run "
        "(0 for rigid floes and lattices never awake); runs with breakable floes only"},
@@ -101,7 +108,8 @@ const std::vector<EventField>& event_fields() {
   static const std::vector<EventField> fields{
       {"time", offsetof(FractureEvent, time), Element::f8, "s", "time of the break"},
       {"floe", offsetof(FractureEvent, floe), Element::i4, "1", "floe id"},
-      {"joint", offsetof(FractureEvent, joint), Element::i4, "1", "joint index within the floe"},
+      {"joint", offsetof(FractureEvent, joint), Element::i4, "1", "joint index within the floe; -1: the split of a rigid floe (fracture.mode = \"analytic\"), "
+       "x and z then the crack's point nearest the floe's centroid"},
       {"mode", offsetof(FractureEvent, mode), Element::i4, "1", "failure mode code (attribute mode_names)"},
       {"ratio", offsetof(FractureEvent, ratio), Element::f8, "1", "load / capacity of the criterion that fired (>= 1)"},
       {"x", offsetof(FractureEvent, x), Element::f8, "m", "joint midpoint at the break, tank frame"},

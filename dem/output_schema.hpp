@@ -20,8 +20,9 @@
 
 namespace icedem {
 
-/// Version of the file layout, written to /meta format_version.
-inline constexpr int kOutputFormatVersion = 1;
+/// Version of the file layout, written to /meta format_version. 2: /bodies grows as floes split
+/// (with /bodies/parent and /bodies/born), and a snapshot row's awake flag may be 2, gone.
+inline constexpr int kOutputFormatVersion = 2;
 
 /// Element type of a dataset, field or attribute in the file (little-endian).
 enum class Element { f8, i4, i8, u1, compound, text };

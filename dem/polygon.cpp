@@ -258,4 +258,39 @@ Polygon rectangle(double lx, double lz) {
   return {{hx, hz}, {hx, -hz}, {-hx, -hz}, {-hx, hz}};
 }
 
+PolygonCut cut(const Polygon& polygon, const Eigen::Vector2d& point, const Eigen::Vector2d& normal) {
+  // Sutherland-Hodgman against one line, both sides at once: each edge that crosses the
+  // line adds its crossing to both parts
+  PolygonCut out;
+  const std::size_t n = polygon.size();
+  std::vector<double> side(n);
+  bool any_behind = false, any_ahead = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    side[i] = (polygon[i] - point).dot(normal);
+    any_behind = any_behind || side[i] < 0;
+    any_ahead = any_ahead || side[i] > 0;
+  }
+  if (!any_ahead) {
+    if (any_behind) out.behind = polygon;
+    return out;
+  }
+  if (!any_behind) {
+    out.ahead = polygon;
+    return out;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d& b = polygon[j];
+    if (side[i] <= 0) out.behind.push_back(a);
+    if (side[i] >= 0) out.ahead.push_back(a);
+    if ((side[i] < 0 && side[j] > 0) || (side[i] > 0 && side[j] < 0)) {
+      const Eigen::Vector2d x = a + (b - a) * (side[i] / (side[i] - side[j]));
+      out.behind.push_back(x);
+      out.ahead.push_back(x);
+    }
+  }
+  return out;
+}
+
 }  // namespace icedem

@@ -92,4 +92,13 @@ Polygon square(double side);
 /// Rectangle of length `lx` along x and `lz` along z (m), centred on the origin, ccw.
 Polygon rectangle(double lx, double lz);
 
+/// The two parts of a convex polygon cut by the line through `point` with normal `normal`
+/// (need not be unit): `behind` where (p - point) . normal <= 0, `ahead` the rest, each in the
+/// polygon's vertex order, the cut's two ends shared. A part is empty when the line misses
+/// the polygon or runs along an edge (no vertex lies strictly on that side).
+struct PolygonCut {
+  Polygon behind, ahead;
+};
+PolygonCut cut(const Polygon& polygon, const Eigen::Vector2d& point, const Eigen::Vector2d& normal);
+
 }  // namespace icedem

@@ -63,7 +63,8 @@ struct Recorder::Impl {
   // the last snapshot's field, every body (position, orientation w x y z, awake): a snapshot
   // writes the rows of the bodies that differ from it
   std::vector<double> last_position, last_orientation;
-  std::vector<uint8_t> last_awake;
+  std::vector<uint8_t> last_awake;  // BodyActivity, or kNoRow for a body without a row yet
+  static constexpr uint8_t kNoRow = 255;
   int64_t snapshot_rows = 0;  // rows written or buffered so far
   std::vector<FractureEvent> event_buffer;
 
@@ -71,7 +72,7 @@ struct Recorder::Impl {
   void start_field() {
     last_position.assign(3 * bodies, 0.0);
     last_orientation.assign(4 * bodies, 0.0);
-    last_awake.assign(bodies, 0);
+    last_awake.assign(bodies, kNoRow);
   }
 
   // the field of the last snapshot a file holds, for a run resumed from its checkpoint: its rows
@@ -357,7 +358,7 @@ void Recorder::append_snapshot(double time, const std::vector<BodyPose>& poses) 
   impl_->require_open("append_snapshot");
   if (poses.size() != impl_->bodies)
     throw std::invalid_argument("Recorder::append_snapshot: " + std::to_string(poses.size()) +
-                                " poses given, the file was created with " +
+                                " poses given, the file has " +
                                 std::to_string(impl_->bodies) + " bodies");
   Impl& m = *impl_;
   m.snap_time_buffer.push_back(time);
@@ -368,7 +369,7 @@ void Recorder::append_snapshot(double time, const std::vector<BodyPose>& poses) 
     const Eigen::Quaterniond& q = pose.orientation;
     const double p[3] = {pose.position.x(), pose.position.y(), pose.position.z()};
     const double o[4] = {q.w(), q.x(), q.y(), q.z()};
-    const uint8_t awake = pose.awake ? 1 : 0;
+    const uint8_t awake = pose.awake;
     double* last_p = &m.last_position[3 * b];
     double* last_o = &m.last_orientation[4 * b];
     if (!first && std::equal(p, p + 3, last_p) && std::equal(o, o + 4, last_o) && awake == m.last_awake[b]) continue;
@@ -393,6 +394,27 @@ void Recorder::append_snapshot(double time, const std::vector<BodyPose>& poses) 
     }
   }
 }
+
+void Recorder::add_bodies(const std::vector<BodyOutline>& bodies) {
+  impl_->require_open("add_bodies");
+  if (bodies.empty()) return;
+  Impl& m = *impl_;
+  QuietHdf5 quiet;
+  try {
+    m.require_space(4096 + 64 * bodies.size());
+    append_bodies(m.data, bodies);
+    m.flush_file();
+  } catch (const H5::Exception& e) {
+    throw OutputError("cannot add bodies to '" + m.path + "': " + hdf5_reason(e));
+  }
+  m.bodies += bodies.size();
+  // no row yet: the next snapshot writes theirs, whatever they are doing
+  m.last_position.resize(3 * m.bodies, 0.0);
+  m.last_orientation.resize(4 * m.bodies, 0.0);
+  m.last_awake.resize(m.bodies, Impl::kNoRow);
+}
+
+std::size_t Recorder::body_count() const { return impl_->bodies; }
 
 void Recorder::append_fracture(const FractureEvent& event) {
   impl_->require_open("append_fracture");

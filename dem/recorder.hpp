@@ -55,9 +55,17 @@ class Recorder {
   /// Buffers one load sample (call every step).
   void append(const LoadSample& sample);
 
-  /// Buffers one snapshot; `poses` must hold one pose per body, in the constructor's order
+  /// Buffers one snapshot; `poses` must hold one pose per body, in the order of /bodies
   /// (std::invalid_argument otherwise).
   void append_snapshot(double time, const std::vector<BodyPose>& poses);
+
+  /// Adds bodies after those the file was made with (the pieces of a floe that split), written
+  /// at once: later snapshots hold one pose per body, these included. Throws OutputError if
+  /// they cannot be written.
+  void add_bodies(const std::vector<BodyOutline>& bodies);
+
+  /// The bodies of the file so far (the constructor's, then those added).
+  std::size_t body_count() const;
 
   /// Buffers one fracture event.
   void append_fracture(const FractureEvent& event);

@@ -248,9 +248,11 @@ std::vector<KeySpec> make_keys() {
                    "take the deepest level"));
 
   // fracture
-  k.push_back(choice("fracture.mode", "off", {"off", "on", "auto"},
+  k.push_back(choice("fracture.mode", "off", {"off", "on", "auto", "analytic"},
                      "breakable ice elements: off (rigid floes), on, or auto (only floes larger "
-                     "than the characteristic length)"));
+                     "than the characteristic length); analytic: rigid floes that split in two when "
+                     "the structure's load normal to a floe reaches the breaking edge load of a "
+                     "floating beam (docs/model/breakage.md)"));
   k.push_back(real("fracture.element_size", "m", 0.15, 0.01, 100.0,
                        "side of the square ice elements (paper: 0.15 / 0.20 m)"));
   k.push_back(real("fracture.cfm", "-", 1.0e-10, 0.0, 1.0,

@@ -139,7 +139,10 @@ struct CouplingSettings {
   bool spawn_partner;          // probe mode: start coupling/foam_partner.py ourselves
 };
 
-enum class FractureMode { kOff, kOn, kAuto };
+// off: rigid floes; on / auto: floes of breakable elements (all, or those at least l_c);
+// analytic: rigid floes that split when the structure's load reaches the breaking edge load
+// of a floating beam (dem/fracture_split.hpp)
+enum class FractureMode { kOff, kOn, kAuto, kAnalytic };
 struct FractureSettings {
   FractureMode mode;
   double element_size;  // m
@@ -221,6 +224,9 @@ inline bool generated_floes_breakable(const Scene& s) {
   return s.fracture.mode == FractureMode::kOn ||
          (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
 }
+
+/// Whether rigid floes split under the structure's load (fracture.mode "analytic").
+inline bool floes_split(const Scene& s) { return s.fracture.mode == FractureMode::kAnalytic; }
 
 /// PGS sweeps the element joints get per step: Bullet solves a constraint
 /// max(its override, solver.iterations) times (fracture.joint_iterations).

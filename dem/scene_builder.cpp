@@ -228,7 +228,10 @@ Scene make_scene(const Scenario& sc) {
                             (12.0 * (1.0 - s.ice.poisson_ratio * s.ice.poisson_ratio));
 
   s.fracture.mode = choice<FractureMode>(sc, "fracture.mode",
-                                         {{"off", FractureMode::kOff}, {"on", FractureMode::kOn}, {"auto", FractureMode::kAuto}});
+                                         {{"off", FractureMode::kOff},
+                                          {"on", FractureMode::kOn},
+                                          {"auto", FractureMode::kAuto},
+                                          {"analytic", FractureMode::kAnalytic}});
   s.fracture.element_size = real(sc, "fracture.element_size");
   s.fracture.cfm = real(sc, "fracture.cfm");
   s.fracture.erp = real(sc, "fracture.erp");

@@ -64,20 +64,34 @@ RunMeta run_meta(const Scene& scene, const RunOptions& options) {
   return m;
 }
 
-std::vector<BodyOutline> body_outlines(const Scene& scene, const World& world) {
+// the output index of every body of World::floes() (the stand-ins have none: their elements are
+// the output bodies), -1 for a stand-in
+std::vector<int> output_indices(const World& world) {
+  std::vector<int> index(world.floes().size(), -1);
+  int next = 0;
+  for (std::size_t i = 0; i < world.floes().size(); ++i)
+    if (!world.floes()[i].stand_in) index[i] = next++;
+  return index;
+}
+
+// the output bodies from output index `first` on, born at `time` (the pieces of floes that split
+// come at the end of World::floes(), so a file's bodies keep their indices)
+std::vector<BodyOutline> body_outlines(const Scene& scene, const World& world, std::size_t first = 0,
+                                       double time = 0.0) {
+  const std::vector<int> index = output_indices(world);
   std::vector<BodyOutline> out;
-  for (const FloeBody& f : world.floes())
-    if (!f.stand_in) out.push_back(BodyOutline{f.floe_id, f.shape->outline, scene.ice.thickness});
+  for (std::size_t i = 0; i < world.floes().size(); ++i) {
+    const FloeBody& f = world.floes()[i];
+    if (f.stand_in || static_cast<std::size_t>(index[i]) < first) continue;
+    out.push_back(BodyOutline{f.floe_id, f.shape->outline, scene.ice.thickness, f.parent >= 0 ? index[f.parent] : -1,
+                              f.parent >= 0 ? time : 0.0});
+  }
   return out;
 }
 
-// every joint of a breakable floe, its bodies as output body indices (the order of
-// body_outlines: World::floes() without the stand-ins)
+// every joint of a breakable floe, its bodies as output body indices
 std::vector<JointRecord> joint_records(const World& world) {
-  std::vector<int> output_index(world.floes().size(), -1);
-  int next = 0;
-  for (std::size_t i = 0; i < world.floes().size(); ++i)
-    if (!world.floes()[i].stand_in) output_index[i] = next++;
+  const std::vector<int> output_index = output_indices(world);
   std::vector<JointRecord> out;
   out.reserve(world.joints().size());
   for (const IceJoint& j : world.joints())
@@ -91,7 +105,8 @@ std::vector<BodyPose> body_poses(const World& world) {
   for (const FloeBody& f : world.floes()) {
     if (f.stand_in) continue;  // its elements are the output bodies
     const Eigen::Isometry3d pose = output_pose(world, f);
-    poses.push_back(BodyPose{pose.translation(), Eigen::Quaterniond(pose.linear()), output_awake(world, f)});
+    const uint8_t activity = f.gone ? kBodyGone : output_awake(world, f) ? kBodyAwake : kBodyAsleep;
+    poses.push_back(BodyPose{pose.translation(), Eigen::Quaterniond(pose.linear()), activity});
   }
   return poses;
 }
@@ -345,6 +360,9 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       history.awake_sum += state.awake_floes;
       history.health.add(state.time, state.diagnostics);
       for (const FractureEvent& e : state.fracture_events) recorder.append_fracture(e);
+      // the pieces of floes that split this step
+      if (floes_split(scene) && state.world->floes().size() > recorder.body_count())
+        recorder.add_bodies(body_outlines(scene, *state.world, recorder.body_count(), state.time));
       if (snapshot_every && state.step % snapshot_every == 0)
         recorder.append_snapshot(state.time, body_poses(*state.world));
 

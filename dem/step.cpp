@@ -5,6 +5,7 @@
 #include "dem/activation.hpp"
 #include "dem/boundary_load.hpp"
 #include "dem/fracture.hpp"
+#include "dem/fracture_split.hpp"
 #include "dem/health_check.hpp"
 #include "dem/lattice_region.hpp"
 #include "dem/load_cell.hpp"
@@ -131,6 +132,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
     { StageTimer t(times.load_cell); read_load_cell(scene, state, cell, boundary); }
     state.time = t_next;
     { StageTimer t(times.fracture); check_fracture(scene, state, h); }
+    if (floes_split(scene)) { StageTimer t(times.fracture); check_splits(scene, state, h); }
   }
   state.load = cell.finish(scene.time.dt);
   const double boundary_load = boundary.finish(scene.time.dt);

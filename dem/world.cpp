@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -344,6 +345,55 @@ void World::enter_reached(int index) {
   btRigidBody& body = *floes_[static_cast<std::size_t>(index)].body;
   enter_world(body);
   body.forceActivationState(ISLAND_SLEEPING);  // as add_body leaves a floe made in the world
+}
+
+std::array<int, 2> World::split_floe(const FloeSplit& split) {
+  const int parent = split.body;
+  if (parent < 0 || parent >= static_cast<int>(floes_.size()) || floes_[parent].fragment >= 0 ||
+      floes_[parent].stand_in || liveness(*floes_[parent].body) == Liveness::kOutside)
+    throw std::invalid_argument(fmt::format("split_floe: body {} is not a whole rigid floe in play", parent));
+  const PolygonCut parts = cut(floes_[parent].shape->outline, {split.point[0], split.point[1]},
+                               {split.normal[0], split.normal[1]});
+  if (parts.behind.size() < 3 || parts.ahead.size() < 3)
+    throw std::invalid_argument(fmt::format("split_floe: the crack line misses body {}", parent));
+  enter_reached(parent);  // kept out of the world until reached: as if it had been in it
+  if (floes_[parent].frozen) unfreeze(floes_[parent]);
+  // what the pieces take from the floe, read before floes_ grows (its references then dangle)
+  btRigidBody& whole = *floes_[parent].body;
+  const int floe_id = floes_[parent].floe_id;
+  const btTransform T = whole.getCenterOfMassTransform();
+  const btVector3 v = whole.getLinearVelocity(), omega = whole.getAngularVelocity();
+  const double friction = whole.getFriction();
+  dynamics_->removeRigidBody(&whole);
+  whole.forceActivationState(DISABLE_SIMULATION);
+  floes_[parent].gone = true;
+
+  std::array<int, 2> pieces{};
+  int k = 0;
+  for (const Polygon* part : {&parts.behind, &parts.ahead}) {
+    // a piece's shape is centred on its centroid, its body axes along its principal axes
+    const Eigen::Vector2d c = centroid(*part);
+    Polygon local;
+    for (const Eigen::Vector2d& p : *part) local.push_back(p - c);
+    const FloeShape& shape = shapes_.get(local);
+    btTransform offset;
+    offset.setIdentity();
+    offset.setOrigin(btVector3(c.x(), 0.0, c.y()));
+    offset.setRotation(btQuaternion(btVector3(0, 1, 0), shape.principal_yaw));
+    const btTransform pose = T * offset;
+    const int index = add_body(shape, pose, floe_id, friction);
+    floes_[index].parent = parent;
+    btRigidBody& b = *floes_[index].body;
+    // the floe's rigid-body motion at the piece's place: with the pieces' masses and
+    // inertias summing to the floe's, momentum and angular momentum are the floe's
+    b.setLinearVelocity(v + omega.cross(pose.getOrigin() - T.getOrigin()));
+    b.setAngularVelocity(omega);
+    b.forceActivationState(settings_.activation.sleeping ? ACTIVE_TAG : DISABLE_DEACTIVATION);
+    b.setDeactivationTime(0);
+    pieces[k++] = index;
+  }
+  splits_.push_back(split);
+  return pieces;
 }
 
 void World::freeze(FloeBody& floe) {

@@ -18,6 +18,7 @@
 //    load cell hold no position-correction push (solver.split_impulse).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -54,6 +55,17 @@ struct FloeBody {
   int fragment = -1;       // breakable floes: elements of one fragment do not collide; -1: rigid floe
   bool stand_in = false;   // the whole floe standing in for its dormant lattice (not an output body)
   int lattice = -1;        // index into World::lattices() for a floe with a lattice region, else -1
+  int parent = -1;         // a piece of a split floe: the index of the floe it was split from, else -1
+  bool gone = false;       // split into pieces: out of the run for good
+};
+
+/// A rigid floe split in two along a straight crack (fracture.mode = "analytic",
+/// dem/fracture_split.hpp), kept in the order of the splits so that a checkpoint's world makes
+/// the same pieces again.
+struct FloeSplit {
+  int body;           // index into World::floes() of the floe that split
+  double point[2];    // m, a point of the crack line in the floe's body frame (x, z)
+  double normal[2];   // the crack line's normal, body frame (x, z): the far piece lies along it
 };
 
 /// Whether a body takes part in the dynamics now. Every stage that skips bodies
@@ -125,6 +137,16 @@ class World {
 
   /// Add a joint; its constraint enters the solver if `in_world`. Returns its index in joints().
   int add_joint(IceJoint joint, bool in_world);
+
+  /// Split rigid floe `split.body` along its crack into two rigid pieces that move with the floe's
+  /// rigid-body velocity at their places (mass, momentum and angular momentum are kept), both
+  /// awake; the floe leaves the world for good (Liveness::kOutside). Returns the pieces' indices
+  /// in floes(): the one behind the crack line (against its normal), then the one ahead. Throws
+  /// std::invalid_argument if the body is not a whole rigid floe in play or the line misses it.
+  std::array<int, 2> split_floe(const FloeSplit& split);
+
+  /// The splits so far, in order.
+  const std::vector<FloeSplit>& splits() const { return splits_; }
 
   /// The shape of bodies with this outline (made once, owned by the world).
   const FloeShape& shape(const Polygon& outline) { return shapes_.get(outline); }
@@ -240,6 +262,7 @@ class World {
   std::vector<FloeBody> floes_;
   std::vector<IceJoint> joints_;
   std::vector<DormantLattice> lattices_;
+  std::vector<FloeSplit> splits_;
   UnreachedFloes unreached_;
   std::unique_ptr<btOverlapFilterCallback> fragment_filter_;
   btRigidBody* structure_ = nullptr;

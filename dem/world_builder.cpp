@@ -39,7 +39,8 @@ Eigen::AlignedBox3d tank_box(const Scene& scene) {
 
 bool is_breakable(const Scene& scene, const Polygon& outline) {
   switch (scene.fracture.mode) {
-    case FractureMode::kOff: return false;
+    case FractureMode::kOff:
+    case FractureMode::kAnalytic: return false;  // rigid floes (that may split: dem/fracture_split.hpp)
     case FractureMode::kOn: return true;
     case FractureMode::kAuto: {
       // floes smaller than the characteristic length stay rigid (paper: 0.3 m < l_c)

@@ -84,6 +84,7 @@ WorldState capture_world(const World& world) {
     s.bodies.push_back(b);
   }
   for (const DormantLattice& l : world.lattices()) s.lattice_replaced.push_back(l.replaced ? 1 : 0);
+  s.splits = world.splits();
   for (const IceJoint& j : world.joints()) s.joint_broken.push_back(j.constraint ? 0 : 1);
 
   const auto index = body_indices(world);
@@ -109,6 +110,15 @@ WorldState capture_world(const World& world) {
 }
 
 void restore_world(World& world, const WorldState& s) {
+  // the split floes' pieces first, in the order they were made: they are bodies of the state
+  if (!world.splits().empty()) throw std::runtime_error("restore_world: the world has split floes already");
+  for (const FloeSplit& split : s.splits) {
+    if (split.body < 0 || split.body >= static_cast<int>(world.floes().size()))
+      throw std::runtime_error(fmt::format("the checkpoint splits body {}, the scene builds {} ice bodies: it is not "
+                                           "this scene's",
+                                           split.body, world.floes().size()));
+    world.split_floe(split);
+  }
   const auto& bodies = world.bodies();
   if (s.bodies.size() != bodies.size() || s.lattice_replaced.size() != world.lattices().size() ||
       s.joint_broken.size() != world.joints().size())

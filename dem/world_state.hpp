@@ -44,6 +44,7 @@ struct WorldState {
   std::vector<BodyState> bodies;        // World::bodies() order
   std::vector<uint8_t> lattice_replaced;  // per World::lattices(): its elements are in the world
   std::vector<uint8_t> joint_broken;      // per World::joints()
+  std::vector<FloeSplit> splits;          // World::splits(): the rebuilt world makes the same pieces
   std::vector<ManifoldState> manifolds;
 };
 

@@ -238,5 +238,33 @@ TEST(Polygon, CentroidalMomentsOfARectangleFarFromTheOriginAreItsOwn) {
   EXPECT_NEAR(r.ixx, m.ixx, 1e-9 * m.ixx);
 }
 
+TEST(Polygon, ACutSplitsAConvexPolygonIntoTwoThatFillIt) {
+  // a 0.6 m square cut 0.2 m from its -x edge, and an oblique cut off the centre
+  for (const auto& [point, normal] : {std::pair<Eigen::Vector2d, Eigen::Vector2d>{{-0.1, 0.0}, {1.0, 0.0}},
+                                      std::pair<Eigen::Vector2d, Eigen::Vector2d>{{0.05, 0.02}, {1.0, 0.5}}}) {
+    const Polygon sq = square(0.6);
+    const PolygonCut c = cut(sq, point, normal);
+    ASSERT_GE(c.behind.size(), 3u);
+    ASSERT_GE(c.ahead.size(), 3u);
+    EXPECT_TRUE(is_convex(c.behind));
+    EXPECT_TRUE(is_convex(c.ahead));
+    // the vertex order of the polygon (ccw): the parts' areas keep its sign and sum to it
+    EXPECT_GT(signed_area(c.behind), 0.0);
+    EXPECT_NEAR(area(c.behind) + area(c.ahead), area(sq), 1e-15);
+    for (const Eigen::Vector2d& v : c.behind) EXPECT_LE((v - point).dot(normal), 1e-15);
+    for (const Eigen::Vector2d& v : c.ahead) EXPECT_GE((v - point).dot(normal), -1e-15);
+  }
+  EXPECT_NEAR(area(cut(square(0.6), {-0.1, 0.0}, {1.0, 0.0}).behind), 0.2 * 0.6, 1e-15);
+}
+
+TEST(Polygon, ACutThatMissesOrFollowsAnEdgeLeavesOnePartEmpty) {
+  const PolygonCut missed = cut(square(0.6), {1.0, 0.0}, {1.0, 0.0});
+  EXPECT_EQ(missed.behind.size(), 4u);
+  EXPECT_TRUE(missed.ahead.empty());
+  const PolygonCut along = cut(square(0.6), {0.3, 0.0}, {-1.0, 0.0});  // the +x edge, the square ahead
+  EXPECT_TRUE(along.behind.empty());
+  EXPECT_EQ(along.ahead.size(), 4u);
+}
+
 }  // namespace
 }  // namespace icedem
