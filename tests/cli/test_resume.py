@@ -11,7 +11,7 @@ SIGKILL once it has written its checkpoint at t = 5, 15 and 25 s, resumed with
 `icedem resume`, and every dataset and the /stats attributes compared, bit for bit. A kill
 during a checkpoint write is reproduced by what it leaves on the disk: a torn temporary
 checkpoint and a torn output file. Then a run of breakable floes killed between two groups
-of breaks. `icedem info` and refusals are checked on the way.
+of breaks, and one of rigid floes that split (their pieces are bodies made mid-run). `icedem info` and refusals are checked on the way.
 """
 import os
 import signal
@@ -161,6 +161,25 @@ check(killed_at("lattice_killed.h5", 48.75, lattices, lattice_options), "the lat
 p = run("resume", "lattice_killed.h5", "-q")
 check(p.returncode == 0 and contents("lattice_killed.h5") == lattice_full,
       "the lattice run resumed from t = 48.75 s: every dataset, the breaks and the statistics as uninterrupted")
+
+# rigid floes that split (fracture.mode = "analytic"): the bench field's 0.6 m floes, whose
+# splits add bodies to the world and to the output; split at 42-46, 61.8, 64.6-65.7 and
+# from 71.3 s on, killed after the checkpoint at 68.25 s: the resumed world makes the pieces
+# of the splits before it again, the resumed output holds them and adds those after it
+split_options = ["--set", "fracture.mode=analytic", "--set", "solver.profile=converged",
+                 "--set", "output.snapshot_interval=1", "--set", "output.checkpoint_interval=9.75"]
+p = run("run", lattices, "-q", "-o", "split_full.h5", *split_options)
+split_full = contents("split_full.h5")
+with h5py.File("split_full.h5", "r") as f:
+    splits = f["fracture/events"]["time"]
+    pieces = int((f["bodies/parent"][:] >= 0).sum())
+    check((splits < 68.25).any() and (splits > 68.25).any() and pieces == 2 * len(splits),
+          f"the split run splits floes before and after t = 68.25 s, two pieces each ({list(np.round(splits, 2))}, "
+          f"{pieces} pieces)")
+check(killed_at("split_killed.h5", 68.25, lattices, split_options), "the split run killed after t = 68.25 s")
+p = run("resume", "split_killed.h5", "-q")
+check(p.returncode == 0 and contents("split_killed.h5") == split_full,
+      "the split run resumed from t = 68.25 s: every dataset, the pieces and the statistics as uninterrupted")
 
 # an output lost after the kill: its checkpoint alone resumes it
 name = "lost.h5"

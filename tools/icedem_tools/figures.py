@@ -139,8 +139,9 @@ def topview(runs, out, scenario, path):
     for ax, k in zip(axes, picks):
         pos = h["/snapshots/position"][k]
         yaw = yaw_of(h["/snapshots/orientation"][k])
+        present = h["/snapshots/awake"][k] != results.ABSENT  # split floes are their pieces
         polys = []
-        for b in range(len(off) - 1):
+        for b in np.where(present)[0]:
             v = verts[off[b]:off[b + 1]]
             c, s = np.cos(yaw[b]), np.sin(yaw[b])
             # body frame (x, z) -> tank (x, z): rotation by yaw about +y
@@ -171,7 +172,7 @@ def front_view(runs, out, scenario, path):
     radius = waterline_radius(h)
     axis = spos[np.clip(np.searchsorted(t, st), 0, len(t) - 1)]
     dx = pos[:, :, 0] - axis[:, None, 0]
-    near = np.abs(dx) < 1.0
+    near = (np.abs(dx) < 1.0) & (h["/snapshots/awake"] != results.ABSENT)
     fig, ax = plt.subplots(figsize=(8, 4))
     for b in np.where(near.any(axis=0))[0]:
         k = near[:, b]

@@ -78,11 +78,16 @@ class RunFile:
         return len(self.datasets.get("/snapshots/time", ()))
 
 
+ABSENT = 2  # /snapshots/rows/awake of a body not in the run: gone (split), or born later
+
+
 def snapshot_field(f):
     """The snapshots of an open output file `f` (h5py) as full fields: position (k x nb x 3, m),
     orientation (k x nb x 4, w x y z) and awake (k x nb). The file stores, per snapshot, only the
     bodies whose pose or awake flag changed since the snapshot before (the first stores every
-    body): each body keeps its latest row."""
+    body): each body keeps its latest row. A body not in the run at a snapshot has awake 2: one
+    born later (a piece of a floe that splits, /bodies/born) with no row yet, at the origin
+    unrotated, or one gone (split into pieces), at its last pose."""
     k = len(f["/snapshots/time"])
     nb = len(f["/bodies/floe_id"])
     end = f["/snapshots/end_row"][:k]
@@ -90,7 +95,7 @@ def snapshot_field(f):
     body = f["/snapshots/rows/body"][:rows]
     pos, ori, awk = f["/snapshots/rows/position"][:rows], f["/snapshots/rows/orientation"][:rows], f["/snapshots/rows/awake"][:rows]
     position, orientation, awake = np.zeros((k, nb, 3)), np.zeros((k, nb, 4)), np.zeros((k, nb), dtype=np.uint8)
-    p, o, a = np.zeros((nb, 3)), np.zeros((nb, 4)), np.zeros(nb, dtype=np.uint8)
+    p, o, a = np.zeros((nb, 3)), np.tile([1.0, 0.0, 0.0, 0.0], (nb, 1)), np.full(nb, ABSENT, dtype=np.uint8)
     start = 0
     for i in range(k):
         r = slice(start, int(end[i]))
