@@ -229,10 +229,18 @@ int stl_command(const std::string& scenario_path, const std::vector<std::string>
   return kExitOk;
 }
 
-int cone_load_command(const std::string& scenario_path, const std::vector<std::string>& sets) {
+int cone_load_command(const std::string& scenario_path, const std::vector<std::string>& sets, bool json) {
   const Scene scene = load_scene(scenario_path, sets);
   const ConeLoadInputs in = cone_load_inputs(scene);
   const ConeLoad r = iso19906_cone_load(in);
+  if (json) {  // for the report's comparison of fracture models (tools/icedem_tools/report_fracture_models.py)
+    const nlohmann::json j{{"friction", in.friction},          {"breaking_N", r.breaking},
+                           {"ride_N", r.ride},                 {"turning_N", r.turning},
+                           {"total_N", r.total},               {"breaking_only_N", r.breaking_only},
+                           {"crack_width_m", r.crack_width},   {"characteristic_length_m", r.characteristic_length}};
+    std::cout << j.dump(2) << "\n";
+    return kExitOk;
+  }
   std::cout << fmt::format(
       "ISO 19906 (Croasdale and Cammaert) load of level ice on the {} slope, dem/iso19906.hpp:\n"
       "  inputs: D {:.3f} m, slope {:.1f} deg, ride height {:.3f} m, h {:.4f} m, sigma_f {:.0f} Pa, E {:.3g} Pa, "
@@ -373,6 +381,8 @@ int main(int argc, char** argv) {
       "cone-load", "the ISO 19906 (Croasdale) load of level ice on the scenario's structure, term by term");
   cone_load->add_option("scenario", scenario, "scenario TOML file")->required();
   cone_load->add_option("--set", sets, "override a scenario key")->take_all();
+  bool cone_load_json = false;
+  cone_load->add_flag("--json", cone_load_json, "print the terms as JSON (N, m)");
 
   CLI::App* foam_case = app.add_subcommand("foam-case", "write the OpenFOAM potential-flow case of a scenario");
   foam_case->add_option("scenario", scenario, "scenario TOML file")->required();
@@ -413,7 +423,7 @@ int main(int argc, char** argv) {
     if (*info) return info_command(output);
     if (*check) return check_command(scenario, sets);
     if (*stl) return stl_command(scenario, sets, output);
-    if (*cone_load) return cone_load_command(scenario, sets);
+    if (*cone_load) return cone_load_command(scenario, sets, cone_load_json);
     if (*calibrate) return calibrate_command(scenario, sets, target_modulus, write_path);
     if (*foam_case) return foam_case_command(scenario, sets, output);
     if (*foam_solve) return foam_solve_command(scenario, sets);

@@ -118,7 +118,7 @@ def make_record(run_dir):
     surge load over the analysis window (up to RECORD_MAX_HZ) and its breaks (every field of
     /fracture/events, mode and mechanism also by name)."""
     summary = results.load_summary(os.path.join(run_dir, RUN_FILES["summary"]))
-    freq, power, events = [], [], []
+    freq, power, events, window = [], [], [], {}
     run = results.load_run(os.path.join(run_dir, RUN_FILES["h5"]))
     start, end = summary.get("window_start_s"), summary.get("window_end_s")
     if start is not None and end is not None:
@@ -127,6 +127,8 @@ def make_record(run_dir):
         f, p = welch_spectrum(t[sel], x[sel])
         keep = f <= RECORD_MAX_HZ
         freq, power = f[keep].tolist(), [float(f"{v:.6g}") for v in p[keep]]
+        if sel.any():  # the load a run exceeds 1 % of its window, less driven by one event than the max
+            window["p99_fx_N"] = float(np.quantile(x[sel], 0.99))
     ev = run.events
     fields = [k for k in (ev.dtype.names or ()) if k not in ("mode_name", "mechanism_name")]
     for row in ev:
@@ -136,19 +138,22 @@ def make_record(run_dir):
             e["mechanism_name"] = str(row["mechanism_name"])
         events.append(e)
     return {"summary": summary, "spectrum": {"frequency_hz": freq, "power_N2_per_hz": power},
-            "fracture_events": events}
+            "fracture_events": events, "window": window}
 
 
 def load_record(run, out):
     """The record of a finished run: the kept file when the sweep keeps records and it is at
-    least as new as the run's summary; else made from the run's directory (reading its HDF5
-    file) and kept."""
+    least as new as the run's summary (and has the window's quantiles, kept since 2026-11-26);
+    else made from the run's directory (reading its HDF5 file) and kept."""
     from . import execute
     run_dir = os.path.join(out, run.path)
     summary = os.path.join(run_dir, RUN_FILES["summary"])
     kept_is_current = (run.record_file and os.path.isfile(run.record_file)
                        and (not os.path.isfile(summary)
                             or os.path.getmtime(run.record_file) >= os.path.getmtime(summary)))
+    if kept_is_current and execute.finished_here(run, out):
+        with open(run.record_file) as f:
+            kept_is_current = "window" in json.load(f)
     if execute.finished_here(run, out) and not kept_is_current:
         record = make_record(run_dir)
         if run.record_file:

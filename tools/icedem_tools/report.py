@@ -18,6 +18,7 @@ import sys
 from . import aggregate as agg, execute, spec
 from .paper_findings import disagreement_section, filled_causes, findings, side_by_side
 from .report_breakage import margin_section, mechanism_section
+from .report_fracture_models import fracture_models_section
 from .report_sweeps import before_section, convergence_section, flow_section, supplement_section
 from .report_tables import ci, fmt, num, read_rows, run_records, run_summaries, supplement_rows
 
@@ -145,6 +146,10 @@ def main(argv=None):
                                    "sweeps/flow_models.toml), compared with this grid's small_rigid runs")
     ap.add_argument("--convergence", help="a sweep of the grid's models with other numerics (e.g. "
                                           "sweeps/paper_convergence.toml), compared seed by seed")
+    ap.add_argument("--fracture-models", help="the sweep of the analytic fracture model on the larger floes "
+                                              "(sweeps/paper_fracture_models.toml), compared with the grid's rigid "
+                                              "floes and lattices, the tank and ISO 19906")
+    ap.add_argument("--icedem", help="the build whose `cone-load` gives the ISO 19906 load (default build/dem/icedem)")
     args = ap.parse_args(argv)
     name, runs = spec.load(args.sweep)
     out = os.path.abspath(args.out or os.path.join(spec.ROOT, "sweeps", name))
@@ -190,6 +195,9 @@ def main(argv=None):
         L += flow_section(os.path.abspath(args.flow), rows)
     if args.convergence:
         L += convergence_section(os.path.abspath(args.convergence), records)
+    if args.fracture_models:
+        icedem = args.icedem or os.path.join(spec.ROOT, "build", "dem", "icedem")
+        L += fracture_models_section(os.path.abspath(args.fracture_models), records, figs, report, icedem)
     for sup in supplements:
         L += supplement_section(*sup, grid_rows=rows, records=records)
     if args.before:

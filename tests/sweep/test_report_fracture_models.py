@@ -1,0 +1,56 @@
+#!/usr/bin/python3
+"""The report's comparison of fracture models (tools/icedem_tools/report_fracture_models.py)
+compares the models over the seeds all of them finished, the same layouts, at the paper's
+Fig. 18 frictions only: a seed one model lacks is left out of every model's numbers, other
+frictions are not mixed in, and a run without the window's p99 (a record kept before it was)
+makes the column n/a rather than a mean over the others."""
+import collections
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
+from icedem_tools.report_fracture_models import FII, FIS, MODELS, comparison  # noqa: E402
+
+failures = []
+Run = collections.namedtuple("Run", "seed labels")
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def record(mean, peak, breaks=0, cpu=10.0, p99=None):
+    rec = {"summary": {"mean_fx_N": mean, "max_fx_N": peak, "breaks": breaks, "cpu_time_s": cpu}}
+    if p99 is not None:
+        rec["window"] = {"p99_fx_N": p99}
+    return rec
+
+
+def runs(fii, fis, seeds, scale, p99=True):
+    return [(Run(s, ((FII, fii), (FIS, fis))), record(10 * scale + s, 100 * scale + s, breaks=s,
+                                                      p99=(50 * scale + s) if p99 else None)) for s in seeds]
+
+
+records = {}
+for k, (scenario, _) in enumerate(MODELS):
+    seeds = [1, 2, 3] if k else [1, 2]  # the rigid floes lack seed 3
+    records[scenario] = (runs(0.3, 0.3, seeds, k + 1) + runs(0.7, 0.3, seeds, k + 1, p99=k != 2)
+                         + runs(0.3, 0.1, [1, 2, 3, 4], 100))  # another f_is: not the comparison's
+got = comparison(records)
+common, models = got[0.3]
+check(common == [1, 2], f"f_ii 0.3: the seeds every model finished, {common}")
+st = models[MODELS[1]]
+check(abs(st["mean_fx_N"][0] - 21.5) < 1e-12, f"the analytic model's mean over seeds 1 and 2 only: {st['mean_fx_N']}")
+check(abs(st["largest"] - 202) < 1e-12, f"its largest max, seed 3 and f_is 0.1 left out: {st['largest']}")
+check(abs(st["breaks"] - 1.5) < 1e-12 and abs(st["cpu"] - 10) < 1e-12, f"breaks and CPU per run: {st}")
+check(abs(st["p99_fx_N"][0] - 101.5) < 1e-12, f"its p99: {st['p99_fx_N']}")
+check(got[0.7][1][MODELS[2]]["p99_fx_N"] is None and got[0.7][1][MODELS[1]]["p99_fx_N"] is not None,
+      "records without the window's p99 make the column n/a for that model only")
+check(all(v is None for v in comparison({})[0.3][1].values()), "no runs: no numbers")
+
+if failures:
+    print(f"{len(failures)} check(s) failed")
+    sys.exit(1)
+print("all checks passed")

@@ -1,0 +1,156 @@
+"""The report's comparison of fracture models on the paper's larger floes (tools/icedem_tools/report.py):
+rigid floes, rigid floes that split analytically (fracture.mode = "analytic"), and the lattices of
+0.20 m and 0.15 m elements, at the ice-structure friction of the paper's Fig. 18 and both its
+ice-ice frictions, over the seeds all four have finished; beside the tank's largest load and the
+ISO 19906 load of level ice on the cone, in one table and one figure."""
+import json
+import os
+import subprocess
+
+import numpy as np
+
+from . import aggregate as agg, spec
+from .paper_findings import TARGETS
+from .report_tables import FII, FIS, run_records
+
+# the models, in the order of the table: grid scenario (or the models sweep's) and label
+MODELS = (("large_rigid", "rigid, no fracture"),
+          ("large_analytic", "rigid, splitting analytically"),
+          ("large_breakable_020", "lattice, 0.20 m elements"),
+          ("large_breakable_015", "lattice, 0.15 m elements"))
+FIS_VALUE = 0.3           # the paper's Fig. 18
+FII_VALUES = (0.3, 0.7)   # its two states of failure
+ISO_SCENARIO = "scenarios/paper/large_floes_rigid.toml"  # the paper's cone and ice
+
+
+def _friction(run, key):
+    return dict(run.labels).get(key)
+
+
+def model_runs(records, scenario, fii):
+    """{seed: record} of a model's finished runs at (f_ii, FIS_VALUE)."""
+    return {r.seed: rec for r, rec in records.get(scenario, [])
+            if _friction(r, FII) == fii and _friction(r, FIS) == FIS_VALUE}
+
+
+def stats(recs):
+    """The table's numbers over the runs `recs`: (mean, ci) of the mean, p99 and max, the largest
+    max, breaks per run and CPU s per run."""
+    s = [rec["summary"] for rec in recs]
+    p99 = [rec.get("window", {}).get("p99_fx_N") for rec in recs]
+    out = {k: agg.mean_ci([x[k] for x in s if x.get(k) is not None]) for k in ("mean_fx_N", "max_fx_N")}
+    out["p99_fx_N"] = agg.mean_ci([v for v in p99 if v is not None]) if all(v is not None for v in p99) else None
+    out["largest"] = max(x["max_fx_N"] for x in s)
+    out["breaks"] = float(np.mean([x.get("breaks", 0) for x in s]))
+    out["cpu"] = float(np.mean([x.get("cpu_time_s", float("nan")) for x in s]))
+    return out
+
+
+def comparison(records):
+    """{f_ii: (the seeds every model finished, {model: stats() over them, or None})}."""
+    out = {}
+    for fii in FII_VALUES:
+        by_model = {m: model_runs(records, m[0], fii) for m in MODELS}
+        common = sorted(set.intersection(*(set(v) for v in by_model.values())))
+        out[fii] = (common, {m: stats([by_model[m][s] for s in common]) if common else None for m in MODELS})
+    return out
+
+
+def iso19906(icedem):
+    """The ISO 19906 terms at FIS_VALUE (icedem cone-load --json), or None without a build."""
+    if not icedem or not os.path.isfile(icedem):
+        return None
+    p = subprocess.run([icedem, "cone-load", os.path.join(spec.ROOT, ISO_SCENARIO), "--set",
+                        f"friction.ice_structure={FIS_VALUE}", "--json"], capture_output=True, text=True)
+    return json.loads(p.stdout) if p.returncode == 0 else None
+
+
+def _ci(pair, digits=1):
+    if pair is None:
+        return "n/a"
+    m, h = pair
+    return f"{m:.{digits}f}" + (f" ± {h:.{digits}f}" if np.isfinite(h) else "")
+
+
+def figure(table, iso, tank_max, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, len(FII_VALUES), figsize=(11, 4), sharey=True)
+    for ax, fii in zip(np.atleast_1d(axes), FII_VALUES):
+        rows = [(label, st) for (scenario, label), st in table[fii].items() if st]
+        x = np.arange(len(rows))
+        for key, name, marker, dx in (("mean_fx_N", "mean", "o", -0.15), ("p99_fx_N", "p99", "s", 0.0),
+                                      ("max_fx_N", "mean of maxima", "^", 0.15)):
+            pts = [(i, st[key]) for i, (_, st) in enumerate(rows) if st.get(key)]
+            if pts:
+                ax.errorbar([i + dx for i, _ in pts], [m for _, (m, _) in pts],
+                            yerr=[h if np.isfinite(h) else 0 for _, (_, h) in pts], fmt=marker, capsize=3, label=name)
+        ax.axhline(tank_max, color="k", ls="--", lw=1, label=f"tank, largest ({tank_max:.0f} N)")
+        if iso:
+            ax.axhline(iso["total_N"], color="tab:red", ls=":", lw=1, label=f"ISO 19906, total ({iso['total_N']:.0f} N)")
+            ax.axhline(iso["breaking_only_N"], color="tab:red", ls="-.", lw=1,
+                       label=f"ISO 19906, breaking alone ({iso['breaking_only_N']:.0f} N)")
+        ax.set_xticks(x)
+        ax.set_xticklabels([label.replace(", ", ",\n") for label, _ in rows], fontsize=8)
+        ax.set_title(f"f_ii {fii}, f_is {FIS_VALUE}", fontsize=9)
+        ax.grid(alpha=0.3, axis="y")
+        ax.set_ylim(bottom=0)  # a load's interval over few seeds may reach below 0
+    np.atleast_1d(axes)[0].set_ylabel("surge load, N")
+    np.atleast_1d(axes)[-1].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def fracture_models_section(models_sweep, grid_records, figs, report, icedem=None):
+    """The section's Markdown lines, and its figure in `figs`. grid_records: the grid's
+    run_records(); the analytic model's come from `models_sweep`."""
+    name, runs = spec.load(models_sweep)
+    out = os.path.join(spec.ROOT, "sweeps", name)
+    records = dict(grid_records)
+    records.update(run_records(runs, out))
+    tank_max = TARGETS["large_breakable_max"]["value"]
+    iso = iso19906(icedem)
+    L = ["## Fracture models compared", "",
+         f"The paper's larger floes (0.6 m) at its Fig. 18's frictions (f_is {FIS_VALUE}, f_ii "
+         f"{' and '.join(str(v) for v in FII_VALUES)}) with four models of the ice: rigid floes (the grid's "
+         "`large_rigid`), rigid floes that split in two when the cone's load normal to a floe reaches a floating "
+         "beam's breaking load (`fracture.mode = \"analytic\"`, `sweeps/paper_fracture_models.toml`; "
+         "docs/model/breakage.md), and the lattices of 0.20 m and 0.15 m elements (the grid's). Each over the "
+         "seeds all four have finished, the same layouts; loads are the surge load over each run's analysis "
+         "window, the mean over seeds ± the half-width of the 95 % interval. p99 is the load a run exceeds "
+         "1 % of its window. Breaks are joints broken (lattices) or floes split (analytic) per run; CPU "
+         "is one run's, on this machine beside other runs (ratios within a column's runs only).", ""]
+    compared = comparison(records)
+    table = {fii: models for fii, (_, models) in compared.items()}
+    for fii, (common, models) in compared.items():
+        L += [f"f_ii {fii}, f_is {FIS_VALUE}: {len(common)} seed(s) finished by all four"
+              + (f" ({', '.join(str(s) for s in common)})" if common else "") + ".", "",
+              "| model | mean, N | p99, N | mean of maxima, N | largest, N | breaks / run | CPU s / run |",
+              "|---|---|---|---|---|---|---|"]
+        for m in MODELS:
+            st = models[m]
+            if st is None:
+                L.append(f"| {m[1]} | n/a | n/a | n/a | n/a | n/a | n/a |")
+                continue
+            L.append(f"| {m[1]} | {_ci(st['mean_fx_N'])} | {_ci(st['p99_fx_N'])} | {_ci(st['max_fx_N'])} | "
+                     f"{st['largest']:.1f} | {st['breaks']:.1f} | {st['cpu']:.0f} |")
+        L += [f"| tank (NMRI, f_is and f_ii as measured) | not given | not given | about {tank_max:.0f} "
+              "(the largest) | | | |"]
+        if iso:
+            L += [f"| ISO 19906, level ice (`icedem cone-load`, mu {FIS_VALUE}) | | | breaking "
+                  f"{iso['breaking_N']:.1f} + ride-up {iso['ride_N']:.1f} + turning {iso['turning_N']:.1f} = "
+                  f"{iso['total_N']:.1f} (breaking alone {iso['breaking_only_N']:.1f}) | | | |"]
+        L.append("")
+    if not any(st for t in table.values() for st in t.values()):
+        return L + ["No seed has finished for all four models yet.", ""]
+    os.makedirs(figs, exist_ok=True)
+    path = os.path.join(figs, "fracture_models.png")
+    figure(table, iso, tank_max, path)
+    L += [f"![fracture models](" + os.path.relpath(path, os.path.dirname(report)) + ")", "",
+          "ISO 19906's load is for level ice, a continuous sheet failing in bending on the cone; the "
+          "floes here are a managed field of 75 % concentration, which the standard does not cover. It is "
+          "the designer's check, not a target: loads in managed ice are usually below those of the level ice "
+          "it assumes.", ""]
+    return L
