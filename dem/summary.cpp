@@ -120,7 +120,8 @@ std::string summary_table(const RunSummary& s) {
   if (!s.near_structure_max_ratio.empty()) {
     const auto& r = s.near_structure_max_ratio;
     const long over_half = std::count_if(r.begin(), r.end(), [](double x) { return x >= 0.5; });
-    out += fmt::format("  floes near the structure: {:d}; their largest joint load ratio: median {:.2f}, "
+    out += fmt::format("  floes near the structure: {:d}; their largest load ratio (a joint's, or a rigid floe's load "
+                       "over its breaking load): median {:.2f}, "
                        "max {:.2f}; {:d} reached half their capacity\n",
                        r.size(), median(r), *std::max_element(r.begin(), r.end()), over_half);
   }
@@ -189,7 +190,8 @@ const std::vector<SummaryField>& summary_fields() {
        }},
       {"near_structure_max_ratio", "1", false, false,
        "for every breakable floe that came within 1 m of the structure: the largest load / capacity ratio of its "
-       "joints over the run", [](S s) { return json(s.near_structure_max_ratio); }},
+       "joints over the run (fracture.mode = \"analytic\": every floe the structure touched, its load over its "
+       "breaking load)", [](S s) { return json(s.near_structure_max_ratio); }},
       {"steps", "1", true, false, "solver steps", [](S s) { return json(s.steps); }},
       {"sim_time_s", "s", true, false, "simulated time", [](S s) { return json(s.sim_time_s); }},
       {"wall_time_s", "s", true, false, "wall time of the run", [](S s) { return json(s.wall_time_s); }},
