@@ -149,6 +149,8 @@ def main(argv=None):
     ap.add_argument("--fracture-models", help="the sweep of the analytic fracture model on the larger floes "
                                               "(sweeps/paper_fracture_models.toml), compared with the grid's rigid "
                                               "floes and lattices, the tank and ISO 19906")
+    ap.add_argument("--fracture-models-convergence",
+                    help="the analytic model at other numerics (sweeps/paper_fracture_models_convergence.toml)")
     ap.add_argument("--icedem", help="the build whose `cone-load` gives the ISO 19906 load (default build/dem/icedem)")
     args = ap.parse_args(argv)
     name, runs = spec.load(args.sweep)
@@ -197,7 +199,9 @@ def main(argv=None):
         L += convergence_section(os.path.abspath(args.convergence), records)
     if args.fracture_models:
         icedem = args.icedem or os.path.join(spec.ROOT, "build", "dem", "icedem")
-        L += fracture_models_section(os.path.abspath(args.fracture_models), records, figs, report, icedem)
+        conv = args.fracture_models_convergence
+        L += fracture_models_section(os.path.abspath(args.fracture_models), records, figs, report, icedem,
+                                     os.path.abspath(conv) if conv else None)
     for sup in supplements:
         L += supplement_section(*sup, grid_rows=rows, records=records)
     if args.before:

@@ -11,6 +11,7 @@ import numpy as np
 
 from . import aggregate as agg, spec
 from .paper_findings import TARGETS
+from .report_sweeps import convergence_section
 from .report_tables import FII, FIS, run_records
 
 # the models, in the order of the table: grid scenario (or the models sweep's) and label
@@ -103,9 +104,10 @@ def figure(table, iso, tank_max, path):
     plt.close(fig)
 
 
-def fracture_models_section(models_sweep, grid_records, figs, report, icedem=None):
+def fracture_models_section(models_sweep, grid_records, figs, report, icedem=None, convergence=None):
     """The section's Markdown lines, and its figure in `figs`. grid_records: the grid's
-    run_records(); the analytic model's come from `models_sweep`."""
+    run_records(); the analytic model's come from `models_sweep`; `convergence`: the analytic
+    model's sweep at other numerics (sweeps/paper_fracture_models_convergence.toml), if any."""
     name, runs = spec.load(models_sweep)
     out = os.path.join(spec.ROOT, "sweeps", name)
     records = dict(grid_records)
@@ -144,7 +146,9 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
                   f"{iso['total_N']:.1f} (breaking alone {iso['breaking_only_N']:.1f}) | | | |"]
         L.append("")
     if not any(st for t in table.values() for st in t.values()):
-        return L + ["No seed has finished for all four models yet.", ""]
+        L += ["No seed has finished for all four models yet.", ""]
+        return L + (convergence_section(convergence, {}, title="### Convergence of the analytic model")
+                    if convergence else [])
     os.makedirs(figs, exist_ok=True)
     path = os.path.join(figs, "fracture_models.png")
     figure(table, iso, tank_max, path)
@@ -153,4 +157,6 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
           "floes here are a managed field of 75 % concentration, which the standard does not cover. It is "
           "the designer's check, not a target: loads in managed ice are usually below those of the level ice "
           "it assumes.", ""]
+    if convergence:
+        L += convergence_section(convergence, {}, title="### Convergence of the analytic model")
     return L

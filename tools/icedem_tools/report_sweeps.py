@@ -200,12 +200,12 @@ def convergence_verdict(got):
     return L
 
 
-def convergence_section(conv_sweep, records):
+def convergence_section(conv_sweep, records, title="## Convergence of the grid's loads"):
     """The grid's numbers against a halved step and a tighter solve (a sweep whose scenarios are
     <model>+<numerics>, e.g. sweeps/paper_convergence.toml), compared seed by seed, and whether
     its default runs repeat the grid's runs of the same seeds."""
     name, runs, out, _ = supplement_rows(conv_sweep)
-    L = ["## Convergence of the grid's loads", "", sweep_about(conv_sweep), ""]
+    L = [title, "", sweep_about(conv_sweep), ""]
     # (model, numerics) -> {seed: summary}
     got = {(scenario.partition("+")[0], scenario.partition("+")[2]): by_seed
            for scenario, by_seed in finished_summaries(runs, out).items()}
