@@ -166,13 +166,25 @@ def side_by_side(now, before=None, before_label="", now_label="icedem"):
     return L, disagreements
 
 def numerics(summaries):
-    """How the grid's runs were solved, from their summaries: one sentence."""
+    """How the grid's runs were solved, from their summaries: one sentence (or two)."""
     solver = [x.get("solver") or {} for v in summaries.values() for _, x in v]
     caps = sorted({x.get("cap") for x in solver if x.get("cap") is not None})
     tols = sorted({x.get("tolerance") for x in solver if x.get("tolerance") is not None})
     sweeps = [x["iterations_mean"] for x in solver if x.get("iterations_mean") is not None]
     if not caps:
         return ""
+    methods = sorted({x.get("method", "pgs") for x in solver})
+    if methods != ["pgs"]:
+        # the accelerated projected gradient (and any other method with a merit): its steps and how
+        # many of the analysis windows' steps stopped at the cap
+        joints = sorted({x.get("joint_tolerance") for x in solver if x.get("joint_tolerance")})
+        capped = [x.get("capped_window_fraction") or 0.0 for x in solver]
+        return (f"Every run of this grid solved its contacts with {'/'.join(methods)}, at most "
+                f"{'/'.join(map(str, caps))} steps a step, to a merit of {'/'.join(f'{t:g}' for t in tols)}"
+                + (f" (islands with joints {'/'.join(f'{t:g}' for t in joints)})" if joints else "")
+                + f": {sum(sweeps) / len(sweeps):.1f} steps per step on average over the runs. "
+                f"{sum(c > 0 for c in capped)} of {len(capped)} runs stopped a step of their analysis window at the "
+                f"cap (at most {100 * max(capped):.2f} % of a window's steps).")
     how = (f"at most {'/'.join(map(str, caps))} sweeps, ending at a residual of "
            f"{'/'.join(f'{t:g}' for t in tols)}" if any(t > 0 for t in tols)
            else f"{'/'.join(map(str, caps))} sweeps every step")
