@@ -73,6 +73,59 @@ def fig18_shift(low, high, mechanisms, rng):
     return out
 
 
+def mechanism_names(records):
+    """The mechanisms as the events name them (icedem declares them; every summary counts all)."""
+    return [m.replace("_", " ") for m in agg.break_names(
+        [rec["summary"] for v in records.values() for _, rec in v], "breaks_by_mechanism")]
+
+
+def mechanism_table(records, s, mechanisms, rng):
+    """Scenario `s`'s breaks by mechanism per f_ii, with intervals, and whether Fig. 18's shift
+    appears: Markdown lines."""
+    L = ["| f_ii | runs | breaks | per run | " + " | ".join(mechanisms) + " | median depth mm | "
+         "median distance m | median force of other floes N |", "|---" * (7 + len(mechanisms)) + "|"]
+    per_run = {}
+    fiis = sorted({dict(r.grid).get(FII) for r, _ in records[s]} - {None})
+    for fii in fiis:
+        ev, runs = breaks_of(records, s, fii)
+        n = len(ev)
+        per_run[fii] = run_counts(runs, mechanisms)
+        counts = per_run[fii].sum(axis=0)  # breaks by mechanism, over the runs
+        boot = bootstrap_shares(per_run[fii], rng) if n else None
+
+        def cell(k):
+            if not n:
+                return "0"
+            iv = interval(boot[:, k])
+            return (f"{counts[k]:.0f} ({100 * counts[k] / n:.0f} %" +
+                    (f", {100 * iv[0]:.0f}-{100 * iv[1]:.0f}" if iv else "") + ")")
+        cells = " | ".join(cell(k) for k in range(len(mechanisms)))
+        depth = quantile([1e3 * e["depth"] for _, e in ev if "depth" in e], 0.5)
+        dist = quantile([e["distance"] for _, e in ev if "distance" in e], 0.5)
+        press = quantile([e["press_down"] + e["press_toward"] for _, e in ev if "press_down" in e], 0.5)
+        L.append(f"| {fii:g} | {len(runs)} | {n} | {n / len(runs):.2f} | {cells} | {fmt(depth, '', 0)} | "
+                 f"{fmt(dist, '', 2)} | {fmt(press, '', 1)} |")
+    L.append("")
+    low, high = per_run.get(0.3), per_run.get(0.7)
+    if (low is not None and high is not None and low.sum() and high.sum()
+            and "pressed under" in mechanisms and "on the slope" in mechanisms):
+        shift = fig18_shift(low, high, mechanisms, rng)
+
+        def said(m):
+            d, iv, verdict = shift[m]
+            return (f"{m} {100 * d:+.0f} points" + (f" ({100 * iv[0]:+.0f} to {100 * iv[1]:+.0f})" if iv else "")
+                    + f": {verdict}")
+        both = {shift[m][2] for m in shift}
+        overall = ("**appears**" if both == {"appears"} else "**is reversed**" if "reversed" in both
+                   and "appears" not in both else "**is not resolved**" if "appears" not in both
+                   else "appears in part")
+        L += ["Fig. 18 says: at f_ii 0.3 a submerged floe pressed against the cone by an approaching floe "
+              "breaks; at 0.7 floes break sliding on the slope. From f_ii 0.3 to 0.7 here (shares of the "
+              f"breaks, 95 % intervals over runs): {said('pressed under')}; {said('on the slope')}. "
+              f"The paper's shift {overall}.", ""]
+    return L
+
+
 def mechanism_section(records, figs, report):
     """Breaks by mechanism per f_ii (dem/break_context.hpp), against the paper's Fig. 18."""
     L = ["## Breakage mechanisms", "",
@@ -85,54 +138,11 @@ def mechanism_section(records, figs, report):
          "touching, afloat). Summed over f_is and seeds; each share with its 95 % interval "
          "(a bootstrap over the runs: breaks cluster in runs, so the runs are the samples).", ""]
     rng = np.random.default_rng(18)
-    per_run = {}
-    # the mechanisms as the events name them (icedem declares them; every summary counts all)
-    mechanisms = [m.replace("_", " ") for m in agg.break_names(
-        [rec["summary"] for v in records.values() for _, rec in v], "breaks_by_mechanism")]
+    mechanisms = mechanism_names(records)
     for s in BREAKABLE:
         if s not in records:
             continue
-        L += [f"### {s}", "",
-              "| f_ii | runs | breaks | per run | " + " | ".join(mechanisms) + " | median depth mm | "
-              "median distance m | median force of other floes N |", "|---" * (7 + len(mechanisms)) + "|"]
-        fiis = sorted({dict(r.grid).get(FII) for r, _ in records[s]} - {None})
-        for fii in fiis:
-            ev, runs = breaks_of(records, s, fii)
-            n = len(ev)
-            per_run[(s, fii)] = run_counts(runs, mechanisms)
-            counts = per_run[(s, fii)].sum(axis=0)  # breaks by mechanism, over the runs
-            boot = bootstrap_shares(per_run[(s, fii)], rng) if n else None
-
-            def cell(k):
-                if not n:
-                    return "0"
-                iv = interval(boot[:, k])
-                return (f"{counts[k]:.0f} ({100 * counts[k] / n:.0f} %" +
-                        (f", {100 * iv[0]:.0f}-{100 * iv[1]:.0f}" if iv else "") + ")")
-            cells = " | ".join(cell(k) for k in range(len(mechanisms)))
-            depth = quantile([1e3 * e["depth"] for _, e in ev if "depth" in e], 0.5)
-            dist = quantile([e["distance"] for _, e in ev if "distance" in e], 0.5)
-            press = quantile([e["press_down"] + e["press_toward"] for _, e in ev if "press_down" in e], 0.5)
-            L.append(f"| {fii:g} | {len(runs)} | {n} | {n / len(runs):.2f} | {cells} | {fmt(depth, '', 0)} | "
-                     f"{fmt(dist, '', 2)} | {fmt(press, '', 1)} |")
-        L.append("")
-        low, high = per_run.get((s, 0.3)), per_run.get((s, 0.7))
-        if (low is not None and high is not None and low.sum() and high.sum()
-                and "pressed under" in mechanisms and "on the slope" in mechanisms):
-            shift = fig18_shift(low, high, mechanisms, rng)
-
-            def said(m):
-                d, iv, verdict = shift[m]
-                return (f"{m} {100 * d:+.0f} points" + (f" ({100 * iv[0]:+.0f} to {100 * iv[1]:+.0f})" if iv else "")
-                        + f": {verdict}")
-            both = {shift[m][2] for m in shift}
-            overall = ("**appears**" if both == {"appears"} else "**is reversed**" if "reversed" in both
-                       and "appears" not in both else "**is not resolved**" if "appears" not in both
-                       else "appears in part")
-            L += ["Fig. 18 says: at f_ii 0.3 a submerged floe pressed against the cone by an approaching floe "
-                  "breaks; at 0.7 floes break sliding on the slope. From f_ii 0.3 to 0.7 here (shares of the "
-                  f"breaks, 95 % intervals over runs): {said('pressed under')}; {said('on the slope')}. "
-                  f"The paper's shift {overall}.", ""]
+        L += [f"### {s}", ""] + mechanism_table(records, s, mechanisms, rng)
         pictures = [f for f in sorted(os.listdir(figs)) if f.startswith(f"break_{s}_")] if os.path.isdir(figs) else []
         if pictures:
             L += ["Just before a break, like the paper's Fig. 18 (scripts/break_pictures.py: side and top view, the "

@@ -11,6 +11,7 @@ import numpy as np
 
 from . import aggregate as agg, spec
 from .paper_findings import TARGETS
+from .report_breakage import mechanism_names, mechanism_table
 from .report_sweeps import convergence_section
 from .report_tables import FII, FIS, run_records
 
@@ -161,6 +162,14 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
           "floes here are a managed field of 75 % concentration, which the standard does not cover. It is "
           "the designer's check, not a target: loads in managed ice are usually below those of the level ice "
           "it assumes.", ""]
+    if "large_analytic" in records:
+        # what the analytic model's split floes were doing, classified as the lattices' breaks are
+        # ("Breakage mechanisms" above), and whether Fig. 18's shift appears in it
+        L += ["### What the splitting floes were doing", "",
+              "Each split is classified as a lattice's break is (\"Breakage mechanisms\" above), from the "
+              "contacts of the one floe that split; the analytic model's runs at both frictions, shares with "
+              "95 % intervals over runs.", ""]
+        L += mechanism_table(records, "large_analytic", mechanism_names(records), np.random.default_rng(28))
     if convergence:
         L += convergence_section(convergence, {}, title="### Convergence of the analytic model")
     return L
