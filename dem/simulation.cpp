@@ -360,7 +360,8 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       history.awake_sum += state.awake_floes;
       history.health.add(state.time, state.diagnostics);
       for (const FractureEvent& e : state.fracture_events) recorder.append_fracture(e);
-      // the pieces of floes that split this step
+      // the pieces of floes that split this step (floes that split have no lattices, so no
+      // stand-ins: World::floes() are the output bodies)
       if (floes_split(scene) && state.world->floes().size() > recorder.body_count())
         recorder.add_bodies(body_outlines(scene, *state.world, recorder.body_count(), state.time));
       if (snapshot_every && state.step % snapshot_every == 0)
