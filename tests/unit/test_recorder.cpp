@@ -443,6 +443,55 @@ TEST(Recorder, ReopenedFileContinuesAfterItsRows) {
   EXPECT_EQ(shape(file, "/fracture/events"), (std::vector<hsize_t>{1}));
 }
 
+TEST(Recorder, BodiesAddedMidRunGetTheirOutlinesAndRowsAndSurviveAReopen) {
+  // a floe that splits: body 1 goes (snapshot code 2) and two pieces come in at t = 0.7 s,
+  // their outlines after the others', their parent and birth recorded; a reopened file (a run
+  // resumed from its checkpoint) knows all of them and adds the next
+  const std::string path = tmp_path("recorder_added.h5");
+  const BodyOutline piece_a{2, {{-0.1, -0.3}, {0.1, -0.3}, {0.1, 0.3}, {-0.1, 0.3}}, 0.033, 1, 0.7};
+  const BodyOutline piece_b{2, {{-0.2, -0.3}, {0.2, -0.3}, {0.2, 0.3}}, 0.033, 1, 0.7};
+  {
+    Recorder rec(path, test_meta(), test_bodies());
+    rec.append_snapshot(0.5, poses(0, 3));
+    rec.add_bodies({piece_a, piece_b});
+    EXPECT_EQ(rec.body_count(), 5u);
+    EXPECT_THROW(rec.append_snapshot(1.0, poses(1, 3)), std::invalid_argument);  // the file has 5 bodies now
+    std::vector<BodyPose> now = poses(0, 5);  // bodies 0 and 2 unchanged, 1 gone, the pieces new
+    now[1].awake = kBodyGone;
+    rec.append_snapshot(1.0, now);
+    rec.flush();
+  }
+  {
+    Recorder rec(path, Recorder::Reopen{});
+    EXPECT_EQ(rec.body_count(), 5u);
+    rec.add_bodies({BodyOutline{2, piece_b.outline, 0.033, 4, 1.2}});
+    rec.append_snapshot(1.5, poses(0, 6));
+    rec.finish("complete", "", 1.0);
+  }
+  H5::H5File file(path, H5F_ACC_RDONLY);
+  EXPECT_EQ(read<int>(file, "/bodies/floe_id", H5::PredType::NATIVE_INT), (std::vector<int>{1, 2, 2, 2, 2, 2}));
+  EXPECT_EQ(read<int>(file, "/bodies/parent", H5::PredType::NATIVE_INT), (std::vector<int>{-1, -1, -1, 1, 1, 4}));
+  EXPECT_EQ(read_doubles(file, "/bodies/born"), (std::vector<double>{0, 0, 0, 0.7, 0.7, 1.2}));
+  // the outlines in order: the three of the start (4, 4, 5 vertices), then 4, 3 and 3
+  EXPECT_EQ(read<int64_t>(file, "/bodies/vertex_offset", H5::PredType::NATIVE_INT64),
+            (std::vector<int64_t>{0, 4, 8, 13, 17, 20, 23}));
+  const std::vector<double> v = read_doubles(file, "/bodies/vertices");
+  ASSERT_EQ(v.size(), 2u * 23);
+  EXPECT_EQ(v[2 * 13], -0.1);  // piece a's first vertex
+  EXPECT_EQ(v[2 * 17 + 1], -0.3);  // piece b's
+  // the second snapshot holds the gone body and the pieces, not the unchanged bodies
+  const auto end = read<int64_t>(file, "/snapshots/end_row", H5::PredType::NATIVE_INT64);
+  const auto body = read<int>(file, "/snapshots/rows/body", H5::PredType::NATIVE_INT);
+  const auto awake = read<uint8_t>(file, "/snapshots/rows/awake", H5::PredType::NATIVE_UINT8);
+  ASSERT_EQ(end.size(), 3u);
+  EXPECT_EQ(std::vector<int>(body.begin() + end[0], body.begin() + end[1]), (std::vector<int>{1, 3, 4}));
+  EXPECT_EQ(awake[end[0]], kBodyGone);
+  // the third: the body added after the reopen, and body 1, whose flag the test's poses set to 0
+  // (no longer 2); every other body is where the second snapshot left it (the reopened file's
+  // field is read back from its rows)
+  EXPECT_EQ(std::vector<int>(body.begin() + end[1], body.begin() + end[2]), (std::vector<int>{1, 5}));
+}
+
 TEST(Recorder, ReopeningAFileThatIsNotAnOutputNamesIt) {
   const std::string path = tmp_path("recorder_not_output.h5");
   { H5::H5File file(path, H5F_ACC_TRUNC); file.createGroup("/meta"); }
