@@ -23,7 +23,7 @@ def check(ok, what):
 
 def record(mean, peak, breaks=0, cpu=10.0, p99=None):
     # `breaks` breaks: two of one floe, then the others of a second
-    events = [{"floe": 3 if k < 2 else 7} for k in range(breaks)]
+    events = [{"floe": 3 if k < 2 else 7, "ratio": 1.0 + 0.5 * k} for k in range(breaks)]
     rec = {"summary": {"mean_fx_N": mean, "max_fx_N": peak, "breaks": breaks, "cpu_time_s": cpu},
            "fracture_events": events}
     if p99 is not None:
@@ -48,6 +48,8 @@ st = models[MODELS[1]]
 check(abs(st["mean_fx_N"][0] - 21.5) < 1e-12, f"the analytic model's mean over seeds 1 and 2 only: {st['mean_fx_N']}")
 check(abs(st["largest"] - 202) < 1e-12, f"its largest max, seed 3 and f_is 0.1 left out: {st['largest']}")
 check(abs(st["breaks"] - 1.5) < 1e-12 and abs(st["cpu"] - 10) < 1e-12, f"breaks and CPU per run: {st}")
+check(st["ratio"] is not None and abs(st["ratio"][0] - 1.0) < 1e-12,
+      f"the breaks' load ratios over the runs (1, 1, 1.5): median {st['ratio']}")
 check(abs(st["floes"] - 1.0) < 1e-12, f"floes broken per run, each once (1 break and 2 of one floe): {st['floes']}")
 check(abs(st["p99_fx_N"][0] - 101.5) < 1e-12, f"its p99: {st['p99_fx_N']}")
 check(got[0.7][1][MODELS[2]]["p99_fx_N"] is None and got[0.7][1][MODELS[1]]["p99_fx_N"] is not None,

@@ -48,6 +48,9 @@ def stats(recs):
     # compare the models on one footing
     out["floes"] = float(np.mean([len({e["floe"] for e in rec.get("fracture_events", [])}) for rec in recs]))
     out["cpu"] = float(np.mean([x.get("cpu_time_s", float("nan")) for x in s]))
+    # how far past its capacity a break's load went within the step of the break (1: resolved)
+    ratios = [e["ratio"] for rec in recs for e in rec.get("fracture_events", []) if "ratio" in e]
+    out["ratio"] = (float(np.median(ratios)), float(np.percentile(ratios, 90))) if ratios else None
     return out
 
 
@@ -127,7 +130,10 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
          "seeds all four have finished, the same layouts; loads are the surge load over each run's analysis "
          "window, the mean over seeds ± the half-width of the 95 % interval. p99 is the load a run exceeds "
          "1 % of its window. Breaks are joints broken (lattices) or splits (analytic, a piece splitting again "
-         "counts again) per run; floes broken counts each layout floe that broke at all once. CPU "
+         "counts again) per run; floes broken counts each layout floe that broke at all once. A break's "
+         "load over its capacity says how far the load went past the capacity within the step of the "
+         "break: an elastic lattice's joints load up over several steps, a rigid floe's contact load can "
+         "jump within one (docs/model/breakage.md). CPU "
          "is one run's, on this machine beside other runs (ratios within a column's runs only).", ""]
     compared = comparison(records)
     table = {fii: models for fii, (_, models) in compared.items()}
@@ -135,20 +141,21 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
         L += [f"f_ii {fii}, f_is {FIS_VALUE}: {len(common)} seed(s) finished by all four"
               + (f" ({', '.join(str(s) for s in common)})" if common else "") + ".", "",
               "| model | mean, N | p99, N | mean of maxima, N | largest, N | breaks / run | floes broken / run | "
-              "CPU s / run |", "|---|---|---|---|---|---|---|---|"]
+              "break's load / capacity, median (p90) | CPU s / run |", "|---|---|---|---|---|---|---|---|---|"]
         for m in MODELS:
             st = models[m]
             if st is None:
-                L.append(f"| {m[1]} | n/a | n/a | n/a | n/a | n/a | n/a | n/a |")
+                L.append(f"| {m[1]} | n/a | n/a | n/a | n/a | n/a | n/a | n/a | n/a |")
                 continue
             L.append(f"| {m[1]} | {_ci(st['mean_fx_N'])} | {_ci(st['p99_fx_N'])} | {_ci(st['max_fx_N'])} | "
-                     f"{st['largest']:.1f} | {st['breaks']:.1f} | {st['floes']:.1f} | {st['cpu']:.0f} |")
+                     f"{st['largest']:.1f} | {st['breaks']:.1f} | {st['floes']:.1f} | "
+                     + (f"{st['ratio'][0]:.2f} ({st['ratio'][1]:.2f})" if st["ratio"] else "") + f" | {st['cpu']:.0f} |")
         L += [f"| tank (NMRI, f_is and f_ii as measured) | not given | not given | about {tank_max:.0f} "
-              "(the largest) | | | | |"]
+              "(the largest) | | | | | |"]
         if iso:
             L += [f"| ISO 19906, level ice (`icedem cone-load`, mu {FIS_VALUE}) | | | breaking "
                   f"{iso['breaking_N']:.1f} + ride-up {iso['ride_N']:.1f} + turning {iso['turning_N']:.1f} = "
-                  f"{iso['total_N']:.1f} (breaking alone {iso['breaking_only_N']:.1f}) | | | | |"]
+                  f"{iso['total_N']:.1f} (breaking alone {iso['breaking_only_N']:.1f}) | | | | | |"]
         L.append("")
     if not any(st for t in table.values() for st in t.values()):
         L += ["No seed has finished for all four models yet.", ""]
