@@ -101,8 +101,14 @@ CrackPlan plan_crack(const Scene& scene, const Polygon& outline, const Eigen::Ve
   // the crack line across the direction, through the centroid's projection on it
   const double along = low + plan.crack_distance - m.centroid.dot(plan.direction);
   plan.point = m.centroid + along * plan.direction;
+  // both pieces at least the shortest along the load and at their narrowest (a crack across a
+  // corner would leave a sliver)
   const double shortest = kMinPieceThicknesses * scene.ice.thickness;
   plan.splits = plan.crack_distance >= shortest && plan.length - plan.crack_distance >= shortest;
+  if (plan.splits) {
+    const PolygonCut parts = cut(outline, plan.point, plan.direction);
+    plan.splits = min_width(parts.behind) >= shortest && min_width(parts.ahead) >= shortest;
+  }
   return plan;
 }
 

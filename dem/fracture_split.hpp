@@ -10,9 +10,9 @@
 // length. It breaks when the force normal to its plane, |F . n|, reaches the beam's breaking
 // edge load, along the crack that load predicts: the line across d at the section of the
 // largest moment. The two pieces move on with the floe's rigid-body motion. A floe does not
-// split if a piece would be shorter along d than kMinPieceThicknesses ice thicknesses: a
-// block that short fails by crushing or shear, not by bending, and beam theory no longer
-// holds for it.
+// split if a piece would be shorter along d, or narrower anywhere (a sliver cut off a corner),
+// than kMinPieceThicknesses ice thicknesses: a block that small fails by crushing or shear,
+// not by bending, and beam theory no longer holds for it.
 #pragma once
 
 #include <Eigen/Core>
@@ -36,6 +36,7 @@ struct CrackPlan {
   Eigen::Vector2d point = Eigen::Vector2d::Zero();       // m, body frame: the crack's point nearest
                                                          // the centroid (the crack runs across direction)
   bool splits = false;       // both pieces are at least kMinPieceThicknesses ice thicknesses long
+                             // along `direction` and wide (min_width)
 };
 
 /// The crack of a floe of `outline` (body frame, centred on its centroid) loaded by the structure

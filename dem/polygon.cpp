@@ -258,6 +258,22 @@ Polygon rectangle(double lx, double lz) {
   return {{hx, hz}, {hx, -hz}, {-hx, -hz}, {-hx, hz}};
 }
 
+double min_width(const Polygon& polygon) {
+  const std::size_t n = polygon.size();
+  if (n < 3) return 0.0;
+  double width = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d edge = polygon[(i + 1) % n] - polygon[i];
+    const double length = edge.norm();
+    if (length == 0) continue;
+    const Eigen::Vector2d normal(-edge.y() / length, edge.x() / length);
+    double farthest = 0;
+    for (const Eigen::Vector2d& v : polygon) farthest = std::max(farthest, std::abs((v - polygon[i]).dot(normal)));
+    width = std::min(width, farthest);
+  }
+  return width;
+}
+
 PolygonCut cut(const Polygon& polygon, const Eigen::Vector2d& point, const Eigen::Vector2d& normal) {
   // Sutherland-Hodgman against one line, both sides at once: each edge that crosses the
   // line adds its crossing to both parts

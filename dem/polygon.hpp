@@ -92,6 +92,11 @@ Polygon square(double side);
 /// Rectangle of length `lx` along x and `lz` along z (m), centred on the origin, ccw.
 Polygon rectangle(double lx, double lz);
 
+/// The width of a convex polygon, m: the least distance between two parallel lines that hold it
+/// (rotating calipers: the least over its edges of the farthest vertex from the edge's line).
+/// 0 for fewer than three vertices.
+double min_width(const Polygon& polygon);
+
 /// The two parts of a convex polygon cut by the line through `point` with normal `normal`
 /// (need not be unit): `behind` where (p - point) . normal <= 0, `ahead` the rest, each in the
 /// polygon's vertex order, the cut's two ends shared. A part is empty when the line misses

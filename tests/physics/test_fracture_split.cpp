@@ -65,7 +65,7 @@ TEST(CrackPlan, AFloeLoadedAtACornerIsALongerNarrowerBeamAcrossTheDiagonal) {
   EXPECT_LT(plan.breaking_load, plan_crack(scene, square(0.6), {-0.3, 0.0}).breaking_load);
 }
 
-TEST(CrackPlan, APieceShorterThanThreeThicknessesIsNotSplitOff) {
+TEST(CrackPlan, APieceShorterOrNarrowerThanThreeThicknessesIsNotSplitOff) {
   const Scene scene = analytic_bench();  // h = 0.033 m: pieces of at least 0.099 m
   // a 0.15 m floe, far shorter than its characteristic length, tilts as a rigid body and
   // breaks at a third of its length: 0.05 m from the edge
@@ -74,6 +74,17 @@ TEST(CrackPlan, APieceShorterThanThreeThicknessesIsNotSplitOff) {
   EXPECT_FALSE(small.splits);
   // a 0.2 x 0.6 piece loaded on its short side: 0.2 m from the edge of 0.6, both pieces long enough
   EXPECT_TRUE(plan_crack(scene, rectangle(0.6, 0.2), {-0.3, 0.0}).splits);
+  // a wedge (a piece a diagonal crack left) loaded at its sharp end: long enough along the
+  // load, but the crack would cut a sliver off the tip
+  const Polygon wedge{{-0.3, 0.0}, {0.3, -0.075}, {0.3, 0.075}};
+  const CrackPlan corner = plan_crack(scene, wedge, {-0.3, 0.0});
+  const PolygonCut parts = cut(wedge, corner.point, corner.direction);
+  std::printf("a wedge's tip: crack %.3f m from the tip of %.3f m; pieces %.3f and %.3f m wide\n",
+              corner.crack_distance, corner.length, min_width(parts.behind), min_width(parts.ahead));
+  EXPECT_GE(corner.crack_distance, 0.099);
+  EXPECT_GE(corner.length - corner.crack_distance, 0.099);
+  EXPECT_LT(std::min(min_width(parts.behind), min_width(parts.ahead)), 0.099);
+  EXPECT_FALSE(corner.splits);
 }
 
 // linear and angular momentum (about the tank origin) of the bodies of `indices`, and their mass

@@ -257,6 +257,14 @@ TEST(Polygon, ACutSplitsAConvexPolygonIntoTwoThatFillIt) {
   EXPECT_NEAR(area(cut(square(0.6), {-0.1, 0.0}, {1.0, 0.0}).behind), 0.2 * 0.6, 1e-15);
 }
 
+TEST(Polygon, MinWidthIsTheNarrowestCaliper) {
+  EXPECT_NEAR(min_width(rectangle(0.6, 0.2)), 0.2, 1e-15);
+  EXPECT_NEAR(min_width(square(0.6)), 0.6, 1e-15);  // not the diagonal
+  // a right triangle with legs 0.3 and 0.4: its height onto the hypotenuse, 0.3 x 0.4 / 0.5 m
+  EXPECT_NEAR(min_width({{0, 0}, {0.4, 0}, {0, 0.3}}), 0.24, 1e-15);
+  EXPECT_EQ(min_width({{0, 0}, {1, 0}}), 0.0);
+}
+
 TEST(Polygon, ACutThatMissesOrFollowsAnEdgeLeavesOnePartEmpty) {
   const PolygonCut missed = cut(square(0.6), {1.0, 0.0}, {1.0, 0.0});
   EXPECT_EQ(missed.behind.size(), 4u);
