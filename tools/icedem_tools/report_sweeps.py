@@ -212,7 +212,7 @@ def convergence_section(conv_sweep, records, title="## Convergence of the grid's
     if not got:
         return L + [f"No finished runs yet (`scripts/sweep run {os.path.relpath(conv_sweep, spec.ROOT)}`).", ""]
     L += ["| model | numerics | seeds | mean: ratio to default | max: ratio to default | breaks per run | "
-          "sweeps per step | CPU per run s |", "|---|---|---|---|---|---|---|---|"]
+          "solver iterations per step | CPU per run s |", "|---|---|---|---|---|---|---|---|"]
 
     def spread(values):
         return f"{sum(values) / len(values):.2f} ({min(values):.2f}-{max(values):.2f})" if values else "n/a"
