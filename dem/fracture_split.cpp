@@ -9,8 +9,8 @@
 
 #include "dem/break_context.hpp"
 #include "dem/bullet_eigen.hpp"
-#include "dem/contact_solver.hpp"
 #include "dem/fracture_analytic.hpp"
+#include "dem/load_cell.hpp"
 
 namespace icedem {
 namespace {
@@ -44,19 +44,12 @@ struct StructureLoad {
   double weight = 0;  // N: the sum of the |impulse| / h
 };
 
-// every awake whole rigid floe the structure touches, with its load, in the solver's canonical
-// order of the manifolds (a world rebuilt from a checkpoint holds Bullet's arrays in another)
+// every awake whole rigid floe the structure touches, with its load, summed in the canonical
+// order of the manifolds (structure_manifolds)
 std::vector<StructureLoad> structure_loads(World& world, double h) {
-  btDispatcher& dispatcher = *world.dynamics().getDispatcher();
   const btRigidBody* structure = world.structure();
   std::vector<const btPersistentManifold*> touching;
-  for (int i = 0; i < dispatcher.getNumManifolds(); ++i) {
-    const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
-    if (m->getBody0() == structure || m->getBody1() == structure) touching.push_back(m);
-  }
-  std::sort(touching.begin(), touching.end(), [](const btPersistentManifold* a, const btPersistentManifold* b) {
-    return ContactSolver::canonical(a) < ContactSolver::canonical(b);
-  });
+  structure_manifolds(*world.dynamics().getDispatcher(), structure, touching);
   std::map<int, StructureLoad> loads;
   for (const btPersistentManifold* m : touching) {
     const bool floe_is_0 = m->getBody0() != structure;

@@ -6,20 +6,23 @@
 #include "dem/contact_solver.hpp"
 
 namespace icedem {
-void LoadCell::accumulate(const btDispatcher& dispatcher, const btRigidBody* structure,
-                          const Eigen::Vector3d& reference) {
-  contacts_ = 0;
-  // the structure's manifolds, added in the solver's canonical order: the sum does not depend on
-  // the order of Bullet's arrays (which a world rebuilt from a checkpoint does not share)
-  touching_.clear();
+void structure_manifolds(const btDispatcher& dispatcher, const btRigidBody* structure,
+                         std::vector<const btPersistentManifold*>& out) {
+  out.clear();
   const int n = dispatcher.getNumManifolds();
   for (int i = 0; i < n; ++i) {
     const btPersistentManifold* m = const_cast<btDispatcher&>(dispatcher).getManifoldByIndexInternal(i);
-    if (m->getBody0() == structure || m->getBody1() == structure) touching_.push_back(m);
+    if (m->getBody0() == structure || m->getBody1() == structure) out.push_back(m);
   }
-  std::sort(touching_.begin(), touching_.end(), [](const btPersistentManifold* a, const btPersistentManifold* b) {
+  std::sort(out.begin(), out.end(), [](const btPersistentManifold* a, const btPersistentManifold* b) {
     return ContactSolver::canonical(a) < ContactSolver::canonical(b);
   });
+}
+
+void LoadCell::accumulate(const btDispatcher& dispatcher, const btRigidBody* structure,
+                          const Eigen::Vector3d& reference) {
+  contacts_ = 0;
+  structure_manifolds(dispatcher, structure, touching_);
   for (const btPersistentManifold* m : touching_) {
     const bool is_body0 = m->getBody0() == structure;
     // impulses act on body 0; the structure feels the opposite when it is body 1

@@ -31,6 +31,12 @@ struct LoadReading {
   int contacts = 0;                                  // contact points on the structure (last substep)
 };
 
+/// The contact manifolds that involve `structure`, into `out` (cleared first), in the contact
+/// solver's canonical order: sums over them then do not depend on the order of Bullet's arrays,
+/// which a world rebuilt from a checkpoint does not share.
+void structure_manifolds(const btDispatcher& dispatcher, const btRigidBody* structure,
+                         std::vector<const btPersistentManifold*>& out);
+
 /// Accumulates contact impulses over the substeps of one step.
 class LoadCell {
  public:

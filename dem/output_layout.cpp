@@ -85,6 +85,27 @@ void schema_fixed(H5::H5File& file, const std::string& path, const H5::DataType&
               true);
 }
 
+// every growing dataset of OutputDatasets besides the per-step series, with its path: what a
+// reopened file opens and what closing releases
+const std::vector<std::pair<Series OutputDatasets::*, const char*>>& growing_datasets() {
+  static const std::vector<std::pair<Series OutputDatasets::*, const char*>> all{
+      {&OutputDatasets::snap_time, "/snapshots/time"},
+      {&OutputDatasets::snap_end_row, "/snapshots/end_row"},
+      {&OutputDatasets::snap_body, "/snapshots/rows/body"},
+      {&OutputDatasets::snap_position, "/snapshots/rows/position"},
+      {&OutputDatasets::snap_orientation, "/snapshots/rows/orientation"},
+      {&OutputDatasets::snap_awake, "/snapshots/rows/awake"},
+      {&OutputDatasets::events, "/fracture/events"},
+      {&OutputDatasets::body_floe_id, "/bodies/floe_id"},
+      {&OutputDatasets::body_thickness, "/bodies/thickness"},
+      {&OutputDatasets::body_vertex_offset, "/bodies/vertex_offset"},
+      {&OutputDatasets::body_vertices, "/bodies/vertices"},
+      {&OutputDatasets::body_parent, "/bodies/parent"},
+      {&OutputDatasets::body_born, "/bodies/born"},
+  };
+  return all;
+}
+
 }  // namespace
 
 std::string utc_now_iso8601() {
@@ -206,19 +227,7 @@ OutputDatasets open_output_layout(H5::H5File& file) {
   };
   OutputDatasets d;
   for (const SeriesColumn& col : series_columns()) d.series.push_back(open(col.path));
-  d.snap_time = open("/snapshots/time");
-  d.snap_end_row = open("/snapshots/end_row");
-  d.snap_body = open("/snapshots/rows/body");
-  d.snap_position = open("/snapshots/rows/position");
-  d.snap_orientation = open("/snapshots/rows/orientation");
-  d.snap_awake = open("/snapshots/rows/awake");
-  d.events = open("/fracture/events");
-  d.body_floe_id = open("/bodies/floe_id");
-  d.body_thickness = open("/bodies/thickness");
-  d.body_vertex_offset = open("/bodies/vertex_offset");
-  d.body_vertices = open("/bodies/vertices");
-  d.body_parent = open("/bodies/parent");
-  d.body_born = open("/bodies/born");
+  for (const auto& [member, path] : growing_datasets()) d.*member = open(path);
   return d;
 }
 
@@ -232,9 +241,7 @@ void write_floe_margin_datasets(H5::H5File& file, const std::vector<double>& max
 }
 
 void OutputDatasets::close() {
-  for (Series* s : {&snap_time, &snap_end_row, &snap_body, &snap_position, &snap_orientation, &snap_awake, &events,
-                    &body_floe_id, &body_thickness, &body_vertex_offset, &body_vertices, &body_parent, &body_born})
-    s->dataset.reset();
+  for (const auto& [member, path] : growing_datasets()) (this->*member).dataset.reset();
   for (Series& s : series) s.dataset.reset();
 }
 

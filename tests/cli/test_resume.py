@@ -63,6 +63,14 @@ def killed_at(name, t, scene=scenario, options=every):
     return True
 
 
+def killed_and_resumed(name, t, scene, options, full, what, kept):
+    """Kill a run of `scene` after its checkpoint at t, resume it, and check it ends as `full`."""
+    check(killed_at(name, t, scene, options), f"{what} killed after t = {t} s")
+    p = run("resume", name, "-q")
+    check(p.returncode == 0 and contents(name) == full,
+          f"{what} resumed from t = {t} s: every dataset, {kept} and the statistics as uninterrupted")
+
+
 p = run("run", scenario, "-q", "-o", "full.h5", *every)
 check(p.returncode == 0 and not os.path.exists("full.h5.checkpoint"),
       "the uninterrupted run completes and leaves no checkpoint")
@@ -157,10 +165,8 @@ with h5py.File("lattice_full.h5", "r") as f:
     breaks = f["fracture/events"]["time"]
     check((breaks < 48.75).any() and (breaks > 48.75).any(),
           f"the lattice run breaks joints before and after t = 48.75 s ({list(np.round(breaks, 2))})")
-check(killed_at("lattice_killed.h5", 48.75, lattices, lattice_options), "the lattice run killed after t = 48.75 s")
-p = run("resume", "lattice_killed.h5", "-q")
-check(p.returncode == 0 and contents("lattice_killed.h5") == lattice_full,
-      "the lattice run resumed from t = 48.75 s: every dataset, the breaks and the statistics as uninterrupted")
+killed_and_resumed("lattice_killed.h5", 48.75, lattices, lattice_options, lattice_full, "the lattice run",
+                   "the breaks")
 
 # rigid floes that split (fracture.mode = "analytic"): the bench field's 0.6 m floes, whose
 # splits add bodies to the world and to the output; split at 42-46, 61.8, 64.6-65.7 and
@@ -176,10 +182,7 @@ with h5py.File("split_full.h5", "r") as f:
     check((splits < 68.25).any() and (splits > 68.25).any() and pieces == 2 * len(splits),
           f"the split run splits floes before and after t = 68.25 s, two pieces each ({list(np.round(splits, 2))}, "
           f"{pieces} pieces)")
-check(killed_at("split_killed.h5", 68.25, lattices, split_options), "the split run killed after t = 68.25 s")
-p = run("resume", "split_killed.h5", "-q")
-check(p.returncode == 0 and contents("split_killed.h5") == split_full,
-      "the split run resumed from t = 68.25 s: every dataset, the pieces and the statistics as uninterrupted")
+killed_and_resumed("split_killed.h5", 68.25, lattices, split_options, split_full, "the split run", "the pieces")
 
 # an output lost after the kill: its checkpoint alone resumes it
 name = "lost.h5"

@@ -148,13 +148,13 @@ def load_record(run, out):
     from . import execute
     run_dir = os.path.join(out, run.path)
     summary = os.path.join(run_dir, RUN_FILES["summary"])
-    kept_is_current = (run.record_file and os.path.isfile(run.record_file)
-                       and (not os.path.isfile(summary)
-                            or os.path.getmtime(run.record_file) >= os.path.getmtime(summary)))
-    if kept_is_current and execute.finished_here(run, out):
+    kept = None  # the kept record, read once, if it is at least as new as the summary
+    if (run.record_file and os.path.isfile(run.record_file)
+            and (not os.path.isfile(summary) or os.path.getmtime(run.record_file) >= os.path.getmtime(summary))):
         with open(run.record_file) as f:
-            kept_is_current = "window" in json.load(f)
-    if execute.finished_here(run, out) and not kept_is_current:
+            kept = json.load(f)
+    finished_here = execute.finished_here(run, out)
+    if finished_here and (kept is None or "window" not in kept):
         record = make_record(run_dir)
         if run.record_file:
             os.makedirs(os.path.dirname(run.record_file), exist_ok=True)
@@ -163,6 +163,8 @@ def load_record(run, out):
                 json.dump(record, f, separators=(",", ":"))
             os.replace(tmp, run.record_file)  # never a half-written record
         return record
+    if kept is not None:
+        return kept
     with open(run.record_file) as f:
         return json.load(f)
 
