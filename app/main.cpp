@@ -229,29 +229,48 @@ int stl_command(const std::string& scenario_path, const std::vector<std::string>
   return kExitOk;
 }
 
-int cone_load_command(const std::string& scenario_path, const std::vector<std::string>& sets, bool json) {
+int cone_load_command(const std::string& scenario_path, const std::vector<std::string>& sets, const RubblePile& pile,
+                      bool json) {
   const Scene scene = load_scene(scenario_path, sets);
-  const ConeLoadInputs in = cone_load_inputs(scene);
+  ConeLoadInputs in = cone_load_inputs(scene);
+  in.rubble = pile;
   const ConeLoad r = iso19906_cone_load(in);
   if (json) {  // for the report's comparison of fracture models (tools/icedem_tools/report_fracture_models.py)
-    const nlohmann::json j{{"friction", in.friction},          {"breaking_N", r.breaking},
-                           {"ride_N", r.ride},                 {"turning_N", r.turning},
-                           {"total_N", r.total},               {"breaking_only_N", r.breaking_only},
-                           {"crack_width_m", r.crack_width},   {"characteristic_length_m", r.characteristic_length}};
+    const nlohmann::json j{{"friction", in.friction},
+                           {"ice_friction", in.ice_friction},
+                           {"ride_height_m", r.ride_height},
+                           {"rubble_height_m", pile.height},
+                           {"breaking_N", r.breaking},
+                           {"pile_push_N", r.pile_push},
+                           {"ride_N", r.ride},
+                           {"pile_lift_N", r.pile_lift},
+                           {"turning_N", r.turning},
+                           {"total_N", r.total},
+                           {"breaking_only_N", r.breaking_only},
+                           {"crack_width_m", r.crack_width},
+                           {"characteristic_length_m", r.characteristic_length}};
     std::cout << j.dump(2) << "\n";
     return kExitOk;
   }
+  const std::string pile_text =
+      pile.height > 0 ? fmt::format("rubble pile h_R {:.3f} m, e {:.2f}, face {:.1f} deg, phi {:.1f} deg, c {:.0f} Pa, "
+                                    "mu_i {:.2f}",
+                                    pile.height, pile.porosity, pile.angle * 180.0 / M_PI,
+                                    pile.friction_angle * 180.0 / M_PI, pile.cohesion, in.ice_friction)
+                      : std::string("no rubble pile (--rubble-height)");
   std::cout << fmt::format(
       "ISO 19906 (Croasdale and Cammaert) load of level ice on the {} slope, dem/iso19906.hpp:\n"
       "  inputs: D {:.3f} m, slope {:.1f} deg, ride height {:.3f} m, h {:.4f} m, sigma_f {:.0f} Pa, E {:.3g} Pa, "
       "nu {:.2f}, rho_i {:.0f}, rho_w {:.0f} kg/m^3, mu {:.2f}\n"
+      "  {}\n"
       "  L_c {:.3f} m, crack width {:.3f} m, xi {:.3f}\n"
-      "  breaking H_B {:.1f} N, ride H_R {:.1f} N, turning H_T {:.1f} N\n"
+      "  breaking H_B {:.1f} N, rubble push H_P {:.1f} N, ride H_R {:.1f} N, rubble lift H_L {:.1f} N, "
+      "turning H_T {:.1f} N\n"
       "  total H {:.1f} N (breaking alone {:.1f} N)\n",
       in.downward ? "downward-breaking" : "upward-breaking", in.waterline_diameter, in.slope * 180.0 / M_PI,
-      in.ride_height, in.thickness, in.flexural_strength, in.elastic_modulus, in.poisson_ratio, in.ice_density,
-      in.water_density, in.friction, r.characteristic_length, r.crack_width, r.slope_factor, r.breaking, r.ride,
-      r.turning, r.total, r.breaking_only);
+      r.ride_height, in.thickness, in.flexural_strength, in.elastic_modulus, in.poisson_ratio, in.ice_density,
+      in.water_density, in.friction, pile_text, r.characteristic_length, r.crack_width, r.slope_factor, r.breaking,
+      r.pile_push, r.ride, r.pile_lift, r.turning, r.total, r.breaking_only);
   return kExitOk;
 }
 
@@ -383,6 +402,17 @@ int main(int argc, char** argv) {
   cone_load->add_option("--set", sets, "override a scenario key")->take_all();
   bool cone_load_json = false;
   cone_load->add_flag("--json", cone_load_json, "print the terms as JSON (N, m)");
+  // a rubble pile is not in a scenario (the paper's managed floes clear the cone): options here
+  RubblePile pile;
+  double pile_angle_deg = 0, pile_friction_deg = 0;
+  CLI::Option* pile_height = cone_load->add_option(
+      "--rubble-height", pile.height, "m, the rubble pile's height h_R from the waterline (default 0: no pile)");
+  cone_load->add_option("--rubble-porosity", pile.porosity, "-, the pile's porosity e")->needs(pile_height);
+  cone_load->add_option("--rubble-angle", pile_angle_deg, "deg, the pile's face from the horizontal, at most the slope")
+      ->needs(pile_height);
+  cone_load->add_option("--rubble-friction-angle", pile_friction_deg, "deg, the rubble's internal friction angle")
+      ->needs(pile_height);
+  cone_load->add_option("--rubble-cohesion", pile.cohesion, "Pa, the rubble's cohesion")->needs(pile_height);
 
   CLI::App* foam_case = app.add_subcommand("foam-case", "write the OpenFOAM potential-flow case of a scenario");
   foam_case->add_option("scenario", scenario, "scenario TOML file")->required();
@@ -423,7 +453,11 @@ int main(int argc, char** argv) {
     if (*info) return info_command(output);
     if (*check) return check_command(scenario, sets);
     if (*stl) return stl_command(scenario, sets, output);
-    if (*cone_load) return cone_load_command(scenario, sets, cone_load_json);
+    if (*cone_load) {
+      pile.angle = pile_angle_deg * M_PI / 180.0;
+      pile.friction_angle = pile_friction_deg * M_PI / 180.0;
+      return cone_load_command(scenario, sets, pile, cone_load_json);
+    }
     if (*calibrate) return calibrate_command(scenario, sets, target_modulus, write_path);
     if (*foam_case) return foam_case_command(scenario, sets, output);
     if (*foam_solve) return foam_solve_command(scenario, sets);

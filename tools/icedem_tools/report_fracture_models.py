@@ -155,7 +155,8 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
         if iso:
             L += [f"| ISO 19906, level ice (`icedem cone-load`, mu {FIS_VALUE}) | | | breaking "
                   f"{iso['breaking_N']:.1f} + ride-up {iso['ride_N']:.1f} + turning {iso['turning_N']:.1f} = "
-                  f"{iso['total_N']:.1f} (breaking alone {iso['breaking_only_N']:.1f}) | | | | | |"]
+                  f"{iso['total_N']:.1f} (breaking alone {iso['breaking_only_N']:.1f}; no rubble pile, so its "
+                  "push and lift terms are 0) | | | | | |"]
         L.append("")
     if not any(st for t in table.values() for st in t.values()):
         L += ["No seed has finished for all four models yet.", ""]
