@@ -165,6 +165,29 @@ def side_by_side(now, before=None, before_label="", now_label="icedem"):
             disagreements.append((finding, paper, ours, cause))
     return L, disagreements
 
+def changed_findings(now, before, before_label, now_label):
+    """A sentence for every finding whose agreement with the paper changed from the earlier
+    grid (`before`) to this one (findings() of each), and one for those that did not: lines."""
+    if before is None:
+        return []
+    old = {f[0]: f for f in before}
+    flips, same = [], 0
+    for finding, _, ours, ok, _ in now:
+        b = old.get(finding)
+        if b is None or b[3] is None or ok is None:
+            continue
+        if bool(b[3]) == bool(ok):
+            same += 1
+            continue
+        turn = "now agrees with the paper" if ok else "no longer agrees with the paper"
+        flips.append(f"- **{finding}** {turn}: {b[2]} with {before_label}, {ours} with {now_label}.")
+    L = [f"### Findings that changed from {before_label} to {now_label}", ""]
+    L += flips or ["None: every finding agrees, or disagrees, with the paper as it did."]
+    L += ["", f"The other {same} findings agree, or disagree, as they did; their numbers moved as the "
+          "table shows.", ""]
+    return L
+
+
 def numerics(summaries):
     """How the grid's runs were solved, from their summaries: one sentence (or two)."""
     solver = [x.get("solver") or {} for v in summaries.values() for _, x in v]

@@ -16,7 +16,7 @@ import os
 import sys
 
 from . import aggregate as agg, execute, spec
-from .paper_findings import disagreement_section, filled_causes, findings, side_by_side
+from .paper_findings import changed_findings, disagreement_section, filled_causes, findings, side_by_side
 from .report_breakage import margin_section, mechanism_section
 from .report_fracture_models import fracture_models_section
 from .report_sweeps import before_section, convergence_section, flow_section, supplement_section
@@ -191,12 +191,13 @@ def main(argv=None):
             before_rows = read_rows(before_out)
     before = findings(before_rows, None, modes) if before_rows else None
     table, disagreements = side_by_side(now, before, args.before_label, args.label)
-    L += table + [""] + disagreement_section(disagreements, causes, summaries)
+    L += table + [""] + changed_findings(now, before, args.before_label, args.label)
+    L += disagreement_section(disagreements, causes, summaries)
     L += mechanism_section(records, figs, report) + margin_section(records, figs, report)
     if args.flow:
         L += flow_section(os.path.abspath(args.flow), rows)
     if args.convergence:
-        L += convergence_section(os.path.abspath(args.convergence), records)
+        L += convergence_section(os.path.abspath(args.convergence), records, supplements=supplements)
     if args.fracture_models:
         icedem = args.icedem or os.path.join(spec.ROOT, "build", "dem", "icedem")
         conv = args.fracture_models_convergence

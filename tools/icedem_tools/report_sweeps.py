@@ -6,6 +6,7 @@ import math
 import os
 
 from . import aggregate as agg, execute, spec
+from .report_convergence import headline_section
 from .report_tables import FII, FIS, ci, fmt, num, pick, ratio_to_first, read_rows, supplement_rows, sweep_about
 
 
@@ -200,10 +201,29 @@ def convergence_verdict(got):
     return L
 
 
-def convergence_section(conv_sweep, records, title="## Convergence of the grid's loads"):
+def pooled_numerics(got, records, supplements):
+    """The convergence sweep's {(model, numerics): {seed: summary}} with the runs of the
+    supplements named <model>+<numerics> added, and the grid's own runs at the reference
+    friction as each model's default (the same configuration: convergence_section checks that
+    they repeat)."""
+    pooled = {k: dict(v) for k, v in got.items()}
+    for _, _, runs, out, _ in supplements:
+        for scenario, by_seed in finished_summaries(runs, out).items():
+            model, plus, numerics = scenario.partition("+")
+            if plus:
+                pooled.setdefault((model, numerics), {}).update(by_seed)
+    for model in {m for m, _ in pooled}:
+        grid = {r.seed: rec["summary"] for r, rec in records.get(model, []) if at_reference(r)}
+        if grid:
+            pooled.setdefault((model, "default"), {}).update(grid)
+    return pooled
+
+
+def convergence_section(conv_sweep, records, title="## Convergence of the grid's loads", supplements=()):
     """The grid's numbers against a halved step and a tighter solve (a sweep whose scenarios are
     <model>+<numerics>, e.g. sweeps/paper_convergence.toml), compared seed by seed, and whether
-    its default runs repeat the grid's runs of the same seeds."""
+    its default runs repeat the grid's runs of the same seeds; then every headline number's
+    change (report_convergence.py), with the supplements' <model>+<numerics> runs added."""
     name, runs, out, _ = supplement_rows(conv_sweep)
     L = [title, "", sweep_about(conv_sweep), ""]
     # (model, numerics) -> {seed: summary}
@@ -249,4 +269,4 @@ def convergence_section(conv_sweep, records, title="## Convergence of the grid's
     if same or differ:
         L += ["", f"The default runs repeat the grid's: {same} of {same + len(differ)} runs give the same max load "
               "to the last digit" + (" (**not**: " + "; ".join(differ) + ")" if differ else "") + "."]
-    return L + [""]
+    return L + [""] + headline_section(pooled_numerics(got, records, supplements))

@@ -1,0 +1,40 @@
+#!/usr/bin/python3
+"""The report names every finding whose agreement with the paper changed between an earlier
+grid and this one (tools/icedem_tools/paper_findings.py, changed_findings), in a sentence with
+both numbers, and counts the others."""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
+from icedem_tools.paper_findings import changed_findings  # noqa: E402
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+# (finding, paper, icedem, agrees?, cause)
+before = [("max load", "75 N", "36.8 N", False, None), ("ratio", "1.5", "1.45", True, None),
+          ("interval", "4 s", "5.09 s", False, None), ("trend", "yes", "n/a", None, None)]
+now = [("max load", "75 N", "70.1 N", True, None), ("ratio", "1.5", "1.10", False, None),
+       ("interval", "4 s", "5.20 s", False, None), ("trend", "yes", "9 N", True, None),
+       ("new finding", "x", "y", True, None)]
+text = "\n".join(changed_findings(now, before, "PGS", "converged"))
+print(text)
+check("**max load** now agrees with the paper: 36.8 N with PGS, 70.1 N with converged." in text,
+      "a finding that came to agree says so with both numbers")
+check("**ratio** no longer agrees with the paper: 1.45 with PGS, 1.10 with converged." in text,
+      "a finding that stopped agreeing says so with both numbers")
+check("interval" not in text.split("The other")[0], "a finding that disagrees as before is not listed")
+check("The other 1 findings" in text, "it is counted; a finding without a verdict or an earlier value is not")
+check(changed_findings(now, None, "PGS", "converged") == [], "no earlier grid: no section")
+check("None:" in "\n".join(changed_findings(before, before, "a", "b")), "nothing changed: says so")
+
+if failures:
+    print(f"{len(failures)} check(s) failed")
+    sys.exit(1)
+print("all checks passed")

@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""The report's check of whether the findings are converged (tools/icedem_tools/report_convergence.py):
+a number whose every seed moves the same way by far more than the seeds scatter is said to
+move; one that moves within a tight interval inside the tolerance holds; the larger/smaller
+ratio takes each seed's change of both cases; breaks compare seed by seed; a mechanism's
+share moves only when resampling the seeds keeps the whole interval on one side."""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
+from icedem_tools.report_convergence import (  # noqa: E402
+    MEAN_TOLERANCE, headline_section, log_change, verdict)
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def summary(mean, peak, breaks=0, mechanisms=None):
+    return {"mean_fx_N": mean, "max_fx_N": peak, "breaks": breaks, "breaks_by_mechanism": mechanisms or {}}
+
+
+seeds = [1, 2, 3, 4, 5]
+scatter = {1: 0.8, 2: 1.3, 3: 1.0, 4: 0.9, 5: 1.1}  # layouts differ by far more than the numerics
+got = {
+    # small floes: dt/2 leaves the mean within 1 % in every seed, raises the max by 30 % in every seed
+    ("small_rigid", "default"): {s: summary(12 * scatter[s], 50 * scatter[s]) for s in seeds},
+    ("small_rigid", "dt_half"): {s: summary(12 * scatter[s] * (1 + 0.002 * (s - 3)), 65 * scatter[s])
+                                 for s in seeds},
+    # larger floes: dt/2 changes nothing, so the larger/smaller max ratio falls by 1/1.3
+    ("large_rigid", "default"): {s: summary(20 * scatter[s], 90 * scatter[s]) for s in seeds},
+    ("large_rigid", "dt_half"): {s: summary(20 * scatter[s], 90 * scatter[s]) for s in seeds},
+    # a lattice: pressed under 8 of 10 breaks in every seed at the default, on the slope 8 of 10 at dt/2
+    ("large_breakable_015", "default"): {s: summary(20, 60, 10 + s, {"pressed_under": 8, "on_the_slope": 2})
+                                         for s in seeds},
+    ("large_breakable_015", "dt_half"): {s: summary(20 * (1.3 if s % 2 else 0.75), 60, 10 + s,
+                                                    {"pressed_under": 2, "on_the_slope": 8}) for s in seeds},
+}
+text = "\n".join(headline_section(got))
+print(text)
+rows = {line.split(" | ")[0].strip("| "): line for line in text.splitlines() if line.startswith("| ")}
+
+
+def row_verdict(name):
+    return rows[name].rstrip(" |").split(" | ")[-1] if name in rows else None
+
+
+check(row_verdict("small_rigid mean load") == "holds", "a mean within 1 % in every seed holds")
+check(row_verdict("small_rigid max load") == "**moves**", "a max 30 % up in every seed moves")
+check("+30 %" in rows.get("small_rigid max load", ""), "and its change reads +30 %")
+check(row_verdict("large_rigid mean load") == "holds", "no change at all holds")
+ratio = rows.get("larger / smaller rigid floes, max load", "")
+check("-23 %" in ratio and row_verdict("larger / smaller rigid floes, max load") == "**moves**",
+      f"the ratio of maxima falls by 1 - 1/1.3 = 23 % in every seed: {ratio}")
+check(row_verdict("large_breakable_015 mean load") == "not resolved",
+      "a mean that goes up in some seeds and down in others by 25-30 % is not resolved")
+check(row_verdict("large_breakable_015 breaks per run") == "holds" and "+0.0" in
+      rows.get("large_breakable_015 breaks per run", ""), "the same breaks in every seed hold")
+check("-0 " not in text, "no change is written +0, never -0")
+check(row_verdict("large_breakable_015 share pressed under") == "**moves**"
+      and "-60 points" in rows.get("large_breakable_015 share pressed under", ""),
+      "pressed under from 80 % to 20 % of the breaks in every seed moves, by -60 points")
+check("Moving with the numerics:" in text and "small_rigid max load with dt_half" in text,
+      "the sentence lists what moves")
+
+# the pieces
+c = log_change([(1.1, 1.0), (1.1, 1.0), (1.1, 1.0)])
+check(abs(c[0] - 0.1) < 1e-12 and c[2] == 3, f"a 10 % rise in every seed is +10 %: {c}")
+check(log_change([(None, 1.0)]) is None, "no pair: no change")
+check(verdict(None, MEAN_TOLERANCE) == "not resolved", "one seed is not resolved")
+check(verdict((-0.04, 0.04), MEAN_TOLERANCE) == "holds" and verdict((-0.06, 0.04), MEAN_TOLERANCE) == "not resolved",
+      "an interval inside the tolerance holds; one reaching beyond it is not resolved")
+check(verdict((-0.2, 0.01), None) == "not resolved" and verdict((0.01, 0.2), None) == "**moves**",
+      "an interval that includes 0 does not move; one above 0 does")
+check(headline_section({}) == [], "no runs: no section")
+
+if failures:
+    print(f"{len(failures)} check(s) failed")
+    sys.exit(1)
+print("all checks passed")
