@@ -3,6 +3,7 @@ sweeps/paper_targets.toml): the side-by-side table, the disagreements and what i
 their causes (tools/icedem_tools/report.py)."""
 import collections
 import os
+import re
 import tomllib
 
 from . import spec
@@ -165,26 +166,49 @@ def side_by_side(now, before=None, before_label="", now_label="icedem"):
             disagreements.append((finding, paper, ours, cause))
     return L, disagreements
 
+MOVED_FINDING = 0.10  # a finding's number that moves by more than this is named in a sentence
+
+
+def _first_number(text):
+    """(the first number in a finding's text, whether it is a percentage), or (None, False)."""
+    m = re.search(r"(-?\d+(?:\.\d+)?)( ?%)?", text or "")
+    return (float(m.group(1)), bool(m.group(2))) if m else (None, False)
+
+
 def changed_findings(now, before, before_label, now_label):
     """A sentence for every finding whose agreement with the paper changed from the earlier
-    grid (`before`) to this one (findings() of each), and one for those that did not: lines."""
+    grid (`before`) to this one (findings() of each), and for every finding whose number (the
+    first in its text) moved by more than MOVED_FINDING: lines."""
     if before is None:
         return []
     old = {f[0]: f for f in before}
-    flips, same = [], 0
+    flips, moved, same = [], [], 0
     for finding, _, ours, ok, _ in now:
         b = old.get(finding)
-        if b is None or b[3] is None or ok is None:
+        if b is None:
             continue
-        if bool(b[3]) == bool(ok):
+        if b[3] is not None and ok is not None and bool(b[3]) != bool(ok):
+            turn = "now agrees with the paper" if ok else "no longer agrees with the paper"
+            flips.append(f"- **{finding}** {turn}: {b[2]} with {before_label}, {ours} with {now_label}.")
+            continue
+        (x0, percent), (x1, _) = _first_number(b[2]), _first_number(ours)
+        # a percentage moves by points (a relative change of a share near 0 says nothing)
+        change = (None if x0 is None or x1 is None else (x1 - x0) / 100 if percent else
+                  (x1 / x0 - 1) if x0 else None)
+        if change is not None and abs(change) > MOVED_FINDING:
+            agrees = "" if ok is None else (", and agrees with the paper as before" if ok else
+                                            ", and disagrees with the paper as before")
+            by = f"{100 * change:+.0f} points" if percent else f"{100 * change:+.0f} %"
+            moved.append(f"- **{finding}** moved by {by}: {b[2]} with {before_label}, {ours} with {now_label}{agrees}.")
+        else:
             same += 1
-            continue
-        turn = "now agrees with the paper" if ok else "no longer agrees with the paper"
-        flips.append(f"- **{finding}** {turn}: {b[2]} with {before_label}, {ours} with {now_label}.")
     L = [f"### Findings that changed from {before_label} to {now_label}", ""]
-    L += flips or ["None: every finding agrees, or disagrees, with the paper as it did."]
-    L += ["", f"The other {same} findings agree, or disagree, as they did; their numbers moved as the "
-          "table shows.", ""]
+    L += flips or ["No finding changed its agreement with the paper."]
+    if moved:
+        L += ["", f"Numbers that moved by more than {100 * MOVED_FINDING:.0f} % ({100 * MOVED_FINDING:.0f} points "
+              "for a percentage):", ""] + moved
+    L += ["", f"The other {same} findings moved by {100 * MOVED_FINDING:.0f} % ({100 * MOVED_FINDING:.0f} points "
+          "for a percentage) or less, or give no number to compare.", ""]
     return L
 
 

@@ -95,6 +95,11 @@ def run_time_section(summaries, out, total_runs):
                  f"{share} |")
     L += ["", f"The finished runs took {total / 3600:.2f} h of wall time and {total_cpu / 3600:.2f} h of CPU time "
           "(each run on one core; wall time grows when the machine is shared, CPU time does not)."]
+    if done:
+        # the measure: the whole grid on a 2-core machine of its own (CPU time over 2 cores)
+        L.append(f"On 2 cores with nothing else running, the whole grid takes about "
+                 f"{total_cpu * total_runs / done / 2 / 3600:.1f} h of wall time (its CPU time over 2 cores"
+                 + ("" if done == total_runs else f", scaled from the {done} runs finished") + ").")
     span = joblog_span(out)
     if span and done:
         busy, summed, n = span

@@ -35,12 +35,6 @@ def beyond_scatter(row, ref, key):
     return f"{a - b:+.1f} (± {h:.1f})", ("**yes**" if abs(a - b) > h else "no")
 
 
-def seed_ratios(runs_, base, key):
-    """Each seed's `key` against the same seed's run in base ({seed: summary} both)."""
-    return [runs_[sd][key] / base[sd][key] for sd in sorted(set(runs_) & set(base))
-            if runs_[sd].get(key) and base[sd].get(key)]
-
-
 def supplement_section(sweep_file, name, runs, out, rows, grid_rows=None, records=None):
     """The configurations of another aggregated sweep (its supplement_rows), with their max
     against the first one's; configurations named <model>+<numerics> also against the grid's
@@ -162,45 +156,6 @@ def flow_section(flow_sweep, rows):
     return L + ["", "± are 95 % confidence half-widths over the seeds; a difference is beyond the scatter when "
                 "it exceeds the root sum of squares of the two half-widths.", ""]
 
-# a ratio "moved" when every seed moved the same way and the mean ratio is beyond this
-MOVED = 0.05
-
-
-def convergence_verdict(got):
-    """What moved with the numerics, in words: a load whose every seed's ratio to its default
-    run lies on one side of 1 with the mean ratio beyond MOVED (a few seeds of a chaotic pack
-    cannot show a smaller change), and the breaks per run against the default's."""
-    moved, breaks = [], []
-    for (model, numerics), runs_ in got.items():
-        base = got.get((model, "default"), {})
-        if numerics == "default" or not base:
-            continue
-        seeds = sorted(set(runs_) & set(base))
-        for key, label in (("mean_fx_N", "mean"), ("max_fx_N", "max")):
-            r = seed_ratios(runs_, base, key)
-            if len(r) >= 2 and (min(r) > 1 or max(r) < 1) and abs(sum(r) / len(r) - 1) > MOVED:
-                moved.append(f"{model} {label} with {numerics}: {sum(r) / len(r):.2f} "
-                             f"({min(r):.2f}-{max(r):.2f}) in every seed")
-        b0 = sum(base[sd].get("breaks", 0) for sd in seeds)
-        b1 = sum(runs_[sd].get("breaks", 0) for sd in seeds)
-        if b0 or b1:
-            times = f", {b1 / b0:.1f} times" if b0 else ""
-            breaks.append(f"{model} with {numerics}: {b1} against {b0} in the same {len(seeds)} seeds{times}")
-    L = [""]
-    if moved:
-        L.append(f"**Not converged** (every seed moved the same way, by more than {100 * MOVED:.0f} % on "
-                 "average): " + "; ".join(moved) + ". The grid's value of these loads is labelled by this "
-                 "ratio; its scatter over seeds does not cover it.")
-    else:
-        L.append(f"No load moved the same way in every seed by more than {100 * MOVED:.0f} % on average.")
-    if breaks:
-        L.append("")
-        L.append("Breaks: " + "; ".join(breaks) + ". Break counts are rare events of a chaotic pack; a "
-                 "ratio of several on a few seeds says the grid's counts (and the mechanism shares built "
-                 "on them) depend on the step and the solve.")
-    return L
-
-
 def pooled_numerics(got, records, supplements):
     """The convergence sweep's {(model, numerics): {seed: summary}} with the runs of the
     supplements named <model>+<numerics> added, and the grid's own runs at the reference
@@ -231,29 +186,19 @@ def convergence_section(conv_sweep, records, title="## Convergence of the grid's
            for scenario, by_seed in finished_summaries(runs, out).items()}
     if not got:
         return L + [f"No finished runs yet (`scripts/sweep run {os.path.relpath(conv_sweep, spec.ROOT)}`).", ""]
-    L += ["| model | numerics | seeds | mean: ratio to default | max: ratio to default | breaks per run | "
-          "solver iterations per step | CPU per run s |", "|---|---|---|---|---|---|---|---|"]
-
-    def spread(values):
-        return f"{sum(values) / len(values):.2f} ({min(values):.2f}-{max(values):.2f})" if values else "n/a"
-    models = list(dict.fromkeys(m for m, _ in got))
-    for model in models:
-        base = got.get((model, "default"), {})
+    # what each numerics costs; what it changes is judged, with intervals, by headline_section
+    L += ["What each numerics costs (its changes to the findings follow in \"Are the findings converged?\"):", "",
+          "| model | numerics | seeds | breaks per run | solver iterations per step | CPU per run s |",
+          "|---|---|---|---|---|---|"]
+    for model in dict.fromkeys(m for m, _ in got):
         for numerics in [n for m, n in got if m == model]:
             runs_ = got[(model, numerics)]
-            ratios = {k: seed_ratios(runs_, base, k) for k in ("mean_fx_N", "max_fx_N")}
             br = [x.get("breaks", 0) for x in runs_.values()]
             sw = [(x.get("solver") or {}).get("iterations_mean") for x in runs_.values()]
             sw = [v for v in sw if v is not None]
             cpu = [x.get("cpu_time_s") for x in runs_.values() if x.get("cpu_time_s")]
-            L.append(f"| {model} | {numerics} | {len(runs_)} | "
-                     f"{spread(ratios['mean_fx_N']) if numerics != 'default' else '1'} | "
-                     f"{spread(ratios['max_fx_N']) if numerics != 'default' else '1'} | "
-                     f"{sum(br) / len(br):.1f} | {fmt(sum(sw) / len(sw) if sw else None)} | "
-                     f"{fmt(sum(cpu) / len(cpu) if cpu else None, '', 0)} |")
-    L += ["", "Ratios: the mean over seeds of each seed's value against the same seed's default run, with "
-          "the range over seeds in brackets."]
-    L += convergence_verdict(got)
+            L.append(f"| {model} | {numerics} | {len(runs_)} | {sum(br) / len(br):.1f} | "
+                     f"{fmt(sum(sw) / len(sw) if sw else None)} | {fmt(sum(cpu) / len(cpu) if cpu else None, '', 0)} |")
     # the default runs are the grid's runs of the same seeds at f_ii 0.5, f_is 0.2: they must agree
     same, differ = 0, []
     for (model, numerics), by_seed in got.items():
