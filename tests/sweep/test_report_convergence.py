@@ -76,6 +76,8 @@ check(verdict((-0.04, 0.04), MEAN_TOLERANCE) == "holds" and verdict((-0.06, 0.04
       "an interval inside the tolerance holds; one reaching beyond it is not resolved")
 check(verdict((-0.2, 0.01), None) == "not resolved" and verdict((0.01, 0.2), None) == "**moves**",
       "an interval that includes 0 does not move; one above 0 does")
+check(verdict((0.01, 0.03), MEAN_TOLERANCE) == "holds",
+      "a change resolved from 0 but inside the tolerance holds: the findings carry it")
 check(headline_section({}) == [], "no runs: no section")
 
 if failures:
