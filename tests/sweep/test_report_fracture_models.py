@@ -3,13 +3,14 @@
 compares the models over the seeds all of them finished, the same layouts, at the paper's
 Fig. 18 frictions only: a seed one model lacks is left out of every model's numbers, other
 frictions are not mixed in, and a run without the window's p99 (a record kept before it was)
-makes the column n/a rather than a mean over the others."""
+makes the column n/a rather than a mean over the others; without the ISO 19906 load the
+row says why."""
 import collections
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
-from icedem_tools.report_fracture_models import FII, FIS, MODELS, comparison  # noqa: E402
+from icedem_tools.report_fracture_models import FII, FIS, MODELS, comparison, iso19906  # noqa: E402
 
 failures = []
 Run = collections.namedtuple("Run", "seed labels")
@@ -55,6 +56,10 @@ check(abs(st["p99_fx_N"][0] - 101.5) < 1e-12, f"its p99: {st['p99_fx_N']}")
 check(got[0.7][1][MODELS[2]]["p99_fx_N"] is None and got[0.7][1][MODELS[1]]["p99_fx_N"] is not None,
       "records without the window's p99 make the column n/a for that model only")
 check(all(v is None for v in comparison({})[0.3][1].values()), "no runs: no numbers")
+terms, why = iso19906("/nonexistent/icedem")
+check(terms is None and "no build at /nonexistent/icedem" in why, f"without a build the ISO row says why: {why}")
+terms, why = iso19906("/bin/false")
+check(terms is None and "failed" in why, f"a build whose cone-load fails: the row says so: {why}")
 
 if failures:
     print(f"{len(failures)} check(s) failed")

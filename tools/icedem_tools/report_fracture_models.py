@@ -65,12 +65,16 @@ def comparison(records):
 
 
 def iso19906(icedem):
-    """The ISO 19906 terms at FIS_VALUE (icedem cone-load --json), or None without a build."""
+    """(the ISO 19906 terms at FIS_VALUE from `icedem cone-load --json`, None) or (None, why
+    not): the report says why rather than dropping the row."""
     if not icedem or not os.path.isfile(icedem):
-        return None
+        return None, f"no build at {icedem}"
     p = subprocess.run([icedem, "cone-load", os.path.join(spec.ROOT, ISO_SCENARIO), "--set",
                         f"friction.ice_structure={FIS_VALUE}", "--json"], capture_output=True, text=True)
-    return json.loads(p.stdout) if p.returncode == 0 else None
+    if p.returncode != 0:
+        first = (p.stderr.strip().splitlines() or ["no message"])[0]
+        return None, f"`{icedem} cone-load --json` failed: {first}"
+    return json.loads(p.stdout), None
 
 
 def _ci(pair, digits=1):
@@ -120,7 +124,7 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
     records = dict(grid_records)
     records.update(run_records(runs, out))
     tank_max = TARGETS["large_breakable_max"]["value"]
-    iso = iso19906(icedem)
+    iso, iso_missing = iso19906(icedem)
     L = ["## Fracture models compared", "",
          f"The paper's larger floes (0.6 m) at its Fig. 18's frictions (f_is {FIS_VALUE}, f_ii "
          f"{' and '.join(str(v) for v in FII_VALUES)}) with four models of the ice: rigid floes (the grid's "
@@ -152,7 +156,9 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
                      + (f"{st['ratio'][0]:.2f} ({st['ratio'][1]:.2f})" if st["ratio"] else "") + f" | {st['cpu']:.0f} |")
         L += [f"| tank (NMRI, f_is and f_ii as measured) | not given | not given | about {tank_max:.0f} "
               "(the largest) | | | | | |"]
-        if iso:
+        if not iso:
+            L += [f"| ISO 19906, level ice | not available: {iso_missing} | | | | | | | |"]
+        else:
             L += [f"| ISO 19906, level ice (`icedem cone-load`, mu {FIS_VALUE}) | | | breaking "
                   f"{iso['breaking_N']:.1f} + ride-up {iso['ride_N']:.1f} + turning {iso['turning_N']:.1f} = "
                   f"{iso['total_N']:.1f} (breaking alone {iso['breaking_only_N']:.1f}; no rubble pile, so its "
