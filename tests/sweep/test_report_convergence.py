@@ -66,6 +66,11 @@ check(row_verdict("large_breakable_015 share pressed under") == "**moves**"
       "pressed under from 80 % to 20 % of the breaks in every seed moves, by -60 points")
 check("Moving with the numerics:" in text and "small_rigid max load with dt_half" in text,
       "the sentence lists what moves")
+few = {k: {s: v[s] for s in (1, 2, 3)} for k, v in got.items()}
+few_rows = {line.split(" | ")[0].strip("| "): line for line in headline_section(few) if line.startswith("| ")}
+check("no interval: 3 seeds" in few_rows.get("large_breakable_015 share pressed under", "")
+      and few_rows["large_breakable_015 share pressed under"].rstrip(" |").endswith("not resolved"),
+      "3 seeds give a bootstrap 10 distinct resamples: no interval, the share is not resolved")
 
 # the pieces
 c = log_change([(1.1, 1.0), (1.1, 1.0), (1.1, 1.0)])

@@ -11,7 +11,9 @@ reference friction (f_ii 0.5, f_is 0.2). Each seed is run at both numerics, so a
   - breaks per run by the mean over seeds of (here - default), with Student's t interval;
   - a mechanism's share of the breaks (pooled over the seeds) by the difference of shares in
     points, with a bootstrap interval that resamples the seeds (the breaks of one run are
-    not independent; report_breakage.py resamples runs for the same reason).
+    not independent; report_breakage.py resamples runs for the same reason); with fewer than
+    MIN_BOOTSTRAP_SEEDS seeds there are too few distinct resamples for an interval, and the
+    share is not resolved.
 A number **holds** when its interval lies inside its tolerance; it **moves** when its interval
 reaches beyond the tolerance and excludes no change; otherwise the seeds are too few to tell
 ("not resolved"). The
@@ -32,6 +34,8 @@ with open(f"{spec.ROOT}/sweeps/studies/convergence.toml", "rb") as _f:
 MEAN_TOLERANCE, PEAK_TOLERANCE = _STUDY["mean_tolerance"], _STUDY["peak_tolerance"]
 SHARE_TOLERANCE = 0.05  # of the breaks: see above
 BOOTSTRAP = 2000
+# a bootstrap over fewer seeds has too few distinct resamples to give an interval (3 seeds: 10)
+MIN_BOOTSTRAP_SEEDS = 5
 RIGID_PAIR = ("large_rigid", "small_rigid")  # the paper's larger/smaller floe ratio
 LOADS = (("mean_fx_N", "mean load", MEAN_TOLERANCE), ("max_fx_N", "max load", PEAK_TOLERANCE))
 
@@ -155,18 +159,20 @@ def mechanism_rows(got, numerics_list, rng):
             a, b = _counts(base, seeds, names), _counts(runs, seeds, names)
             if not a.sum() or not b.sum():
                 continue
+            enough = len(seeds) >= MIN_BOOTSTRAP_SEEDS
             picks = rng.integers(0, len(seeds), size=(BOOTSTRAP, len(seeds)))
             ta, tb = a[picks].sum(axis=1), b[picks].sum(axis=1)  # BOOTSTRAP x mechanisms
             with np.errstate(invalid="ignore", divide="ignore"):
                 diff = tb / tb.sum(axis=1, keepdims=True) - ta / ta.sum(axis=1, keepdims=True)
             for k, name in enumerate(names):
                 ok = diff[:, k][~np.isnan(diff[:, k])]
-                iv = (float(np.percentile(ok, 2.5)), float(np.percentile(ok, 97.5))) if ok.size else None
+                iv = (float(np.percentile(ok, 2.5)), float(np.percentile(ok, 97.5))) if ok.size and enough else None
                 sa, sb = a[:, k].sum() / a.sum(), b[:, k].sum() / b.sum()
                 rows.append((f"{model} share {name.replace('_', ' ')}", numerics, len(seeds),
                              f"{100 * sa:.0f} % of {a.sum():.0f}", f"{100 * sb:.0f} % of {b.sum():.0f}",
                              f"{_signed(100 * (sb - sa))} points" +
-                             (f" ({_signed(100 * iv[0])} to {_signed(100 * iv[1])})" if iv else ""),
+                             (f" ({_signed(100 * iv[0])} to {_signed(100 * iv[1])})" if iv else
+                              f" (no interval: {len(seeds)} seeds)" if not enough else ""),
                              verdict(iv, SHARE_TOLERANCE)))
     return rows
 
@@ -185,7 +191,8 @@ def headline_section(got):
          "f_ii 0.5, f_is 0.2) at the default numerics "
          "and with other numerics, over the seeds run at both; the change is taken seed by seed, with its "
          "95 % interval (loads and ratios: Student's t on the log of each seed's ratio; breaks: on each "
-         "seed's difference; mechanism shares: the seeds resampled). A number holds when its interval "
+         f"seed's difference; mechanism shares: the seeds resampled, given {MIN_BOOTSTRAP_SEEDS} seeds or more). "
+         "A number holds when its interval "
          "lies within its tolerance "
          f"({100 * MEAN_TOLERANCE:.0f} % for a mean, {100 * PEAK_TOLERANCE:.0f} % for a max and for breaks "
          f"per run, {100 * SHARE_TOLERANCE:.0f} points for a mechanism's share, well below the Fig. 18 shift "
