@@ -30,14 +30,18 @@ def run_counts(runs, mechanisms):
     return np.array(rows, dtype=float).reshape(len(rows), len(mechanisms))
 
 
-def bootstrap_shares(counts, rng):
-    """BOOTSTRAP resampled share vectors (mechanism shares of all breaks of the resampled runs);
-    rows whose resample has no break are NaN."""
-    n = counts.shape[0]
-    picks = rng.integers(0, n, size=(BOOTSTRAP, n))
-    totals = counts[picks].sum(axis=1)  # BOOTSTRAP x mechanisms
+def resampled_shares(counts, picks):
+    """The mechanism shares of all breaks of each resample of the runs (`picks`: resamples x
+    runs, indices into counts' rows); rows whose resample has no break are NaN."""
+    totals = counts[picks].sum(axis=1)  # resamples x mechanisms
     with np.errstate(invalid="ignore", divide="ignore"):
         return totals / totals.sum(axis=1, keepdims=True)
+
+
+def bootstrap_shares(counts, rng):
+    """BOOTSTRAP resampled share vectors (resampled_shares of runs drawn with replacement)."""
+    n = counts.shape[0]
+    return resampled_shares(counts, rng.integers(0, n, size=(BOOTSTRAP, n)))
 
 
 def interval(samples):

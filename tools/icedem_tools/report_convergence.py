@@ -28,12 +28,12 @@ import tomllib
 import numpy as np
 
 from . import aggregate as agg, spec
+from .report_breakage import BOOTSTRAP, interval, resampled_shares
 
 with open(f"{spec.ROOT}/sweeps/studies/convergence.toml", "rb") as _f:
     _STUDY = tomllib.load(_f)["study"]
 MEAN_TOLERANCE, PEAK_TOLERANCE = _STUDY["mean_tolerance"], _STUDY["peak_tolerance"]
 SHARE_TOLERANCE = 0.05  # of the breaks: see above
-BOOTSTRAP = 2000
 # a bootstrap over fewer seeds has too few distinct resamples to give an interval (3 seeds: 10)
 MIN_BOOTSTRAP_SEEDS = 5
 RIGID_PAIR = ("large_rigid", "small_rigid")  # the paper's larger/smaller floe ratio
@@ -103,15 +103,14 @@ def ratio_rows(got, numerics_list):
             sets = [got.get((m, n), {}) for m in (big, small) for n in ("default", numerics)]
             seeds = sorted(set.intersection(*(set(s) for s in sets))) if all(sets) else []
             bd, bh, sd, sh = sets if seeds else ({},) * 4
-            d = [math.log(bh[s][key] / bd[s][key]) - math.log(sh[s][key] / sd[s][key]) for s in seeds
-                 if all(x[s].get(key) for x in (bd, bh, sd, sh))]
-            if not d:
+            # log((bh / bd) / (sh / sd)) per seed: the pair (bh sd, bd sh)
+            ch = log_change([(bh[s][key] * sd[s][key], bd[s][key] * sh[s][key]) for s in seeds
+                             if all(x[s].get(key) for x in (bd, bh, sd, sh))])
+            if ch is None:
                 continue
-            m, h = agg.mean_ci(d)
-            iv = (math.expm1(m - h), math.expm1(m + h)) if math.isfinite(h) else None
             ratio = (lambda a, b: np.mean([a[s][key] for s in seeds]) / np.mean([b[s][key] for s in seeds]))
-            rows.append((f"larger / smaller rigid floes, {label}", numerics, len(d), f"{ratio(bd, sd):.2f}",
-                         f"{ratio(bh, sh):.2f}", _pct((math.expm1(m), iv, len(d))), verdict(iv, tol)))
+            rows.append((f"larger / smaller rigid floes, {label}", numerics, ch[2], f"{ratio(bd, sd):.2f}",
+                         f"{ratio(bh, sh):.2f}", _pct(ch), verdict(ch[1], tol)))
     return rows
 
 
@@ -160,13 +159,10 @@ def mechanism_rows(got, numerics_list, rng):
             if not a.sum() or not b.sum():
                 continue
             enough = len(seeds) >= MIN_BOOTSTRAP_SEEDS
-            picks = rng.integers(0, len(seeds), size=(BOOTSTRAP, len(seeds)))
-            ta, tb = a[picks].sum(axis=1), b[picks].sum(axis=1)  # BOOTSTRAP x mechanisms
-            with np.errstate(invalid="ignore", divide="ignore"):
-                diff = tb / tb.sum(axis=1, keepdims=True) - ta / ta.sum(axis=1, keepdims=True)
+            picks = rng.integers(0, len(seeds), size=(BOOTSTRAP, len(seeds)))  # the same seeds for both: paired
+            diff = resampled_shares(b, picks) - resampled_shares(a, picks)
             for k, name in enumerate(names):
-                ok = diff[:, k][~np.isnan(diff[:, k])]
-                iv = (float(np.percentile(ok, 2.5)), float(np.percentile(ok, 97.5))) if ok.size and enough else None
+                iv = interval(diff[:, k]) if enough else None
                 sa, sb = a[:, k].sum() / a.sum(), b[:, k].sum() / b.sum()
                 rows.append((f"{model} share {name.replace('_', ' ')}", numerics, len(seeds),
                              f"{100 * sa:.0f} % of {a.sum():.0f}", f"{100 * sb:.0f} % of {b.sum():.0f}",
