@@ -51,6 +51,23 @@ def mean_ci(values, level=0.95):
     return m, half
 
 
+def change_verdict(interval, tolerance):
+    """The project's one rule for a change of a number with its 95 % interval (lo, hi),
+    against a tolerance (the same units; None: no tolerance): "within" when the whole interval
+    lies inside +-tolerance, "beyond" when the whole interval lies outside it, "moves" when it
+    excludes no change but the seeds cannot tell its size against the tolerance (it straddles
+    a bound), "unresolved" otherwise (or without an interval). scripts/full_runs accepts a
+    setting on it and the paper report judges its findings' convergence on it."""
+    if interval is None:
+        return "unresolved"
+    lo, hi = interval
+    if tolerance is not None and -tolerance <= lo and hi <= tolerance:
+        return "within"
+    if tolerance is not None and (lo > tolerance or hi < -tolerance):
+        return "beyond"
+    return "moves" if lo > 0 or hi < 0 else "unresolved"
+
+
 def welch_spectrum(t, x, segment_s=SEGMENT_S):
     """(frequencies Hz, power N^2/Hz) of x(t) (uniform steps): Welch, Hann window, half
     overlap, segments of segment_s (or the whole record if shorter), each detrended

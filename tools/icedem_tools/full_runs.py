@@ -20,9 +20,10 @@ its p99 within 5 %, its mean of maxima within 10 %, its failure ratio within 5 %
 and its floes break as often as the reference's (breaks_agree; the issue's "breaks
 per run inside the reference's 95 % interval", with a test that holds for rare
 events).
-Each difference is judged with its confidence interval: "within" the bound when the
-whole interval is, "beyond" when the whole interval is outside, else "unresolved"
-(more seeds needed); a variant passes ("yes") when every criterion is within, fails
+Each difference is judged with its confidence interval by the project's one rule
+(aggregate.change_verdict): "within" the bound when the whole interval is, "beyond" when
+the whole interval is outside, "moves" when it excludes no change but straddles the bound,
+else "unresolved" (more seeds needed); a variant passes ("yes") when every criterion is within, fails
 ("no") when one is beyond or its floes break more or less often, else is "undecided".
 Writes the tables to the report (default bench/results/full-runs-<date>.md) and
 prints them.
@@ -34,6 +35,7 @@ import os
 import sys
 
 from . import execute, spec
+from .aggregate import change_verdict
 from .convergence import half_width, window_loads
 from .spec import ROOT
 
@@ -104,9 +106,8 @@ def judge(e, ref):
     """Per criterion against the reference: the relative difference and the half-width of
     its 95 % interval, from the seeds both have run, paired (the same seed is the same floe
     layout, so a layout's own effect on the loads drops out of the difference), and a
-    verdict: "within" when the whole interval lies inside the bound, "beyond" when it lies
-    outside it, "unresolved" when the seeds cannot tell (with one common seed: the point
-    estimate alone). For breaks, whether its floes break as often as the reference's
+    verdict by aggregate.change_verdict (within, beyond, moves or unresolved; with one common
+    seed the point estimate alone). For breaks, whether its floes break as often as the reference's
     (breaks_agree). Overall "yes" when every criterion is within (breaks in the interval), "no"
     when one is beyond (or breaks outside), else "undecided"."""
     import numpy as np
@@ -121,11 +122,9 @@ def judge(e, ref):
             continue
         diff = (a - b) / b.mean()
         d = float(diff.mean())
-        if len(common) < 2:
-            out[k] = (d, float("nan"), "within" if abs(d) <= bound else "beyond")
-            continue
-        hw = half_width(diff) if diff.any() else 0.0
-        out[k] = (d, hw, "within" if abs(d) + hw <= bound else "beyond" if abs(d) - hw > bound else "unresolved")
+        # with one common seed the point estimate alone is judged
+        hw = float("nan") if len(common) < 2 else half_width(diff) if diff.any() else 0.0
+        out[k] = (d, hw, change_verdict((d, d) if len(common) < 2 else (d - hw, d + hw), bound))
     breaks_ok = breaks_agree(e, ref)
     verdicts = [v for _, _, v in out.values()]
     overall = ("no" if "beyond" in verdicts or not breaks_ok
@@ -188,7 +187,8 @@ def main(argv=None):
              f"lattices the failure ratio (the mean of the {TOP_FLOES} largest per-floe load / capacity ratios of a "
              "run) within 5 %. ± is the half-width of the 95 % confidence interval over the seeds (of a difference: "
              "over the seeds both runs have, paired seed by seed); a difference is *within* its bound when its whole interval is, "
-             "*beyond* when its whole interval is outside, else *unresolved* by the seeds.", ""]
+             "*beyond* when its whole interval is outside, *moves* when it excludes no change but straddles the bound, "
+             "else *unresolved* by the seeds.", ""]
     for scenario in dict.fromkeys(r.scenario for r in runs):
         variants = list(dict.fromkeys(r.variant for r in runs if r.scenario == scenario))
         lines += table(scenario, variants, found[scenario])

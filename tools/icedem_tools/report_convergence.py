@@ -13,11 +13,12 @@ reference friction (f_ii 0.5, f_is 0.2). Each seed is run at both numerics, so a
     points, with a bootstrap interval that resamples the seeds (the breaks of one run are
     not independent; report_breakage.py resamples runs for the same reason); with fewer than
     MIN_BOOTSTRAP_SEEDS seeds there are too few distinct resamples for an interval, and the
-    share is not resolved.
-A number **holds** when its interval lies inside its tolerance; it **moves** when its interval
-reaches beyond the tolerance and excludes no change; otherwise the seeds are too few to tell
-("not resolved"). The
-tolerances: the convergence study's for loads (5 % for a mean, 10 % for a max:
+    share is unresolved.
+Each change gets the verdict of the project's one rule (aggregate.change_verdict, which
+scripts/full_runs uses too): "within" when its interval lies inside the tolerance, **beyond**
+when the whole interval lies outside it, **moves** when the interval excludes no change but
+straddles the tolerance (a change the seeds cannot size against it), otherwise "unresolved"
+(the seeds are too few to tell). The tolerances: the convergence study's for loads (5 % for a mean, 10 % for a max:
 sweeps/studies/convergence.toml), the max's 10 % of the default's breaks per run for breaks,
 and 5 points for a mechanism's share: the Fig. 18 shift the report looks for is of the order
 of 10 points, so an error of the numerics must stay well below that not to make or hide it.
@@ -52,15 +53,9 @@ def log_change(pairs):
 
 
 def verdict(iv, tolerance):
-    """'moves', 'holds' or 'not resolved' for an interval of a change (None: one seed)."""
-    if iv is None:
-        return "not resolved"
-    lo, hi = iv
-    if tolerance is not None and -tolerance <= lo and hi <= tolerance:
-        return "holds"  # even a resolved change inside the tolerance is one the findings can carry
-    if lo > 0 or hi < 0:
-        return "**moves**"
-    return "not resolved"
+    """aggregate.change_verdict's word for the report, a change emphasised (None: one seed)."""
+    word = agg.change_verdict(iv, tolerance)
+    return f"**{word}**" if word in ("beyond", "moves") else word
 
 
 def _signed(x, digits=0):
@@ -188,19 +183,27 @@ def headline_section(got):
          "and with other numerics, over the seeds run at both; the change is taken seed by seed, with its "
          "95 % interval (loads and ratios: Student's t on the log of each seed's ratio; breaks: on each "
          f"seed's difference; mechanism shares: the seeds resampled, given {MIN_BOOTSTRAP_SEEDS} seeds or more). "
-         "A number holds when its interval "
-         "lies within its tolerance "
+         "A number is within its tolerance "
          f"({100 * MEAN_TOLERANCE:.0f} % for a mean, {100 * PEAK_TOLERANCE:.0f} % for a max and for breaks "
          f"per run, {100 * SHARE_TOLERANCE:.0f} points for a mechanism's share, well below the Fig. 18 shift "
-         "looked for), **moves** when its interval reaches beyond the tolerance and excludes no change, and is "
-         "not resolved otherwise. Runs of the supplements at these numerics, and the grid's own runs at this "
+         "looked for) when its whole interval is, **beyond** it when its whole interval lies outside, "
+         "**moves** when its interval excludes no change but straddles the tolerance (a real change the seeds "
+         "cannot size against it), and is unresolved otherwise. Runs of the supplements at these numerics, and the grid's own runs at this "
          "friction (the default numerics), count here too.", "",
          "| number | numerics | seeds | default | here | change (95 % interval) | verdict |",
          "|---|---|---|---|---|---|---|"]
     L += [f"| {' | '.join(str(c) for c in r)} |" for r in rows]
+    beyond = [f"{r[0]} with {r[1]} ({r[5]})" for r in rows if r[6] == "**beyond**"]
     moved = [f"{r[0]} with {r[1]} ({r[5]})" for r in rows if r[6] == "**moves**"]
-    held = sum(1 for r in rows if r[6] == "holds")
-    L += ["", (f"Moving with the numerics: {'; '.join(moved)}." if moved else
-               "No headline number moves with the numerics beyond its interval.") +
-          f" {held} of {len(rows)} hold within tolerance; the others are not resolved by these seeds.", ""]
+    within = sum(1 for r in rows if r[6] == "within")
+    L += [""]
+    if beyond:
+        L += [f"Beyond tolerance with the numerics: {'; '.join(beyond)}."]
+    if moved:
+        L += [f"Moving with the numerics, by an amount the seeds cannot size against the tolerance: "
+              f"{'; '.join(moved)}."]
+    if not beyond and not moved:
+        L += ["No headline number is resolved to move with the numerics."]
+    L += [f"Of the {len(rows)} numbers, within tolerance: {within}; unresolved by these seeds: "
+          f"{len(rows) - within - len(beyond) - len(moved)}.", ""]
     return L
