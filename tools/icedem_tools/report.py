@@ -209,7 +209,7 @@ def main(argv=None):
         L += fracture_models_section(os.path.abspath(args.fracture_models), records, figs, report, icedem,
                                      os.path.abspath(conv) if conv else None)
     for sup in supplements:
-        L += supplement_section(*sup, grid_rows=rows, records=records)
+        L += supplement_section(*sup)
     if args.before:
         L += before_section(rows, os.path.abspath(args.before), args.before_note)
     L += configuration_table(rows) + run_time_section(summaries, out, len(runs))

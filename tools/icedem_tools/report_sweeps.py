@@ -16,12 +16,18 @@ def at_reference(run):
     return g.get(FII) == 0.5 and g.get(FIS) == 0.2
 
 
+def run_numbers(record):
+    """A run's summary with its record's window quantiles (p99_fx_N) added: the numbers the
+    report judges per run."""
+    return {**record["summary"], **record.get("window", {})}
+
+
 def finished_summaries(runs, out):
-    """{scenario: {seed: summary}} of a sweep's finished runs (here or by their records)."""
+    """{scenario: {seed: run_numbers}} of a sweep's finished runs (here or by their records)."""
     found = collections.defaultdict(dict)
     for r in runs:
         if execute.status(r, out).state == "done":
-            found[r.scenario][r.seed] = agg.load_record(r, out)["summary"]
+            found[r.scenario][r.seed] = run_numbers(agg.load_record(r, out))
     return found
 
 
@@ -35,10 +41,11 @@ def beyond_scatter(row, ref, key):
     return f"{a - b:+.1f} (± {h:.1f})", ("**yes**" if abs(a - b) > h else "no")
 
 
-def supplement_section(sweep_file, name, runs, out, rows, grid_rows=None, records=None):
+def supplement_section(sweep_file, name, runs, out, rows):
     """The configurations of another aggregated sweep (its supplement_rows), with their max
-    against the first one's; configurations named <model>+<numerics> also against the grid's
-    own runs of that model at f_ii 0.5, f_is 0.2 (grid_rows, records: the grid's)."""
+    against the first one's. Configurations named <model>+<numerics> are judged against the
+    grid's own runs seed by seed in "Are the findings converged?" (report_convergence.py), so
+    they get no second, unpaired comparison here."""
     if rows is None:
         return [f"## Supplement: sweep `{name}`", "", f"Not aggregated yet (`scripts/sweep aggregate {sweep_file}`).", ""]
     done = sum(1 for r in runs if execute.status(r, out).state == "done")
@@ -52,42 +59,11 @@ def supplement_section(sweep_file, name, runs, out, rows, grid_rows=None, record
         L.append(f"| {r['configuration']} | {r['seeds']} | {ci(r, 'mean_fx_N')} | {ci(r, 'max_fx_N')} | "
                  f"{ratio_to_first(rows, r, 'mean_fx_N')} | {ratio_to_first(rows, r, 'max_fx_N')} | "
                  f"{fmt(per / n if per is not None and n else None, '', 0)} |")
-    return L + [""] + numerics_against_grid(runs, out, rows, grid_rows or [], records or {})
+    if any("+" in r["scenario"] for r in rows):
+        L += ["", "Its `<model>+<numerics>` runs are set beside the grid's runs of the same seeds in "
+              "\"Are the findings converged?\"."]
+    return L + [""]
 
-
-def numerics_against_grid(runs, out, rows, grid_rows, records):
-    """Each <model>+<numerics> configuration of a supplement against the grid's runs of that
-    model at f_ii 0.5, f_is 0.2 (the default numerics): mean and max with whether the
-    difference exceeds the seeds' scatter, and breaks per run."""
-    def breaks_per_run(summaries):
-        return sum(x.get("breaks", 0) for x in summaries) / len(summaries) if summaries else None
-    grid_breaks = {model: breaks_per_run([rec["summary"] for r, rec in recs if at_reference(r)])
-                   for model, recs in records.items()}
-    sup = finished_summaries(runs, out)
-    L = []
-    for r in rows:
-        model, plus, numerics = r["scenario"].partition("+")
-        g = pick(grid_rows, model) if plus else None
-        if g is None:
-            continue
-        if not L:
-            L = ["Against the grid's own runs of the same model at f_ii 0.5, f_is 0.2 (the default "
-                 "numerics): a difference is beyond the scatter when it exceeds the two 95 % half-widths "
-                 "combined (root of the sum of squares).", "",
-                 "| configuration | seeds here / grid | mean N here − grid | beyond scatter? | ratio | "
-                 "max N here − grid | beyond scatter? | ratio | breaks per run here / grid |",
-                 "|---|---|---|---|---|---|---|---|---|"]
-        cells = []
-        for key in ("mean_fx_N", "max_fx_N"):
-            a, b = num(r, key), num(g, key)
-            if a is None or not b:
-                cells += ["n/a", "n/a", "n/a"]
-                continue
-            cells += [*beyond_scatter(r, g, key), f"{a / b:.2f}"]
-        here, there = breaks_per_run(list(sup.get(r["scenario"], {}).values())), grid_breaks.get(model)
-        L.append(f"| {r['configuration']} | {r['seeds']} / {g['seeds']} | " + " | ".join(cells) +
-                 f" | {fmt(here, '', 1)} / {fmt(there, '', 1)} |")
-    return L + ([""] if L else [])
 
 def before_section(rows, before_out, note):
     """Every configuration against the same sweep run with an earlier build (its output
@@ -168,7 +144,7 @@ def pooled_numerics(got, records, supplements):
             if plus:
                 pooled.setdefault((model, numerics), {}).update(by_seed)
     for model in {m for m, _ in pooled}:
-        grid = {r.seed: rec["summary"] for r, rec in records.get(model, []) if at_reference(r)}
+        grid = {r.seed: run_numbers(rec) for r, rec in records.get(model, []) if at_reference(r)}
         if grid:
             pooled.setdefault((model, "default"), {}).update(grid)
     return pooled
