@@ -91,5 +91,11 @@ def supplement_rows(sweep_file):
 
 def sweep_about(sweep_file):
     """The opening comment of a sweep file, which says what the sweep is for (its command lines left out)."""
+    lines = []
     with open(sweep_file) as f:
-        return " ".join(l[2:].rstrip() for l in f if l.startswith("# ") and not l[2:].lstrip().startswith("scripts/"))
+        for line in f:
+            if not line.startswith("#"):
+                break  # the opening comment ends at the first key; later comments are on their keys
+            if line.startswith("# ") and not line[2:].lstrip().startswith("scripts/"):
+                lines.append(line[2:].rstrip())
+    return " ".join(lines)
