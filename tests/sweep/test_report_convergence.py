@@ -11,7 +11,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
 from icedem_tools.report_convergence import (  # noqa: E402
-    MEAN_TOLERANCE, headline_section, log_change, seeds_for_tolerance, verdict)
+    MEAN_TOLERANCE, headline_section, log_change, max_bounds, seeds_for_tolerance, verdict)
 
 failures = []
 
@@ -104,6 +104,13 @@ check(verdict((0.02, 0.20), 0.10) == "**moves**" and verdict((0.11, 0.20), 0.10)
       and verdict((-0.30, -0.12), 0.10) == "**beyond**",
       "an interval above 0 across the bound moves; one wholly outside the bound, on either side, is beyond")
 check(headline_section({}) == [], "no runs: no section")
+bounds = max_bounds(got, ["dt_half"])
+mean_peak = 50 * sum(scatter.values()) / len(scatter)  # the default's mean of maxima, 51 N
+check(abs(bounds["small_rigid"][0] - mean_peak) < 1e-9 and abs(bounds["small_rigid"][1] - 1.3 * mean_peak) < 1e-6
+      and bounds["small_rigid"][2] == "dt_half",
+      f"a max up 30 % in every seed (a zero-width interval) is bounded by 1.3 x the default's: {bounds.get('small_rigid')}")
+check(abs(bounds["large_breakable_015"][1] - 60) < 1e-6 and "at most 66.3 N" in text,
+      "an unchanged max is bounded by the default's own, and the report gives the bounds")
 check(seeds_for_tolerance((-0.2, 0.2), 0.05, 10, student=False) == "160"
       and seeds_for_tolerance((-0.02, 0.02), 0.05, 10) == "10"
       and seeds_for_tolerance(None, 0.05, 3) == "" and seeds_for_tolerance((-1.0, 1.0), 0.0, 3) == "",
