@@ -35,9 +35,10 @@ CAUSES = {
     "peak_interval": "peaks are detected with a prominence of one standard deviation; floe passages "
                      "that make no prominent peak are not counted, which lengthens the mean interval "
                      "(the spectral peak sits at L/v)",
-    "max": "the section \"Convergence of the grid's loads\" below measures how far the max moves when the step "
-           "is halved and the solve tightened tenfold; a max that does not move there is the model's, not the "
-           "numerics' (the paper does not give its solver settings){paper_resolution}",
+    "max": "the section \"Are the findings converged?\" below measures how far the max moves when the step "
+           "is halved and the solve tightened tenfold, and bounds the max each case could reach with them; a gap "
+           "wider than that bound is the model's, not the numerics' (the paper does not give its solver "
+           "settings){paper_resolution}",
     "breakable_low": "the breakable floes load the cone less than the rigid ones at the same friction "
                      "(see the breakable / rigid rows)",
     "compliance": "a lattice's joints are compliant and its elements ride the slope separately; "

@@ -257,6 +257,8 @@ def headline_section(got):
         L += ["", "The largest mean of maxima the numerics could give, at the 95 % level (the default's over "
               "all its runs here, times the upper end of its change's interval; the numerics giving the "
               "highest): " + "; ".join(f"{m} {d:.1f} N → at most {b:.1f} N ({n})" for m, (d, b, n) in bounds.items())
-              + ". A measured peak above this bound is beyond what the solve's error can explain."]
+              + ". A measured peak above this bound is beyond what the solve's error can explain; where a "
+              "case's max moves with the numerics, the bound holds for these numerics only (a still finer "
+              "solve may move it further)."]
     L += [""]
     return L
