@@ -18,8 +18,8 @@ Each change gets the verdict of the project's one rule (aggregate.change_verdict
 scripts/full_runs uses too): "within" when its interval lies inside the tolerance, **beyond**
 when the whole interval lies outside it, **moves** when the interval excludes no change but
 straddles the tolerance (a change the seeds cannot size against it), otherwise "unresolved"
-(the seeds are too few to tell). The tolerances: the convergence study's for loads (5 % for a mean, 10 % for a p99 and a max:
-sweeps/studies/convergence.toml), the max's 10 % of the default's breaks per run for breaks,
+(the seeds are too few to tell). The tolerances: the convergence study's for loads (5 % for
+a mean, 10 % for a p99 and a max: sweeps/studies/convergence.toml), the max's 10 % of the default's breaks per run for breaks,
 and 5 points for a mechanism's share: the Fig. 18 shift the report looks for is of the order
 of 10 points, so an error of the numerics must stay well below that not to make or hide it.
 """
@@ -89,7 +89,8 @@ def _pct(change):
 
 
 def load_rows(got, numerics_list):
-    """Mean, p99 and max per case: (number, numerics, seeds, default, here, change, verdict) rows."""
+    """Mean, p99 and max per case: (number, numerics, seeds, default, here, change, verdict,
+    seeds for the tolerance) rows; the other *_rows give the same columns."""
     rows = []
     for model in dict.fromkeys(m for m, _ in got):
         base = got.get((model, "default"), {})
