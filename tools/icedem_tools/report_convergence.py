@@ -88,6 +88,14 @@ def _pct(change):
     return f"{_signed(100 * c)} %" + (f" ({_signed(100 * iv[0])} to {_signed(100 * iv[1])})" if iv else "")
 
 
+def paired_load_change(got, model, numerics, key):
+    """(seeds, log_change) of a case's load `key` from the default to `numerics`, over the
+    seeds run at both; the change is None when no seed has both."""
+    base, runs = got.get((model, "default"), {}), got.get((model, numerics), {})
+    seeds = sorted(set(runs) & set(base))
+    return seeds, log_change([(runs[s].get(key), base[s].get(key)) for s in seeds])
+
+
 def load_rows(got, numerics_list):
     """Mean, p99 and max per case: (number, numerics, seeds, default, here, change, verdict,
     seeds for the tolerance) rows; the other *_rows give the same columns."""
@@ -96,13 +104,11 @@ def load_rows(got, numerics_list):
         base = got.get((model, "default"), {})
         for key, label, tol in LOADS:
             for numerics in numerics_list:
-                runs = got.get((model, numerics), {})
-                seeds = sorted(set(runs) & set(base))
-                ch = log_change([(runs[s].get(key), base[s].get(key)) for s in seeds])
+                seeds, ch = paired_load_change(got, model, numerics, key)
                 if ch is None:
                     continue
                 d = np.mean([base[s][key] for s in seeds])
-                h = np.mean([runs[s][key] for s in seeds])
+                h = np.mean([got[(model, numerics)][s][key] for s in seeds])
                 rows.append((f"{model} {label}", numerics, ch[2], f"{d:.1f} N", f"{h:.1f} N", _pct(ch),
                              verdict(ch[1], tol), seeds_for_tolerance(ch[1], tol, ch[2], log=True)))
     return rows
@@ -118,9 +124,7 @@ def max_bounds(got, numerics_list):
         base = got.get((model, "default"), {})
         peaks = [x["max_fx_N"] for x in base.values() if x.get("max_fx_N")]
         for numerics in numerics_list:
-            runs = got.get((model, numerics), {})
-            seeds = sorted(set(runs) & set(base))
-            ch = log_change([(runs[s].get("max_fx_N"), base[s].get("max_fx_N")) for s in seeds])
+            _, ch = paired_load_change(got, model, numerics, "max_fx_N")
             if ch is None or ch[1] is None or not peaks:
                 continue
             bound = float(np.mean(peaks)) * (1 + ch[1][1])
