@@ -172,7 +172,7 @@ int resume_command(const std::string& output, const std::string& summary_path, b
   // would put an unlocked file in its place); a kill during the copy leaves the checkpoint whole
   std::filesystem::copy_file(saved, output, std::filesystem::copy_options::overwrite_existing);
   remove_checkpoint_group(output);
-  std::cerr << fmt::format("resuming {} from its checkpoint at t = {:.2f} s\n", output, checkpoint.time);
+  std::cerr << fmt::format("resuming {} from its checkpoint at t = {:.2f} s\n", output, checkpoint.values.time);
   RunOptions options{output, !quiet, command_line, openfoam_coupling(), {}, &checkpoint};
   const RunSummary summary = run_simulation(scene, options);
   std::cout << summary_table(summary) << std::flush;
@@ -185,7 +185,7 @@ int info_command(const std::string& output) {
   const OutputMeta meta = read_output_meta(output);
   const std::string saved = checkpoint_path(output);
   std::optional<double> resumable;
-  if (std::filesystem::exists(saved)) resumable = read_checkpoint(saved).time;
+  if (std::filesystem::exists(saved)) resumable = read_checkpoint(saved).values.time;
   std::cout << fmt::format("{}: {}, {} steps recorded, to t = {:.2f} s\n", output, meta.status, meta.rows,
                            meta.last_time);
   if (!meta.message.empty()) std::cout << "  " << meta.message << "\n";

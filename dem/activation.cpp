@@ -54,7 +54,7 @@ void install_activation(const Scene& scene, World& world) {
   const ActivationSettings& a = scene.activation;
   const double v_wake = a.linear_threshold, dt = scene.time.dt / scene.time.substeps;
   if (a.sleeping && a.freeze_outside_region)
-    world.dynamics().set_pre_solve_hook([&world, v_wake, dt] { release_struck(world, v_wake, dt); });
+    world.dynamics().set_islands_hook([&world, v_wake, dt] { release_struck(world, v_wake, dt); });
 }
 
 void update_activation(const Scene& scene, State& state) {

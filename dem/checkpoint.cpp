@@ -2,11 +2,7 @@
 
 #include <H5Cpp.h>
 
-#include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <limits>
 #include <type_traits>
 
 #include <fcntl.h>
@@ -60,12 +56,6 @@ T read_record(const H5::Group& group, const std::string& name, const std::string
   return v.front();
 }
 
-double read_double(const H5::Group& group, const std::string& name) {
-  double value = 0;
-  group.openAttribute(name).read(H5::PredType::NATIVE_DOUBLE, &value);
-  return value;
-}
-
 std::string read_string(const H5::Group& group, const std::string& name) {
   H5::Attribute attr = group.openAttribute(name);
   std::string value;
@@ -73,54 +63,76 @@ std::string read_string(const H5::Group& group, const std::string& name) {
   return value;
 }
 
+template <typename T>
+struct IsVector : std::false_type {};
+template <typename T>
+struct IsVector<std::vector<T>> : std::true_type {};
+
+// the LoadReading's numbers (Eigen's vectors are not plain data)
+struct LoadRow {
+  double force[3], moment[3];
+  int contacts;
+};
+
+// Writes each field it is shown as a dataset of `group` named after it: plain data as its
+// bytes, a vector as its records, Eigen's vectors and the LoadReading by their numbers
+struct FieldWriter {
+  const H5::Group& group;
+  template <typename T>
+  void operator()(const char* name, const T& v) const {
+    if constexpr (IsVector<T>::value) {
+      write_records(group, name, v);
+    } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
+      write_records(group, name, v.data(), 3);
+    } else if constexpr (std::is_same_v<T, LoadReading>) {
+      const LoadRow row{{v.force.x(), v.force.y(), v.force.z()}, {v.moment.x(), v.moment.y(), v.moment.z()},
+                        v.contacts};
+      write_records(group, name, &row, 1);
+    } else {
+      write_records(group, name, &v, 1);
+    }
+  }
+};
+
+// Reads back what FieldWriter wrote
+struct FieldReader {
+  const H5::Group& group;
+  const std::string& path;
+  template <typename T>
+  void operator()(const char* name, T& v) const {
+    if constexpr (IsVector<T>::value) {
+      v = read_records<typename T::value_type>(group, name, path);
+    } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
+      const std::vector<double> x = read_records<double>(group, name, path);
+      if (x.size() != 3) throw InputError(fmt::format("{}: checkpoint record {} is not a vector of 3", path, name));
+      v = Eigen::Vector3d(x[0], x[1], x[2]);
+    } else if constexpr (std::is_same_v<T, LoadReading>) {
+      const LoadRow row = read_record<LoadRow>(group, name, path);
+      v.force = Eigen::Vector3d(row.force[0], row.force[1], row.force[2]);
+      v.moment = Eigen::Vector3d(row.moment[0], row.moment[1], row.moment[2]);
+      v.contacts = row.contacts;
+    } else {
+      v = read_record<T>(group, name, path);
+    }
+  }
+};
+
 // a manifold's row in the checkpoint: its bodies and where its points are
 struct ManifoldRow {
   int body0, body1;
   int first, count;
 };
 
-// the LoadReading's numbers and the structure's motion (Eigen's vectors are not plain data)
-struct LoadRow {
-  double force[3], moment[3];
-  int contacts;
-};
-struct MotionRow {
-  double position[3], velocity[3];
-};
-
-void write_group(H5::H5File& file, const Checkpoint& c) {
-  const H5::Group g = file.createGroup(kGroup);
-  write_attr(g, "version", c.version);
-  write_attr(g, "time", c.time);
-  write_attr(g, "step", static_cast<double>(c.step));
-  write_attr(g, "first_contact_time",
-             c.first_contact_time ? *c.first_contact_time : std::numeric_limits<double>::quiet_NaN());
-  write_attr(g, "awake_floes", c.awake_floes);
-  write_attr(g, "contact_points", c.contact_points);
-  write_attr(g, "awake_sum", c.history.awake_sum);
-  write_records(g, "breaks_by_mode", c.breaks_by_mode.data(), c.breaks_by_mode.size());
-  write_records(g, "breaks_by_mechanism", c.breaks_by_mechanism.data(), c.breaks_by_mechanism.size());
-  write_records(g, "floe_margins", c.floe_margins);
-  write_records(g, "filtered_joint_loads", c.filtered_joint_loads);
-  const LoadRow load{{c.load.force.x(), c.load.force.y(), c.load.force.z()},
-                     {c.load.moment.x(), c.load.moment.y(), c.load.moment.z()},
-                     c.load.contacts};
-  write_records(g, "load", &load, 1);
-  const MotionRow motion{{c.structure_position.x(), c.structure_position.y(), c.structure_position.z()},
-                         {c.structure_velocity.x(), c.structure_velocity.y(), c.structure_velocity.z()}};
-  write_records(g, "structure_motion", &motion, 1);
-  write_records(g, "diagnostics", &c.diagnostics, 1);
-  write_records(g, "stage_times", &c.stage_times, 1);
-  // the world
-  write_records(g, "bodies", c.world.bodies);
-  write_records(g, "lattice_replaced", c.world.lattice_replaced);
-  write_records(g, "joint_broken", c.world.joint_broken);
-  write_records(g, "floe_splits", c.world.splits);
+void write_world(const H5::Group& g, const WorldState& world) {
+  write_records(g, "bodies", world.bodies);
+  write_records(g, "lattice_replaced", world.lattice_replaced);
+  write_records(g, "joint_broken", world.joint_broken);
+  write_records(g, "floe_splits", world.splits);
   std::vector<ManifoldRow> rows;
   std::vector<btManifoldPoint> points;
   std::vector<int> has_memory;
   std::vector<btVector3> memory;
-  for (const ManifoldState& m : c.world.manifolds) {
+  for (const ManifoldState& m : world.manifolds) {
     rows.push_back({m.body0, m.body1, static_cast<int>(points.size()), static_cast<int>(m.points.size())});
     points.insert(points.end(), m.points.begin(), m.points.end());
     has_memory.insert(has_memory.end(), m.has_friction_memory.begin(), m.has_friction_memory.end());
@@ -130,52 +142,14 @@ void write_group(H5::H5File& file, const Checkpoint& c) {
   write_records(g, "contact_points", points);
   write_records(g, "friction_remembered", has_memory);
   write_records(g, "friction_memory", memory);
-  // the run loop's history
-  write_records(g, "history_time", c.history.time);
-  write_records(g, "history_surge", c.history.surge);
-  write_records(g, "history_heave", c.history.heave);
-  write_records(g, "history_sway", c.history.sway);
-  write_records(g, "history_diagnostics", c.history.diagnostics);
-  write_records(g, "history_health", &c.history.health, 1);
 }
 
-Checkpoint read_group(const H5::H5File& file, const std::string& path) {
-  if (!file.nameExists(kGroup)) throw InputError(fmt::format("{}: not a checkpoint (no {} group)", path, kGroup));
-  const H5::Group g = file.openGroup(kGroup);
-  Checkpoint c;
-  c.version = read_string(g, "version");
-  if (c.version != ICEDEM_VERSION)
-    throw InputError(fmt::format("{}: a checkpoint of icedem {}, this is {}: resume it with that version", path,
-                                 c.version, ICEDEM_VERSION));
-  c.time = read_double(g, "time");
-  c.step = std::lround(read_double(g, "step"));
-  const double first = read_double(g, "first_contact_time");
-  if (!std::isnan(first)) c.first_contact_time = first;
-  c.awake_floes = static_cast<int>(read_double(g, "awake_floes"));
-  c.contact_points = static_cast<int>(read_double(g, "contact_points"));
-  c.history.awake_sum = read_double(g, "awake_sum");
-  const std::vector<int> modes = read_records<int>(g, "breaks_by_mode", path);
-  const std::vector<int> mechanisms = read_records<int>(g, "breaks_by_mechanism", path);
-  if (modes.size() != c.breaks_by_mode.size() || mechanisms.size() != c.breaks_by_mechanism.size())
-    throw InputError(fmt::format("{}: the checkpoint counts other failure modes: another build of icedem", path));
-  std::copy(modes.begin(), modes.end(), c.breaks_by_mode.begin());
-  std::copy(mechanisms.begin(), mechanisms.end(), c.breaks_by_mechanism.begin());
-  c.floe_margins = read_records<FloeFailureMargin>(g, "floe_margins", path);
-  c.filtered_joint_loads = read_records<JointLoads>(g, "filtered_joint_loads", path);
-  const LoadRow load = read_record<LoadRow>(g, "load", path);
-  c.load.force = Eigen::Vector3d(load.force[0], load.force[1], load.force[2]);
-  c.load.moment = Eigen::Vector3d(load.moment[0], load.moment[1], load.moment[2]);
-  c.load.contacts = load.contacts;
-  const MotionRow motion = read_record<MotionRow>(g, "structure_motion", path);
-  c.structure_position = Eigen::Vector3d(motion.position[0], motion.position[1], motion.position[2]);
-  c.structure_velocity = Eigen::Vector3d(motion.velocity[0], motion.velocity[1], motion.velocity[2]);
-  c.diagnostics = read_record<StepDiagnostics>(g, "diagnostics", path);
-  c.stage_times = read_record<StageTimes>(g, "stage_times", path);
-  c.world.bodies = read_records<BodyState>(g, "bodies", path);
-  c.world.lattice_replaced = read_records<uint8_t>(g, "lattice_replaced", path);
-  c.world.joint_broken = read_records<uint8_t>(g, "joint_broken", path);
-  if (H5Lexists(g.getId(), "floe_splits", H5P_DEFAULT) > 0)  // written since floes split (fracture.mode "analytic")
-    c.world.splits = read_records<FloeSplit>(g, "floe_splits", path);
+WorldState read_world(const H5::Group& g, const std::string& path) {
+  WorldState world;
+  world.bodies = read_records<BodyState>(g, "bodies", path);
+  world.lattice_replaced = read_records<uint8_t>(g, "lattice_replaced", path);
+  world.joint_broken = read_records<uint8_t>(g, "joint_broken", path);
+  world.splits = read_records<FloeSplit>(g, "floe_splits", path);
   const std::vector<ManifoldRow> rows = read_records<ManifoldRow>(g, "manifolds", path);
   const std::vector<btManifoldPoint> points = read_records<btManifoldPoint>(g, "contact_points", path);
   const std::vector<int> has_memory = read_records<int>(g, "friction_remembered", path);
@@ -190,14 +164,33 @@ Checkpoint read_group(const H5::H5File& file, const std::string& path) {
     m.points.assign(points.begin() + r.first, points.begin() + r.first + r.count);
     m.has_friction_memory.assign(has_memory.begin() + r.first, has_memory.begin() + r.first + r.count);
     m.friction_memory.assign(memory.begin() + r.first, memory.begin() + r.first + r.count);
-    c.world.manifolds.push_back(std::move(m));
+    world.manifolds.push_back(std::move(m));
   }
-  c.history.time = read_records<double>(g, "history_time", path);
-  c.history.surge = read_records<double>(g, "history_surge", path);
-  c.history.heave = read_records<double>(g, "history_heave", path);
-  c.history.sway = read_records<double>(g, "history_sway", path);
-  c.history.diagnostics = read_records<StepDiagnostics>(g, "history_diagnostics", path);
-  c.history.health = read_record<DiagnosticExtremes>(g, "history_health", path);
+  return world;
+}
+
+void write_group(H5::H5File& file, const Checkpoint& c) {
+  const H5::Group g = file.createGroup(kGroup);
+  write_attr(g, "version", c.version);
+  visit_fields(c.values, FieldWriter{g.createGroup("state")});
+  visit_fields(c.history, FieldWriter{g.createGroup("history")});
+  write_world(g.createGroup("world"), c.world);
+}
+
+Checkpoint read_group(const H5::H5File& file, const std::string& path) {
+  if (!file.nameExists(kGroup)) throw InputError(fmt::format("{}: not a checkpoint (no {} group)", path, kGroup));
+  const H5::Group g = file.openGroup(kGroup);
+  Checkpoint c;
+  c.version = read_string(g, "version");
+  if (c.version != ICEDEM_VERSION)
+    throw InputError(fmt::format("{}: a checkpoint of icedem {}, this is {}: resume it with that version", path,
+                                 c.version, ICEDEM_VERSION));
+  if (!g.nameExists("state"))
+    throw InputError(fmt::format("{}: a checkpoint laid out by an earlier build of icedem {}: resume it with that "
+                                 "build", path, c.version));
+  visit_fields(c.values, FieldReader{g.openGroup("state"), path});
+  visit_fields(c.history, FieldReader{g.openGroup("history"), path});
+  c.world = read_world(g.openGroup("world"), path);
   return c;
 }
 
@@ -214,25 +207,7 @@ void sync_file(const std::string& path) {
 std::string checkpoint_path(const std::string& output) { return output + ".checkpoint"; }
 
 Checkpoint take_checkpoint(const State& state, const RunHistory& history) {
-  Checkpoint c;
-  c.version = ICEDEM_VERSION;
-  c.time = state.time;
-  c.step = state.step;
-  c.first_contact_time = state.first_contact_time;
-  c.breaks_by_mode = state.breaks_by_mode;
-  c.breaks_by_mechanism = state.breaks_by_mechanism;
-  c.floe_margins = state.floe_margins;
-  c.filtered_joint_loads = state.filtered_joint_loads;
-  c.load = state.load;
-  c.diagnostics = state.diagnostics;
-  c.awake_floes = state.awake_floes;
-  c.contact_points = state.contact_points;
-  c.structure_position = state.structure_position;
-  c.structure_velocity = state.structure_velocity;
-  c.stage_times = state.stage_times;
-  c.world = capture_world(*state.world);
-  c.history = history;
-  return c;
+  return Checkpoint{ICEDEM_VERSION, state, capture_world(*state.world), history};
 }
 
 void write_checkpoint(const std::string& output, const Checkpoint& checkpoint) {
@@ -305,20 +280,7 @@ void remove_checkpoint_group(const std::string& path) {
 
 void restore_state(const Checkpoint& c, State& state) {
   restore_world(*state.world, c.world);
-  state.time = c.time;
-  state.step = c.step;
-  state.first_contact_time = c.first_contact_time;
-  state.breaks_by_mode = c.breaks_by_mode;
-  state.breaks_by_mechanism = c.breaks_by_mechanism;
-  state.floe_margins = c.floe_margins;
-  state.filtered_joint_loads = c.filtered_joint_loads;
-  state.load = c.load;
-  state.diagnostics = c.diagnostics;
-  state.awake_floes = c.awake_floes;
-  state.contact_points = c.contact_points;
-  state.stage_times = c.stage_times;
-  state.structure_position = c.structure_position;
-  state.structure_velocity = c.structure_velocity;
+  static_cast<StateValues&>(state) = c.values;
   state.flow->set_structure(state.structure_position, state.structure_velocity);
 }
 

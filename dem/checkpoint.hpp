@@ -3,9 +3,11 @@
 // most one checkpoint interval (output.checkpoint_interval) and `icedem resume` continues it.
 //
 // The checkpoint file, OUT.h5.checkpoint, is a copy of the run's output as it stood at the
-// checkpoint (so a torn output file costs nothing) with one group more, /checkpoint: the State
-// (the world's state of dem/world_state.hpp, the run's clock and what its stages accumulate) and
-// what the run loop keeps for the statistics at the end (RunHistory). It is written to a
+// checkpoint (so a torn output file costs nothing) with one group more, /checkpoint: the State's
+// values (/checkpoint/state, a dataset per field of StateValues, dem/state.hpp), the world's state
+// (/checkpoint/world, dem/world_state.hpp) and what the run loop keeps for the statistics at the
+// end (/checkpoint/history, RunHistory). The values and the history are written and read through
+// their one list of fields (visit_fields), so a field added to them cannot be left out. It is written to a
 // temporary file and renamed over the last one, so a kill during the write leaves the previous
 // checkpoint whole. Its records are kept as this build lays them out in memory (bit-exact); a
 // checkpoint is read back only by the version of icedem that wrote it (/checkpoint records it).
@@ -17,6 +19,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "dem/diagnostics.hpp"
@@ -33,24 +36,24 @@ struct RunHistory {
   DiagnosticExtremes health;                     // extremes of the diagnostics
 };
 
+/// Calls `visit(name, field)` for every field of a RunHistory (as visit_fields of StateValues).
+template <typename History, typename Visit>  // History: RunHistory or const RunHistory
+std::enable_if_t<std::is_same_v<std::remove_const_t<History>, RunHistory>> visit_fields(History& h, Visit&& visit) {
+  visit("time", h.time);
+  visit("surge", h.surge);
+  visit("heave", h.heave);
+  visit("sway", h.sway);
+  visit("diagnostics", h.diagnostics);
+  visit("awake_sum", h.awake_sum);
+  visit("health", h.health);
+}
+
 /// A run's state between two steps.
 struct Checkpoint {
   std::string version;  // icedem's version that wrote it (ICEDEM_VERSION)
-  // the State's clock and what its stages accumulate (dem/state.hpp)
-  double time = 0;
-  long step = 0;
-  std::optional<double> first_contact_time;
-  std::array<int, kFailureModes> breaks_by_mode{};
-  std::array<int, kBreakMechanisms> breaks_by_mechanism{};
-  std::vector<FloeFailureMargin> floe_margins;
-  std::vector<JointLoads> filtered_joint_loads;
-  LoadReading load;
-  StepDiagnostics diagnostics;
-  int awake_floes = 0, contact_points = 0;
-  Eigen::Vector3d structure_position = Eigen::Vector3d::Zero(), structure_velocity = Eigen::Vector3d::Zero();
-  StageTimes stage_times;
-  WorldState world;
-  RunHistory history;
+  StateValues values;   // the State's values, whole (dem/state.hpp)
+  WorldState world;     // the world's bodies, lattices and contact points
+  RunHistory history;   // the run loop's
 };
 
 /// The checkpoint file of the output file `output`.
@@ -84,8 +87,8 @@ struct OutputMeta {
 /// Reads /meta of `path`. Throws InputError naming the file if it is not an icedem output.
 OutputMeta read_output_meta(const std::string& path);
 
-/// Puts the checkpoint's clock and accumulated quantities into `state`, a state the scene's
-/// initial_state() just built, and rebuilds its world from the checkpoint's (restore_world).
+/// Puts the checkpoint's values into `state`, a state the scene's initial_state() just built,
+/// and rebuilds its world from the checkpoint's (restore_world).
 void restore_state(const Checkpoint& checkpoint, State& state);
 
 }  // namespace icedem

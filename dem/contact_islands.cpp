@@ -3,7 +3,6 @@
 #include <BulletCollision/BroadphaseCollision/btDispatcher.h>
 #include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
-#include <LinearMath/btAlignedAllocator.h>
 
 namespace icedem {
 
@@ -28,21 +27,6 @@ void ContactIslandManager::updateActivationState(btCollisionWorld* world, btDisp
     if (a->mergesSimulationIslands() && b->mergesSimulationIslands())
       getUnionFind().unite(a->getIslandTag(), b->getIslandTag());
   }
-}
-
-void DynamicsWorld::replace_island_manager(btSimulationIslandManager* manager) {
-  if (m_ownsIslandManager) {
-    // Bullet allocated its own with btAlignedAlloc + placement new
-    m_islandManager->~btSimulationIslandManager();
-    btAlignedFree(m_islandManager);
-  }
-  m_islandManager = manager;
-  m_ownsIslandManager = false;
-}
-
-void DynamicsWorld::solveConstraints(btContactSolverInfo& info) {
-  if (pre_solve_) pre_solve_();
-  btDiscreteDynamicsWorld::solveConstraints(info);
 }
 
 }  // namespace icedem

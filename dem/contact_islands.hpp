@@ -15,10 +15,7 @@
 // manifolds from the islands (dem/world.cpp).
 #pragma once
 
-#include <functional>
-
 #include <BulletCollision/CollisionDispatch/btSimulationIslandManager.h>
-#include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 
 namespace icedem {
 
@@ -27,22 +24,6 @@ class ContactIslandManager : public btSimulationIslandManager {
   /// Tag bodies and unite those joined by a manifold with contact points
   /// (replaces Bullet's union over broadphase pairs).
   void updateActivationState(btCollisionWorld* world, btDispatcher* dispatcher) override;
-};
-
-/// A btDiscreteDynamicsWorld whose island manager can be replaced (Bullet keeps
-/// it in a protected member with no setter), with a hook that runs after
-/// collision detection and before the constraint solve of every Bullet step.
-class DynamicsWorld : public btDiscreteDynamicsWorld {
- public:
-  using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
-  /// Use `manager` (not owned; must outlive the world) instead of the built-in one.
-  void replace_island_manager(btSimulationIslandManager* manager);
-  /// Run `hook` before each solve: contacts are fresh, velocities not yet solved.
-  void set_pre_solve_hook(std::function<void()> hook) { pre_solve_ = std::move(hook); }
-  void solveConstraints(btContactSolverInfo& info) override;
-
- private:
-  std::function<void()> pre_solve_;
 };
 
 }  // namespace icedem

@@ -30,8 +30,7 @@ class ProblemExport : public ProblemObserver {
   /// Throws InputError if the directory cannot be made.
   ProblemExport(ProblemExportSettings settings, std::string source);
 
-  /// Called before each Bullet step with the time it ends at and its length.
-  void begin_step(long step, double t_end, double h);
+  void begin_step(long step, double t_end, double h) override;
 
   bool wants_problems() const override;
   void solved(const ContactProblem& problem, const SolverAnswer& answer) override;

@@ -67,6 +67,8 @@ namespace icedem {
 class ProblemObserver {
  public:
   virtual ~ProblemObserver() = default;
+  /// Called before each Bullet step's solve with the step's index, the time it ends at and its length.
+  virtual void begin_step(long /*step*/, double /*t_end*/, double /*h*/) {}
   /// Whether to capture the islands of the Bullet step being solved.
   virtual bool wants_problems() const = 0;
   /// An island's problem as it stood before the sweeps, and what the sweeps made of it.
@@ -129,6 +131,11 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
 
   /// Let `observer` (not owned; null: none) see the problems of the steps it wants.
   void set_observer(ProblemObserver* observer) { observer_ = observer; }
+
+  /// Tells the observer, if any, of the Bullet step about to be solved (ProblemObserver::begin_step).
+  void begin_step(long step, double t_end, double h) {
+    if (observer_) observer_->begin_step(step, t_end, h);
+  }
 
   /// The friction impulse on body A the solver remembers for `point` from the last step
   /// (solver.friction_warm_start), or null if it remembers none.

@@ -270,9 +270,11 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   // a new run: a checkpoint left by an earlier run of this output is not its
   std::error_code no_checkpoint;
   if (!options.resume) std::filesystem::remove(checkpoint_path(options.output), no_checkpoint);
+  // the contact problems of chosen steps, written to files (runs that export do not checkpoint)
+  std::unique_ptr<ProblemExport> problems;
   if (!options.problems.directory.empty()) {
-    state.problem_export = std::make_unique<ProblemExport>(options.problems, scene.source_path);
-    state.world->set_problem_observer(state.problem_export.get());
+    problems = std::make_unique<ProblemExport>(options.problems, scene.source_path);
+    state.world->set_problem_observer(problems.get());
   }
   summary.floes = static_cast<int>(layout.floes.size());
   for (const std::string& w : layout_warnings(scene, layout)) summary.warnings.push_back(w);
@@ -417,7 +419,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   compute_statistics(scene, history, summary);
   summary.solver = solver_summary(scene, history, summary);
   boundary_summary(history, summary);
-  if (state.problem_export) summary.problem_files = state.problem_export->files();
+  if (problems) summary.problem_files = problems->files();
   if (validation) summary.validation = validation->result(scene).to_json();
   summary.wall_time_s = wall();
   summary.cpu_time_s = process_cpu_time();

@@ -1,21 +1,27 @@
 // The State: everything that changes during a run (the Scene does not).
+//
+// It is declared once. StateValues holds every value the stages change from step to step;
+// a checkpoint (dem/checkpoint.hpp) copies it whole and writes and reads it field by field
+// through visit_fields(), and a test fails when a field is declared here but not listed there. The world's bodies, lattices and contact points
+// are kept by dem/world_state.hpp, which a checkpoint takes the same way. Outputs (the recorder,
+// the contact problems a run exports) belong to the run loop, not to the State.
 #pragma once
 
 #include <array>
 #include <memory>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "dem/break_context.hpp"
-#include "dem/contact_problem_export.hpp"
 #include "dem/diagnostics.hpp"
 #include "dem/drag_exchange.hpp"
 #include "dem/flow_field.hpp"
 #include "dem/joint_loads.hpp"
 #include "dem/load_cell.hpp"
-#include "dem/recorder.hpp"
+#include "dem/output_rows.hpp"
 #include "dem/world.hpp"
 
 namespace icedem {
@@ -24,42 +30,75 @@ namespace icedem {
 struct StageTimes {
   double structure = 0;   // move_structure
   double water = 0;       // apply_water_forces
-  double bullet = 0;      // collide, solve, integrate (Bullet)
+  double collision = 0;   // Bullet's collision detection: predicted motion, broadphase, contact points
+  double islands = 0;     // islands of touching bodies, frozen floes struck released
+  double solve = 0;       // the contact solve of every island (dem/contact_solver.hpp)
+  double integrate = 0;   // positions, sleeping, Bullet's forces cleared
   double load_cell = 0;   // read_load_cell
   double activation = 0;  // update_activation
   double health = 0;      // check_health
   double fracture = 0;    // check_fracture
   double coupling = 0;    // exchange_drag (coupling.mode = "probe")
+
+  /// Bullet's step as a whole: collision, islands, solve and integration.
+  double bullet() const { return collision + islands + solve + integrate; }
 };
 
-struct State {
-  std::unique_ptr<World> world;     // Bullet bodies; poses and velocities change every step
-  std::unique_ptr<FlowField> flow;  // water velocity model; follows the structure
-  std::unique_ptr<DragExchange> drag_exchange;  // exchanged drag (probe mode), else null
-  std::unique_ptr<ProblemExport> problem_export;  // writes chosen steps' contact problems, else null
-
+/// Every value of a run that its stages change, but the world's bodies.
+struct StateValues {
   double time = 0.0;  // s, simulated; written by step()
   long step = 0;      // completed steps; written by step()
 
   Eigen::Vector3d structure_position = Eigen::Vector3d::Zero();  // m, axis at the waterline
   Eigen::Vector3d structure_velocity = Eigen::Vector3d::Zero();  // m/s
 
-  LoadReading load;    // ice load of the last step; written by read_load_cell
+  LoadReading load;  // ice load of the last step; written by read_load_cell
 
-  int awake_floes = 0;     // floes simulated in the last step
-  int contact_points = 0;  // contact points in the world after the last step
-  StepDiagnostics diagnostics;   // health of the last step (speeds, energy, mass, gaps); check_health
+  int awake_floes = 0;          // floes simulated in the last step
+  int contact_points = 0;       // contact points in the world after the last step
+  StepDiagnostics diagnostics;  // health of the last step (speeds, energy, mass, gaps); check_health
 
   std::optional<double> first_contact_time;  // s, first step with ice on the structure
 
   std::vector<FractureEvent> fracture_events;  // breaks of the last step; written by check_fracture
-  std::array<int, kFailureModes> breaks_by_mode{};           // all breaks so far, by FailureMode value
-  std::array<int, kBreakMechanisms> breaks_by_mechanism{};   // all breaks so far, by BreakMechanism value
-  std::vector<FloeFailureMargin> floe_margins;  // per layout floe with joints: how close they came to failing
+  std::array<int, kFailureModes> breaks_by_mode{};          // all breaks so far, by FailureMode value
+  std::array<int, kBreakMechanisms> breaks_by_mechanism{};  // all breaks so far, by BreakMechanism value
+  std::vector<FloeFailureMargin> floe_margins;   // per layout floe with joints: how close they came to failing
   std::vector<JointLoads> filtered_joint_loads;  // low-passed loads per World::joints() entry
                                                  // (fracture.load_filter_time > 0)
 
   StageTimes stage_times;  // written by step()
+};
+
+/// Calls `visit(name, field)` for every field of `v` in declaration order: the one list by which
+/// a checkpoint writes and reads the values (dem/checkpoint.cpp). A field added to StateValues
+/// and not here fails tests/unit/test_state_fields.cpp (field_count, dem/field_count.hpp).
+template <typename Values, typename Visit>  // Values: StateValues or const StateValues
+std::enable_if_t<std::is_same_v<std::remove_const_t<Values>, StateValues>> visit_fields(Values& v, Visit&& visit) {
+  visit("time", v.time);
+  visit("step", v.step);
+  visit("structure_position", v.structure_position);
+  visit("structure_velocity", v.structure_velocity);
+  visit("load", v.load);
+  visit("awake_floes", v.awake_floes);
+  visit("contact_points", v.contact_points);
+  visit("diagnostics", v.diagnostics);
+  visit("first_contact_time", v.first_contact_time);
+  visit("fracture_events", v.fracture_events);
+  visit("breaks_by_mode", v.breaks_by_mode);
+  visit("breaks_by_mechanism", v.breaks_by_mechanism);
+  visit("floe_margins", v.floe_margins);
+  visit("filtered_joint_loads", v.filtered_joint_loads);
+  visit("stage_times", v.stage_times);
+}
+
+/// The values with the objects that hold the rest of what changes: the Bullet world (poses and
+/// velocities change every step), the water's velocity model (it follows the structure) and
+/// the drag an OpenFOAM partner exchanges (coupling.mode = "probe"), else null.
+struct State : StateValues {
+  std::unique_ptr<World> world;
+  std::unique_ptr<FlowField> flow;
+  std::unique_ptr<DragExchange> drag_exchange;
 };
 
 }  // namespace icedem

@@ -72,9 +72,6 @@ void apply_water_forces(const Scene& scene, State& state) {
 
 namespace {
 
-// Bullet: collide, solve contacts with PGS, integrate (one internal step of h)
-void advance_bullet(State& state, double h) { state.world->dynamics().stepSimulation(h, 0); }
-
 // +1 when the structure travels along +x, -1 along -x
 double travel(const Scene& scene) { return scene.structure.speed < 0 ? -1.0 : 1.0; }
 
@@ -127,8 +124,16 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
     { StageTimer t(times.structure); move_structure(scene, state, t_next); }
     { StageTimer t(times.water); apply_water_forces(scene, state); }
     if (loads) loads->apply(*state.world);
-    if (state.problem_export) state.problem_export->begin_step(state.step, t_next, h);
-    { StageTimer t(times.bullet); advance_bullet(state, h); }
+    // Bullet's step of h, stage by stage (dem/dynamics_world.hpp)
+    DynamicsWorld& bullet = state.world->dynamics();
+    { StageTimer t(times.collision); bullet.detect_collisions(h); }
+    { StageTimer t(times.islands); bullet.find_islands(); }
+    {
+      StageTimer t(times.solve);
+      state.world->contact_solver().begin_step(state.step, t_next, h);
+      bullet.solve_contacts(h);
+    }
+    { StageTimer t(times.integrate); bullet.integrate(h); }
     { StageTimer t(times.load_cell); read_load_cell(scene, state, cell, boundary); }
     state.time = t_next;
     { StageTimer t(times.fracture); check_fracture(scene, state, h); }
@@ -144,6 +149,11 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   { StageTimer t(times.health); state.diagnostics = check_health(scene, state); }
   record_solver_report(state.world->solver_report(), state.diagnostics);
   record_boundary_load(scene, boundary_load, state.load, state.diagnostics);
+}
+
+void advance(const Scene& scene, State& state, StepCase* attached) {
+  step(scene, state, attached ? &attached->loads() : nullptr);
+  if (attached) attached->after_step(scene, state);
 }
 
 }  // namespace icedem

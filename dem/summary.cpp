@@ -68,10 +68,11 @@ std::string summary_table(const RunSummary& s) {
                      s.floes, 100 * s.achieved_concentration, s.steps, s.sim_time_s, s.wall_time_s, rtf,
                      s.wall_time_s > 0 ? s.steps / s.wall_time_s : 0.0, s.mean_awake);
   const StageTimes& t = s.stage_times;
-  out += fmt::format("  wall time by stage: Bullet {:.1f} s, water {:.1f} s, activation {:.1f} s, load cell {:.1f} s, "
-                     "{}other {:.1f} s\n", t.bullet, t.water, t.activation, t.load_cell,
-                     t.coupling > 0 ? fmt::format("OpenFOAM exchanges {:.1f} s, ", t.coupling) : "",
-                     s.wall_time_s - t.bullet - t.water - t.activation - t.load_cell - t.coupling);
+  out += fmt::format("  wall time by stage: contact solve {:.1f} s, collision {:.1f} s, islands {:.1f} s, "
+                     "integration {:.1f} s, water {:.1f} s, activation {:.1f} s, load cell {:.1f} s, "
+                     "{}other {:.1f} s\n", t.solve, t.collision, t.islands, t.integrate, t.water, t.activation,
+                     t.load_cell, t.coupling > 0 ? fmt::format("OpenFOAM exchanges {:.1f} s, ", t.coupling) : "",
+                     s.wall_time_s - t.bullet() - t.water - t.activation - t.load_cell - t.coupling);
   if (!s.validation.is_null()) {
     const nlohmann::json& v = s.validation;
     // a case without a result (the beam did not break) has null value and error, and a note
@@ -247,12 +248,15 @@ const std::vector<SummaryField>& summary_fields() {
          return json{{"share_of_surge", s.boundary_share}, {"locked_window_fraction", s.locked_window_fraction}};
        }},
       {"stage_time_s", "s", false, false,
-       "wall time per stage of the step: structure, water, bullet, load_cell, activation, health, fracture, coupling",
+       "wall time per stage of the step: structure, water, collision, islands, solve (the contact solve), "
+       "integrate, load_cell, activation, health, fracture, coupling; bullet is the sum of collision, islands, "
+       "solve and integrate (Bullet's step as a whole)",
        [](S s) {
          const StageTimes& t = s.stage_times;
-         return json{{"structure", t.structure}, {"water", t.water},           {"bullet", t.bullet},
-                     {"load_cell", t.load_cell}, {"activation", t.activation}, {"health", t.health},
-                     {"fracture", t.fracture},   {"coupling", t.coupling}};
+         return json{{"structure", t.structure}, {"water", t.water},         {"collision", t.collision},
+                     {"islands", t.islands},     {"solve", t.solve},         {"integrate", t.integrate},
+                     {"bullet", t.bullet()},     {"load_cell", t.load_cell}, {"activation", t.activation},
+                     {"health", t.health},       {"fracture", t.fracture},   {"coupling", t.coupling}};
        }},
       {"validation", "", false, true,
        "validation cases only: case, metric, value, reference, rel_error, tolerance, passed and the case's own "

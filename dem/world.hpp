@@ -28,6 +28,7 @@
 
 #include "dem/bullet_eigen.hpp"
 #include "dem/contact_islands.hpp"
+#include "dem/dynamics_world.hpp"
 #include "dem/contact_solver.hpp"
 #include "dem/floe_shape.hpp"
 #include "dem/scene.hpp"

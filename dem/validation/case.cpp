@@ -1,4 +1,4 @@
-// Validation cases: the result block, the factory, advance() and a case run to its end
+// Validation cases: the result block, the factory and a case run to its end
 // (dem/validation/case.hpp).
 #include "dem/validation/case.hpp"
 
@@ -33,11 +33,6 @@ std::unique_ptr<ValidationCase> make_validation_case(const Scene& scene, State& 
       return std::make_unique<CantileverInAir>(scene, state);
   }
   return nullptr;
-}
-
-void advance(const Scene& scene, State& state, ValidationCase* validation) {
-  step(scene, state, validation ? &validation->loads() : nullptr);
-  if (validation) validation->after_step(scene, state);
 }
 
 ValidationResult run_validation_case(const Scene& scene) {

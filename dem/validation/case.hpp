@@ -2,7 +2,8 @@
 // case sets up its loads on the initial state, applies them in the step's point-load stage,
 // measures after every step, and ends with a typed result, which the summary carries as its
 // `validation` block. One file per case: plate_deflection, cantilever_in_air,
-// floating_cantilever. advance() is the one step of every run, with its case or without.
+// floating_cantilever. advance() (dem/step.hpp) is the one step of every run, with its case or
+// without.
 #pragma once
 
 #include <memory>
@@ -11,9 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "dem/point_loads.hpp"
 #include "dem/scene.hpp"
 #include "dem/state.hpp"
+#include "dem/step.hpp"
 
 namespace icedem {
 
@@ -34,26 +35,15 @@ struct ValidationResult {
   nlohmann::json to_json() const;
 };
 
-/// One validation case.
-class ValidationCase {
+/// One validation case: a case attached to the steps (dem/step.hpp) with a result.
+class ValidationCase : public StepCase {
  public:
-  virtual ~ValidationCase() = default;
-  /// The forces the case prescribes for the coming step.
-  const PointLoads& loads() const { return loads_; }
-  /// Measures after a step, and sets the loads of the next.
-  virtual void after_step(const Scene& scene, State& state) = 0;
   /// The result at the end of the run.
   virtual ValidationResult result(const Scene& scene) const = 0;
-
- protected:
-  PointLoads loads_;
 };
 
 /// The case of scene.validation.kind, set up on the initial state (nullptr for "none").
 std::unique_ptr<ValidationCase> make_validation_case(const Scene& scene, State& state);
-
-/// One step of a run: step() with the case's point loads, then the case's measurement.
-void advance(const Scene& scene, State& state, ValidationCase* validation);
 
 /// A validation scene run to its end without output: its case's result (calibration, tests).
 ValidationResult run_validation_case(const Scene& scene);
