@@ -12,7 +12,7 @@
 //   icedem foam-case SCENARIO.toml -o DIR       a runnable OpenFOAM case (DIR/Allrun)
 //   icedem foam-solve SCENARIO.toml             solve it into the cache (flow.model = "coupled")
 //   icedem flow SCENARIO.toml -o OUT.csv        the flow model's water velocity at sample points
-// Exit codes (dem/errors.hpp): 0 success, 2 bad input, 3 numerical failure, 4 OpenFOAM coupling
+// Exit codes (dem/core/errors.hpp): 0 success, 2 bad input, 3 numerical failure, 4 OpenFOAM coupling
 // failure, 5 output not written (disk full), 130 interrupted by SIGINT, 143 by SIGTERM, 1 other.
 #include <csignal>
 #include <filesystem>
@@ -28,20 +28,20 @@
 #include "coupling/coupled_flow.hpp"
 #include "coupling/foam_case.hpp"
 #include "coupling/foam_runner.hpp"
-#include "dem/calibration.hpp"
-#include "dem/iso19906.hpp"
-#include "dem/checkpoint.hpp"
-#include "dem/cone_geometry.hpp"
-#include "dem/constants.hpp"
-#include "dem/errors.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/output_lock.hpp"
-#include "dem/output_schema.hpp"
-#include "dem/recorder.hpp"
-#include "dem/scenario.hpp"
-#include "dem/scene_builder.hpp"
-#include "dem/simulation.hpp"
-#include "dem/step_size_advice.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/core/errors.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/input/scene_builder.hpp"
+#include "dem/input/step_size_advice.hpp"
+#include "dem/output/checkpoint.hpp"
+#include "dem/output/lock.hpp"
+#include "dem/output/recorder.hpp"
+#include "dem/output/schema.hpp"
+#include "dem/run/simulation.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/validation/calibration.hpp"
+#include "dem/validation/iso19906.hpp"
+#include "dem/world/cone_geometry.hpp"
 
 using namespace icedem;
 
@@ -139,7 +139,7 @@ int run_command(const std::string& scenario_path, std::string output, const std:
   return exit_code(summary);
 }
 
-// Continue a killed or interrupted run from its checkpoint (dem/checkpoint.hpp): the output
+// Continue a killed or interrupted run from its checkpoint (dem/output/checkpoint.hpp): the output
 // becomes the checkpoint's copy of it, and the run appends to it from there.
 int resume_command(const std::string& output, const std::string& summary_path, bool quiet,
                    const std::string& command_line) {
@@ -190,7 +190,7 @@ int info_command(const std::string& output) {
                            meta.last_time);
   if (!meta.message.empty()) std::cout << "  " << meta.message << "\n";
   if (meta.status == "running") {
-    // a live run holds the file's lock (dem/output_lock.hpp): if we can take it, the writer died
+    // a live run holds the file's lock (dem/output/lock.hpp): if we can take it, the writer died
     bool alive = false;
     try {
       const OutputLock probe(output);
@@ -259,7 +259,7 @@ int cone_load_command(const std::string& scenario_path, const std::vector<std::s
                                     pile.friction_angle * 180.0 / M_PI, pile.cohesion, in.ice_friction)
                       : std::string("no rubble pile (--rubble-height)");
   std::cout << fmt::format(
-      "ISO 19906 (Croasdale and Cammaert) load of level ice on the {} slope, dem/iso19906.hpp:\n"
+      "ISO 19906 (Croasdale and Cammaert) load of level ice on the {} slope, dem/validation/iso19906.hpp:\n"
       "  inputs: D {:.3f} m, slope {:.1f} deg, ride height {:.3f} m, h {:.4f} m, sigma_f {:.0f} Pa, E {:.3g} Pa, "
       "nu {:.2f}, rho_i {:.0f}, rho_w {:.0f} kg/m^3, mu {:.2f}\n"
       "  {}\n"

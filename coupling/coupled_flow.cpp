@@ -4,8 +4,8 @@
 
 #include "coupling/foam_runner.hpp"
 #include "coupling/probe_exchange.hpp"
-#include "dem/errors.hpp"
-#include "dem/initial_state.hpp"
+#include "dem/core/errors.hpp"
+#include "dem/step/initial_state.hpp"
 
 namespace icedem {
 

@@ -5,9 +5,9 @@
 
 #include <memory>
 
-#include "dem/flow_coupling.hpp"
-#include "dem/flow_field.hpp"
-#include "dem/scene.hpp"
+#include "dem/input/scene.hpp"
+#include "dem/water/flow_coupling.hpp"
+#include "dem/water/flow_field.hpp"
 
 namespace icedem {
 
@@ -16,7 +16,7 @@ namespace icedem {
 std::unique_ptr<FlowField> make_coupled_flow(const Scene& scene);
 
 /// The OpenFOAM coupling for a run: make_coupled_flow and the probe-mode drag exchange
-/// (dem/flow_coupling.hpp).
+/// (dem/water/flow_coupling.hpp).
 FlowCoupling openfoam_coupling();
 
 }  // namespace icedem

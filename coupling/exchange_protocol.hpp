@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "dem/errors.hpp"
+#include "dem/core/errors.hpp"
 
 namespace icedem {
 

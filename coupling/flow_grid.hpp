@@ -18,7 +18,7 @@
 
 #include <Eigen/Core>
 
-#include "dem/flow_field.hpp"
+#include "dem/water/flow_field.hpp"
 
 namespace icedem {
 

@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "dem/cone_geometry.hpp"
+#include "dem/world/cone_geometry.hpp"
 
 namespace fs = std::filesystem;
 

@@ -6,14 +6,14 @@
 // the y axis and the water flows past it along -x (a tow along +x), in a box
 // of the tank's width and depth and coupling.domain_length, under a rigid lid
 // at the still-water line (y = 0). The hull's STL comes from the same profile
-// as the DEM's Bullet hull (dem/cone_geometry.hpp).
+// as the DEM's Bullet hull (dem/world/cone_geometry.hpp).
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "coupling/flow_grid.hpp"
-#include "dem/scene.hpp"
+#include "dem/input/scene.hpp"
 
 namespace icedem {
 

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "dem/errors.hpp"
+#include "dem/core/errors.hpp"
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 
 #include "coupling/flow_grid.hpp"
 #include "coupling/foam_case.hpp"
-#include "dem/scene.hpp"
+#include "dem/input/scene.hpp"
 
 namespace icedem {
 

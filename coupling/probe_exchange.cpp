@@ -16,10 +16,10 @@
 
 #include "coupling/foam_case.hpp"
 #include "coupling/foam_runner.hpp"
-#include "dem/constants.hpp"
-#include "dem/errors.hpp"
-#include "dem/polygon.hpp"
-#include "dem/state.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/core/errors.hpp"
+#include "dem/layout/polygon.hpp"
+#include "dem/step/state.hpp"
 
 extern char** environ;
 

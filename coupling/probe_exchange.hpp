@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "coupling/exchange_protocol.hpp"
-#include "dem/drag_exchange.hpp"
+#include "dem/water/drag_exchange.hpp"
 
 namespace icedem {
 

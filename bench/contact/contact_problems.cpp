@@ -1,4 +1,4 @@
-// contact_problems: tools on contact problem files (dem/contact_problem_file.hpp).
+// contact_problems: tools on contact problem files (dem/contact/problem_file.hpp).
 //
 //   contact_problems solve FILE... [--method M ...] [--tolerance T] [--max-iterations N] [--cold]
 //       solve each problem with each method; print iterations, merit and CPU time
@@ -11,7 +11,7 @@
 //       a tight one (newton to 1e-10, else apgd to 1e-9): the load on the structure (N) and
 //       the joints' forces (N) and moments (N m), impulses over the step
 //
-// The merit is natural_map_residual on the Delassus form (dem/contact_problem.hpp),
+// The merit is natural_map_residual on the Delassus form (dem/contact/problem.hpp),
 // the same for every method.
 #include <algorithm>
 #include <ctime>
@@ -24,11 +24,11 @@
 #include <H5Cpp.h>
 #include <fmt/format.h>
 
-#include "dem/contact_method.hpp"
-#include "dem/contact_problem_file.hpp"
-#include "dem/contact_siconos.hpp"
-#include "dem/errors.hpp"
-#include "dem/hdf5_io.hpp"
+#include "dem/contact/problem_file.hpp"
+#include "dem/contact/registry.hpp"
+#include "dem/contact/siconos.hpp"
+#include "dem/core/errors.hpp"
+#include "dem/core/hdf5_io.hpp"
 
 extern "C" {
 #include <fclib.h>
@@ -46,7 +46,9 @@ double cpu_seconds() {
 
 int solve_command(const std::vector<std::string>& files, std::vector<std::string> methods, double tolerance,
                   int max_iterations, bool cold) {
-  if (methods.empty()) methods = contact_method_names();
+  if (methods.empty())  // every method on a problem (the in-run sweeps are not one)
+    for (const ContactMethodEntry& e : contact_methods())
+      if (e.make) methods.push_back(e.name);
   std::cout << fmt::format("{:<40} {:>7} {:>6} {:<16} {:>7} {:>10} {:>9}\n", "problem", "contacts", "joints", "method",
                            "iters", "merit", "cpu ms");
   for (const std::string& path : files) {
@@ -276,6 +278,7 @@ int errors_command(const std::vector<std::string>& files, const std::string& met
 }  // namespace
 
 int main(int argc, char** argv) {
+  register_siconos_methods();
   CLI::App app{"contact_problems: reference solutions and solves of contact problem files"};
   app.require_subcommand(1);
   std::vector<std::string> files, methods;

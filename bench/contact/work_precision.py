@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Work-precision benchmark of the contact methods on a library of problem files.
 
-    bench/contact/work_precision.py DIR... [--methods pgs,newton,...] [--tolerances 1e-2,1e-4,1e-6]
+    bench/contact/work_precision.py DIR... [--methods pgs_square,newton,...] [--tolerances 1e-2,1e-4,1e-6]
         [--max-iterations N] [--timeout S] [--out PREFIX] [--tool build/bench/contact/contact_problems]
 
 For every method, tolerance and problem it runs `contact_problems solve` (one merit for
@@ -37,7 +37,7 @@ def solve(tool, path, method, tolerance, max_iterations, timeout):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("dirs", nargs="+")
-    p.add_argument("--methods", default="pgs,pgs_cone,newton,siconos_nsgs,siconos_nsn_ac")
+    p.add_argument("--methods", default="pgs_square,pgs_cone,newton,siconos_nsgs,siconos_nsn_ac")
     p.add_argument("--tolerances", default="1e-3,1e-6")
     p.add_argument("--max-iterations", type=int, default=1000)
     p.add_argument("--timeout", type=float, default=60.0)

@@ -6,16 +6,16 @@
 
 #include <cmath>
 
-#include "dem/flow_field.hpp"
-#include "dem/floe_layout.hpp"
-#include "dem/hydrostatics.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/joint_loads.hpp"
-#include "dem/load_cell.hpp"
-#include "dem/scenario.hpp"
-#include "dem/step.hpp"
-#include "dem/water_forces.hpp"
-#include "dem/world.hpp"
+#include "dem/fracture/joint_loads.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/layout/floe_layout.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
+#include "dem/water/flow_field.hpp"
+#include "dem/water/hydrostatics.hpp"
+#include "dem/water/water_forces.hpp"
+#include "dem/world/load_cell.hpp"
+#include "dem/world/world.hpp"
 
 using namespace icedem;
 

@@ -5,8 +5,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
-#include "dem/fracture.hpp"
-#include "dem/joint_loads.hpp"
+#include "dem/fracture/fracture.hpp"
+#include "dem/fracture/joint_loads.hpp"
 
 namespace icedem {
 
@@ -19,9 +19,9 @@ void Cantilever::clamp_root(State& state) {
 }
 
 void Cantilever::note_first_break(const State& state, double tip_load) {
-  if (broken_ || state.fracture_events.empty()) return;
+  if (broken_ || state.fracture.events.empty()) return;
   broken_ = true;
-  first_break_ = state.fracture_events.front();
+  first_break_ = state.fracture.events.front();
   load_at_break_ = tip_load;
 }
 

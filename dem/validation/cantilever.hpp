@@ -15,7 +15,7 @@
 
 #include <vector>
 
-#include "dem/output_rows.hpp"
+#include "dem/fracture/fracture_state.hpp"
 #include "dem/validation/case.hpp"
 
 namespace icedem {

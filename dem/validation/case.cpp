@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "dem/initial_state.hpp"
-#include "dem/step.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
 #include "dem/validation/cantilever.hpp"
 #include "dem/validation/plate_deflection.hpp"
 

@@ -2,7 +2,7 @@
 // case sets up its loads on the initial state, applies them in the step's point-load stage,
 // measures after every step, and ends with a typed result, which the summary carries as its
 // `validation` block. One file per case: plate_deflection, cantilever_in_air,
-// floating_cantilever. advance() (dem/step.hpp) is the one step of every run, with its case or
+// floating_cantilever. advance() (dem/step/step.hpp) is the one step of every run, with its case or
 // without.
 #pragma once
 
@@ -12,9 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "dem/scene.hpp"
-#include "dem/state.hpp"
-#include "dem/step.hpp"
+#include "dem/input/scene.hpp"
+#include "dem/step/state.hpp"
+#include "dem/step/step.hpp"
 
 namespace icedem {
 
@@ -35,7 +35,7 @@ struct ValidationResult {
   nlohmann::json to_json() const;
 };
 
-/// One validation case: a case attached to the steps (dem/step.hpp) with a result.
+/// One validation case: a case attached to the steps (dem/step/step.hpp) with a result.
 class ValidationCase : public StepCase {
  public:
   /// The result at the end of the run.

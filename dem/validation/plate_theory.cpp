@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "dem/constants.hpp"
+#include "dem/core/constants.hpp"
 
 namespace icedem {
 

@@ -4,7 +4,7 @@
 // share them (docs/model/validation_targets.md §2).
 #pragma once
 
-#include "dem/scene.hpp"
+#include "dem/input/scene.hpp"
 
 namespace icedem {
 

@@ -19,7 +19,7 @@ def checkpoint_time(path):
     """The simulated time of a checkpoint file, -1 if there is none (or it is torn)."""
     try:
         with h5py.File(path, "r") as f:
-            # the State's time, a record of one double as the build holds it (dem/checkpoint.cpp)
+            # the State's time, a record of one double as the build holds it (dem/output/checkpoint.cpp)
             return float(np.frombuffer(f["checkpoint/state/time"][()].tobytes(), dtype=np.float64)[0])
     except (OSError, KeyError):
         return -1.0

@@ -20,9 +20,9 @@
 #include "coupling/coupled_flow.hpp"
 #include "coupling/exchange_protocol.hpp"
 #include "coupling/foam_runner.hpp"
-#include "dem/constants.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/simulation.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/run/simulation.hpp"
+#include "dem/step/initial_state.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;
@@ -85,7 +85,7 @@ TEST(FoamCase, WaterlineFlowIsFasterBesideTheConeAndSlowerAtItsBow) {
   // faster beside the hull than far away (measured 1.18 on the coarse mesh) ...
   EXPECT_GT(shoulder, 1.10);
   // ... but well below the analytic strip model's 2D cylinder of the waterline
-  // radius (dem/flow_field.hpp: 1 + a^2/r^2 = 1.77): the real flow also passes
+  // radius (dem/water/flow_field.hpp: 1 + a^2/r^2 = 1.77): the real flow also passes
   // under the 0.443 m deep cone, which the strip model does not allow
   EXPECT_LT(shoulder, 1.0 + a * a / (r * r));
   EXPECT_LT(bow, 0.8);  // towards stagnation at the bow (measured 0.60)

@@ -7,8 +7,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
-#include "dem/floe_layout.hpp"
-#include "dem/world.hpp"
+#include "dem/layout/floe_layout.hpp"
+#include "dem/world/world.hpp"
 #include "tests/support/scenes.hpp"
 
 namespace icedem::testing {

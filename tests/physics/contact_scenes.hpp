@@ -7,11 +7,12 @@
 #include <optional>
 #include <string>
 
-#include "dem/boundary_load.hpp"
-#include "dem/contact_method.hpp"
-#include "dem/contact_solver.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/step.hpp"
+#include "dem/contact/registry.hpp"
+#include "dem/contact/siconos.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
+#include "dem/world/boundary_load.hpp"
+#include "dem/world/contact_solver.hpp"
 #include "tests/physics/breakable_scenes.hpp"
 #include "tests/support/box_world.hpp"
 
@@ -55,7 +56,7 @@ inline std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, d
 
 
 
-// a contact method by name (dem/contact_method.hpp) on p to `tolerance`, at most `cap`
+// a contact method by name (dem/contact/registry.hpp) on p to `tolerance`, at most `cap`
 // iterations, warm-started from the problem's guess or not
 inline SolverAnswer solve_with(const std::string& method, const ContactProblem& p, double tolerance, int cap,
                                bool warm = true) {
@@ -69,6 +70,7 @@ inline SolverAnswer solve_with(const std::string& method, const ContactProblem& 
 // Siconos' proximal point method (semismooth Newton inside) to `tolerance`: it solves the
 // rank-deficient problems of faces touching at several points, where plain Newton fails
 inline SolverAnswer reference(const ContactProblem& p, double tolerance = 1e-12) {
+  register_siconos_methods();
   return solve_with("siconos_prox", p, tolerance, 200);
 }
 
@@ -119,20 +121,22 @@ inline constexpr double kRowMu = 0.3, kBoxMass = 1.0, kHalf = 0.05, kPlateSpeed 
 // the plate's speed, the plate touching the first. Frictionless side walls keep the row
 // from buckling. The problem of the first step is captured: its answer is known exactly,
 // where later steps depend on how well the steps before them were solved. The step is
-// solved by `method` (dem/contact_solver.hpp: "pgs" or a contact method) to `tolerance`,
-// or to `structure_tolerance` if smaller (the row touches the plate, the structure).
+// solved by `method` (dem/world/contact_solver.hpp: "pgs" or a contact method) to `tolerance`,
+// or to `structure_tolerance` if smaller (the row touches the plate, the structure), in at most
+// `cap` sweeps or iterations.
 struct RowStep {
   ContactProblem problem;
   SolverAnswer answer;           // what the solver ended the step with
   double plate_impulse = 0;      // N s, the normal impulse Bullet's contact points on the plate hold after the step
   double box_speed_min = 0, box_speed_max = 0;  // m/s, surge velocity of the boxes after the step
-  double boundary_load = 0;      // N, what the fixed floor and walls take off the plate (dem/boundary_load.hpp)
+  double boundary_load = 0;      // N, what the fixed floor and walls take off the plate (dem/world/boundary_load.hpp)
 };
-inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e-9, double structure_tolerance = 1.0) {
+inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e-9, double structure_tolerance = 1.0,
+                                int cap = 2000) {
   Keep keep;
-  Bench bench(tight_solver(keep, 2000, tolerance, method, structure_tolerance));
+  Bench bench(tight_solver(keep, cap, tolerance, method, structure_tolerance));
   auto* solver = static_cast<ContactSolver*>(bench.world().getConstraintSolver());
-  bench.world().getSolverInfo().m_numIterations = 2000;
+  bench.world().getSolverInfo().m_numIterations = cap;
   bench.world().getSolverInfo().m_warmstartingFactor = 1.0;
   bench.world().getSolverInfo().m_minimumSolverBatchSize = 1;
   bench.box({5.0, 0.05, 1.0}, at(0, -0.05, 0), 0.0, kRowMu, 2);  // floor, top at y = 0

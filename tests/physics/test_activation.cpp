@@ -1,11 +1,11 @@
-// Sleeping and freezing (dem/activation, dem/contact_islands): floes at rest cost nothing,
+// Sleeping and freezing (dem/activation/activation, dem/world/contact_islands): floes at rest cost nothing,
 // and a disturbance wakes only the floes it touches. Bullet builds sleeping islands from
 // overlapping bounding boxes, which joins a whole 75 % field into one island
 // (docs/model/bullet.md); the contact island manager joins only touching floes.
 #include <gtest/gtest.h>
 
-#include "dem/initial_state.hpp"
-#include "dem/step.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;
@@ -37,7 +37,7 @@ btRigidBody& poke_middle_floe(State& state) {
     const double d = std::hypot(p.x() - 1.5, p.z());
     if (d < best_d) best_d = d, best = &f;
   }
-  // a floe nothing has reached waits out of the world (dem/unreached_floes.hpp): it enters first
+  // a floe nothing has reached waits out of the world (dem/world/unreached_floes.hpp): it enters first
   state.world->enter_reached(static_cast<int>(best - state.world->floes().data()));
   best->body->activate(true);
   best->body->setLinearVelocity(btVector3(0, 0.05, 0));
@@ -117,7 +117,7 @@ TEST(Sleeping, FloesThatDoNotTouchHeaveAsIfAlone) {
     EXPECT_NEAR(field.world->floes()[i].body->getCenterOfMassPosition().y() - y0[i], expected, 1e-9) << "floe " << i;
 }
 
-// Freezing (dem/activation.hpp): resting floes outside the activation region are
+// Freezing (dem/activation/activation.hpp): resting floes outside the activation region are
 // fixed obstacles until struck faster than the wake speed or reached by the region.
 namespace {
 const char* kPair = R"(

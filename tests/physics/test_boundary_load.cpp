@@ -1,4 +1,4 @@
-// The boundary load (dem/boundary_load.hpp): what fixed bodies take off the structure's
+// The boundary load (dem/world/boundary_load.hpp): what fixed bodies take off the structure's
 // push through the ice it touches. The sliding row of 20 boxes (contact_scenes.hpp),
 // pushed by the plate at constant speed over a fixed floor: by momentum balance the
 // floor's friction carries the plate's whole push, n mu m g, and the row is "locked"

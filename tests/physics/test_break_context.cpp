@@ -1,17 +1,17 @@
-// What a broken floe was doing (dem/break_context).
+// What a broken floe was doing (dem/fracture/break_context).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "dem/break_context.hpp"
-#include "dem/calibration.hpp"
-#include "dem/fracture.hpp"
-#include "dem/ice_lattice.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/lattice_region.hpp"
-#include "dem/scenario.hpp"
-#include "dem/simulation.hpp"
-#include "dem/step.hpp"
+#include "dem/fracture/break_context.hpp"
+#include "dem/fracture/fracture.hpp"
+#include "dem/fracture/ice_lattice.hpp"
+#include "dem/fracture/lattice_region.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/run/simulation.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
+#include "dem/validation/calibration.hpp"
 #include "dem/validation/case.hpp"
 #include "dem/validation/plate_theory.hpp"
 #include "tests/physics/breakable_scenes.hpp"
@@ -45,11 +45,11 @@ TEST(BreakContext, AFloeLyingOnAnElementPressesItDownAndTheBreakRecordsIt) {
   const double weight = scene.ice.density * 0.15 * 0.15 * h * scene.water.gravity;  // N, the floe on top
 
   for (int i = 0; i < 50; ++i) step(scene, state);  // 1 s: landed and at rest
-  ASSERT_EQ(state.breaks_by_mode[static_cast<int>(FailureMode::kBending)], 0);
+  ASSERT_EQ(state.fracture.breaks_by_mode[static_cast<int>(FailureMode::kBending)], 0);
   scene.ice.bending_strength = 30e3;
   step(scene, state);
-  ASSERT_EQ(state.fracture_events.size(), 1u);
-  const FractureEvent& e = state.fracture_events.front();
+  ASSERT_EQ(state.fracture.events.size(), 1u);
+  const FractureEvent& e = state.fracture.events.front();
   EXPECT_EQ(e.mode, static_cast<int>(FailureMode::kBending));
   EXPECT_DOUBLE_EQ(e.ratio_bending, e.ratio);  // the criterion that fired is the largest ratio
   EXPECT_LT(e.ratio_compression, 0.01);        // strengths of 1e9 Pa: nothing near those criteria
@@ -60,7 +60,7 @@ TEST(BreakContext, AFloeLyingOnAnElementPressesItDownAndTheBreakRecordsIt) {
   EXPECT_GT(e.distance, 50.0);
   // the contact force of the resting floe is its weight (2 %: the contact solve's residual)
   EXPECT_NEAR(e.press_down, weight, 0.02 * weight) << "weight " << weight;
-  EXPECT_EQ(state.breaks_by_mechanism[static_cast<int>(BreakMechanism::kInPack)], 1);
+  EXPECT_EQ(state.fracture.breaks_by_mechanism[static_cast<int>(BreakMechanism::kInPack)], 1);
 }
 
 // Scenes with the structure, where what the floe was doing is known by construction
@@ -108,7 +108,7 @@ State floe_a(const Scene& scene, double b_side) {
 std::vector<FractureEvent> first_breaks_of_a(Scene& scene, State& state, double settle, double strength,
                                              double within) {
   for (long i = 0; i < std::lround(settle / scene.time.dt); ++i) step(scene, state);
-  if (!state.fracture_events.empty()) {
+  if (!state.fracture.events.empty()) {
     ADD_FAILURE() << "a joint broke while the scene settled";
     return {};
   }
@@ -116,7 +116,7 @@ std::vector<FractureEvent> first_breaks_of_a(Scene& scene, State& state, double 
   for (int i = 0; i < static_cast<int>(within / scene.time.dt); ++i) {
     step(scene, state);
     std::vector<FractureEvent> of_a;
-    for (const FractureEvent& e : state.fracture_events)
+    for (const FractureEvent& e : state.fracture.events)
       if (e.floe == 0) of_a.push_back(e);
     if (!of_a.empty()) return of_a;
   }

@@ -1,19 +1,19 @@
-// The joints' calibration (dem/calibration): Bullet's CFM and the elastic joints' scale, and the
+// The joints' calibration (dem/validation/calibration): Bullet's CFM and the elastic joints' scale, and the
 // joint iterations the CFM depends on.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "dem/break_context.hpp"
-#include "dem/calibration.hpp"
-#include "dem/errors.hpp"
-#include "dem/fracture.hpp"
-#include "dem/ice_lattice.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/lattice_region.hpp"
-#include "dem/scenario.hpp"
-#include "dem/simulation.hpp"
-#include "dem/step.hpp"
+#include "dem/core/errors.hpp"
+#include "dem/fracture/break_context.hpp"
+#include "dem/fracture/fracture.hpp"
+#include "dem/fracture/ice_lattice.hpp"
+#include "dem/fracture/lattice_region.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/run/simulation.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
+#include "dem/validation/calibration.hpp"
 #include "dem/validation/case.hpp"
 #include "dem/validation/plate_theory.hpp"
 #include "tests/physics/breakable_scenes.hpp"

@@ -1,4 +1,4 @@
-// The accelerated projected gradient contact method (dem/contact_apgd.hpp) on problems
+// The accelerated projected gradient contact method (dem/contact/apgd.hpp) on problems
 // whose answer is known (the same as the Newton method's tests):
 //  - the sliding row of 20 boxes (contact_scenes.hpp): the plate carries all their
 //    friction, n mu m g h;
@@ -13,7 +13,7 @@
 
 #include <algorithm>
 
-#include "dem/contact_problem_file.hpp"
+#include "dem/contact/problem_file.hpp"
 #include "tests/physics/contact_scenes.hpp"
 
 using namespace icedem;

@@ -1,4 +1,4 @@
-// The merits a contact solve stops on (dem/contact_merit.hpp):
+// The merits a contact solve stops on (dem/contact/merit.hpp):
 //  - "siconos" is exactly the library's common measure, natural_map_residual;
 //  - "impulse" gives an answer whose forces are off by a fraction e the same value
 //    whatever the step and whatever gaps the island's untouching points close, where the
@@ -9,8 +9,8 @@
 #include <cmath>
 #include <vector>
 
-#include "dem/contact_merit.hpp"
-#include "dem/contact_problem_file.hpp"
+#include "dem/contact/merit.hpp"
+#include "dem/contact/problem_file.hpp"
 #include "tests/physics/contact_scenes.hpp"
 
 using namespace icedem;

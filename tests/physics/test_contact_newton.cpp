@@ -1,4 +1,4 @@
-// The primal Newton contact method (dem/contact_newton.hpp) on problems whose answer
+// The primal Newton contact method (dem/contact/newton.hpp) on problems whose answer
 // is known:
 //  - the sliding row of 20 boxes (contact_scenes.hpp): the plate carries all their
 //    friction, n mu m g h, a chain that ten Gauss-Seidel sweeps solve to 0.15 of it;
@@ -10,7 +10,7 @@
 //    about 1e-11, cross-checked by a second Siconos method).
 #include <gtest/gtest.h>
 
-#include "dem/contact_problem_file.hpp"
+#include "dem/contact/problem_file.hpp"
 #include "tests/physics/contact_scenes.hpp"
 
 using namespace icedem;
@@ -29,7 +29,7 @@ TEST(ContactNewton, SlidingRowPutsAllTheFrictionOnThePlate) {
   std::printf("sliding row: %d Newton steps to a merit of %.1e\n", a.sweeps, a.residual);
 }
 
-// The method in a run (solver.method = "newton", dem/contact_solver.cpp): the island is
+// The method in a run (solver.method = "newton", dem/world/contact_solver.cpp): the island is
 // solved by Newton and its impulses written back to Bullet's rows, so the contact points
 // on the plate hold n mu m g h after the step and every box keeps the plate's speed
 // (a row pushed at constant speed: friction balances the push exactly).

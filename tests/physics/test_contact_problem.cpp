@@ -1,4 +1,4 @@
-// Contact problems captured from Bullet's rows (dem/contact_problem*.hpp), checked on
+// Contact problems captured from Bullet's rows (dem/contact/problem*.hpp), checked on
 // scenes whose answer is known, solved by Siconos numerics to 1e-10 or better:
 //  - a box resting on a floor: the floor carries its weight over the step, m g h;
 //  - a row of boxes sliding end-on at constant speed, pushed by a kinematic plate: the
@@ -21,12 +21,12 @@
 #include <siconos/numerics/SolverOptions.h>
 #include <siconos/numerics/fc3d_compute_error.h>
 
-#include "dem/contact_method.hpp"
-#include "dem/contact_problem_file.hpp"
-#include "dem/contact_siconos.hpp"
-#include "dem/contact_solver.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/step.hpp"
+#include "dem/contact/problem_file.hpp"
+#include "dem/contact/registry.hpp"
+#include "dem/contact/siconos.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
+#include "dem/world/contact_solver.hpp"
 #include "tests/physics/breakable_scenes.hpp"
 #include "tests/physics/contact_scenes.hpp"
 #include "tests/support/box_world.hpp"
@@ -77,7 +77,7 @@ TEST(ContactProblem, SlidingRowProblemPutsAllTheFrictionOnThePlate) {
   ten.max_iterations = 10;
   ten.tolerance = 0.0;
   ten.warm_start = false;
-  const SolverAnswer pgs = make_contact_method("pgs")->solve(p, ten);
+  const SolverAnswer pgs = make_contact_method("pgs_square")->solve(p, ten);
   const double short_of = normal_impulse(p, pgs.r, on_plate) / expected;
   EXPECT_LT(short_of, 0.8);
   std::printf("sliding row: n mu m g h = %.5f N s; Siconos %.5f N s in %d iterations; 10 cold PGS sweeps %.2f of it\n",
@@ -178,4 +178,39 @@ TEST(ContactProblem, LatticeJointsFoldIntoTheDelassusForm) {
   const Eigen::VectorXd v_folded = velocities(g, folded.r, folded.l), v_swept = velocities(g, swept.r, swept.l);
   EXPECT_LT((v_folded - v_swept).norm(), 1e-6 * v_folded.norm());
   EXPECT_LT((folded.l - swept.l).norm(), 1e-4 * folded.l.norm());
+}
+
+// The two Gauss-Seidel code paths, one answer: the run's sweeps over Bullet's rows
+// (solver.method = "pgs", dem/world/contact_solver.hpp) and pgs_square on the problem captured
+// from those rows (dem/contact/pgs.hpp), each swept until it no longer moves, give the same body
+// velocities and the same impulse on the structure (what is unique: a face's points share their
+// impulses in many ways). Both clamp friction per direction, so neither reaches a small merit on
+// Coulomb's disc (3e-2 here): pgs_square runs its whole cap. The sliding row is a chain of 20
+// boxes, which Gauss-Seidel converges slowly: the run's sweeps stop at their own residual of 1e-9
+// after about 3,500 sweeps. Tolerance 1e-6 of each, against a difference of 1e-5 when the run's
+// sweeps stop at 2,000 (residual 5e-6).
+TEST(ContactProblem, InRunSweepsAndProblemSweepsAgree) {
+  const RowStep row = sliding_row_step(kBulletSweeps, 1e-9, 1.0, 50000);
+  EXPECT_FALSE(row.answer.capped) << "the run's sweeps ended at residual " << row.answer.residual;
+  MethodOptions tight;
+  tight.tolerance = 1e-12;
+  tight.max_iterations = 50000;
+  const SolverAnswer problem_sweeps = make_contact_method("pgs_square")->solve(row.problem, tight);
+  const ReferenceDistance d = distance_to_reference(row.problem, row.answer.r, problem_sweeps);
+  std::printf("sliding row: the run's sweeps %d (residual %.1e), pgs_square %d; velocities %.1e, load %.1e apart\n",
+              row.answer.sweeps, row.answer.residual, problem_sweeps.sweeps, d.velocities, d.load);
+  EXPECT_LT(d.velocities, 1e-6) << "body velocities, relative";
+  EXPECT_LT(d.load, 1e-6) << "impulse on the plate, relative";
+
+  // with joints: the lattices' step, Bullet's CFM joint rows swept by the run to 1e-9, frictionless
+  // (so a small merit is reachable), as rows on the problem
+  Keep keep;
+  pushed_lattices(keep);
+  ASSERT_TRUE(keep.problem) << "the lattices never touched";
+  const SolverAnswer lattice_sweeps = make_contact_method("pgs_square")->solve(*keep.problem, tight);
+  EXPECT_FALSE(lattice_sweeps.capped);
+  const GlobalForm g = global_form(*keep.problem);
+  const Eigen::VectorXd v_run = velocities(g, keep.answer.r, keep.answer.l);
+  const Eigen::VectorXd v_problem = velocities(g, lattice_sweeps.r, lattice_sweeps.l);
+  EXPECT_LT((v_run - v_problem).norm(), 1e-6 * v_run.norm()) << "lattice body velocities";
 }

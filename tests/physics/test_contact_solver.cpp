@@ -1,4 +1,4 @@
-// The contact solver (dem/contact_solver.hpp) on problems with known answers:
+// The contact solver (dem/world/contact_solver.hpp) on problems with known answers:
 //  - a row of boxes on a frictional floor pushed end-on by a kinematic plate at
 //    constant speed: once every box slides, the plate carries the friction of all
 //    of them, n mu m g. Projected Gauss-Seidel moves an impulse about one box per
@@ -20,7 +20,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
-#include "dem/contact_solver.hpp"
+#include "dem/world/contact_solver.hpp"
 #include "tests/support/box_world.hpp"
 
 using icedem::ContactSolver;

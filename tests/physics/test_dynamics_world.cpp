@@ -1,16 +1,16 @@
-// Bullet's step taken apart into the stages step() names (dem/dynamics_world.hpp) is Bullet's
+// Bullet's step taken apart into the stages step() names (dem/world/dynamics_world.hpp) is Bullet's
 // own stepSimulation(h, 0), bit for bit: the same bodies, velocities and contact points after
 // a pack has been pushed by the structure, with rigid floes and with breakable ones (joints).
-#include "dem/dynamics_world.hpp"
+#include "dem/world/dynamics_world.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstring>
 
-#include "dem/initial_state.hpp"
-#include "dem/scene_builder.hpp"
-#include "dem/step.hpp"
-#include "dem/world_state.hpp"
+#include "dem/input/scene_builder.hpp"
+#include "dem/output/world_state.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
 
 namespace icedem {
 namespace {

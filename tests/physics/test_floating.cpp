@@ -1,14 +1,14 @@
 // A floating floe in the real Bullet world with the water stage: Archimedes
 // draft, reserve buoyancy, righting, terminal drift speed, and a still field.
 // References: docs/model/validation_targets.md §1 (draft 30.69 mm, reserve buoyancy
-// 2.04 N for a 0.3 m floe) and the drag law of dem/water_forces.hpp.
+// 2.04 N for a 0.3 m floe) and the drag law of dem/water/water_forces.hpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "dem/constants.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/step.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;

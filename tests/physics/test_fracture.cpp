@@ -1,19 +1,19 @@
-// Breakable floes in the real Bullet world (dem/fracture, dem/ice_lattice): joint feedback
+// Breakable floes in the real Bullet world (dem/fracture/fracture, dem/fracture/ice_lattice): joint feedback
 // against hand statics (a cantilever under gravity), fragments that collide once broken
 // apart, and the joint-load filter.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "dem/break_context.hpp"
-#include "dem/calibration.hpp"
-#include "dem/fracture.hpp"
-#include "dem/ice_lattice.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/lattice_region.hpp"
-#include "dem/scenario.hpp"
-#include "dem/simulation.hpp"
-#include "dem/step.hpp"
+#include "dem/fracture/break_context.hpp"
+#include "dem/fracture/fracture.hpp"
+#include "dem/fracture/ice_lattice.hpp"
+#include "dem/fracture/lattice_region.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/run/simulation.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
+#include "dem/validation/calibration.hpp"
 #include "dem/validation/case.hpp"
 #include "dem/validation/plate_theory.hpp"
 #include "tests/physics/breakable_scenes.hpp"
@@ -38,7 +38,7 @@ struct ClampedPair {
     root.setMassProps(0, btVector3(0, 0, 0));
     root.updateInertiaTensor();
   }
-  int breaks() const { return state.breaks_by_mode[static_cast<int>(FailureMode::kBending)]; }
+  int breaks() const { return state.fracture.breaks_by_mode[static_cast<int>(FailureMode::kBending)]; }
 };
 }  // namespace
 

@@ -1,18 +1,18 @@
-// Rigid floes that split (fracture.mode = "analytic", dem/fracture_split.hpp): the crack the
+// Rigid floes that split (fracture.mode = "analytic", dem/fracture/fracture_split.hpp): the crack the
 // beam predicts, a split that keeps mass, momentum and angular momentum, a floe on the cone
 // that splits when the structure's load reaches the formula's breaking load and not before,
 // and a world rebuilt from a checkpoint that holds the pieces.
-#include "dem/fracture_split.hpp"
+#include "dem/fracture/fracture_split.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
 
-#include "dem/fracture_analytic.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/step.hpp"
-#include "dem/world_state.hpp"
+#include "dem/fracture/fracture_analytic.hpp"
+#include "dem/output/world_state.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
 #include "tests/support/scenes.hpp"
 
 namespace icedem {
@@ -175,9 +175,9 @@ Scene cone_scene() {
 // step until floe 0 splits (at most `within` s); its split's events, none if it did not
 std::vector<FractureEvent> first_split(const Scene& scene, State& state, double within, double* ratio_before) {
   for (long i = 0; i < std::lround(within / scene.time.dt); ++i) {
-    if (ratio_before) *ratio_before = state.floe_margins.empty() ? 0.0 : state.floe_margins[0].max_ratio;
+    if (ratio_before) *ratio_before = state.fracture.floe_margins.empty() ? 0.0 : state.fracture.floe_margins[0].max_ratio;
     step(scene, state);
-    if (!state.fracture_events.empty()) return state.fracture_events;
+    if (!state.fracture.events.empty()) return state.fracture.events;
   }
   return {};
 }
@@ -218,7 +218,7 @@ TEST(FloeSplit, AFloeOnTheConeSplitsWhenTheLoadReachesTheFormulasAndNotBefore) {
   ASSERT_EQ(world.floes().size(), 3u);
   EXPECT_NEAR(area(world.floes()[1].shape->outline), 0.2 * 0.6, 0.005);
   EXPECT_NEAR(area(world.floes()[2].shape->outline), 0.4 * 0.6, 0.005);
-  EXPECT_EQ(state.breaks_by_mode[static_cast<int>(FailureMode::kBending)], 1);
+  EXPECT_EQ(state.fracture.breaks_by_mode[static_cast<int>(FailureMode::kBending)], 1);
 }
 
 TEST(FloeSplit, AWorldRebuiltFromACheckpointHoldsThePieces) {

@@ -1,4 +1,4 @@
-// Element joints as springs of the ice (dem/joint_springs.hpp): the rows' stiffness
+// Element joints as springs of the ice (dem/world/joint_springs.hpp): the rows' stiffness
 // from the ice's modulus and the element's geometry, and a lattice whose modulus does
 // not depend on the step.
 #include <gtest/gtest.h>
@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "dem/calibration.hpp"
-#include "dem/joint_springs.hpp"
-#include "dem/scenario.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/validation/calibration.hpp"
 #include "dem/validation/case.hpp"
 #include "dem/validation/plate_theory.hpp"
+#include "dem/world/joint_springs.hpp"
 
 using namespace icedem;
 

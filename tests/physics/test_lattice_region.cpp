@@ -1,17 +1,17 @@
-// Breakable floes as one rigid body away from the structure (dem/lattice_region).
+// Breakable floes as one rigid body away from the structure (dem/fracture/lattice_region).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "dem/break_context.hpp"
-#include "dem/calibration.hpp"
-#include "dem/fracture.hpp"
-#include "dem/ice_lattice.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/lattice_region.hpp"
-#include "dem/scenario.hpp"
-#include "dem/simulation.hpp"
-#include "dem/step.hpp"
+#include "dem/fracture/break_context.hpp"
+#include "dem/fracture/fracture.hpp"
+#include "dem/fracture/ice_lattice.hpp"
+#include "dem/fracture/lattice_region.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/run/simulation.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
+#include "dem/validation/calibration.hpp"
 #include "dem/validation/case.hpp"
 #include "dem/validation/plate_theory.hpp"
 #include "tests/physics/breakable_scenes.hpp"
@@ -62,7 +62,7 @@ TEST(LatticeRegion, TheLatticeTakesOverTheStandInsMotionWhenTheStructureComesNea
     whole.setLinearVelocity(v);
     whole.setAngularVelocity(w);
     const btTransform T = whole.getCenterOfMassTransform();
-    update_lattice_region(scene, state);
+    update_lattice_region(scene, state.structure_position, *state.world, state.fracture);
     EXPECT_EQ(d.replaced, radius > 1.1) << radius;
     if (!d.replaced) continue;
     EXPECT_FALSE(whole.isInWorld());
@@ -83,7 +83,7 @@ TEST(LatticeRegion, TheLatticeTakesOverTheStandInsMotionWhenTheStructureComesNea
     for (int i = 0; i < d.elements; ++i) mean += world.floes()[d.first_element + i].body->getLinearVelocity();
     mean /= d.elements;
     EXPECT_LT((mean - v).length(), 0.01);
-    EXPECT_EQ(state.breaks_by_mode[static_cast<int>(FailureMode::kBending)], 0);
+    EXPECT_EQ(state.fracture.breaks_by_mode[static_cast<int>(FailureMode::kBending)], 0);
   }
 }
 
@@ -95,7 +95,7 @@ TEST(LatticeRegion, AnIntactLatticeThatLeavesTheRegionIsOneBodyAgainABrokenOneSt
   State state = initial_state(scene, {strip(0.6, 0.6)});
   World& world = *state.world;
   DormantLattice& d = world.lattices()[0];
-  update_lattice_region(scene, state);
+  update_lattice_region(scene, state.structure_position, *state.world, state.fracture);
   ASSERT_TRUE(d.replaced);
   // the lattice drifts and turns slowly as one piece
   const btVector3 v(-0.05, 0, 0.02), w(0, 0.1, 0);
@@ -130,7 +130,7 @@ TEST(LatticeRegion, AnIntactLatticeThatLeavesTheRegionIsOneBodyAgainABrokenOneSt
   Scene near = scene;
   State s2 = initial_state(near, {strip(0.6, 0.6)});
   DormantLattice& d2 = s2.world->lattices()[0];
-  update_lattice_region(near, s2);
+  update_lattice_region(near, s2.structure_position, *s2.world, s2.fracture);
   ASSERT_TRUE(d2.replaced);
   break_joint(*s2.world, s2.world->joints()[0]);
   EXPECT_TRUE(d2.broken);

@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "dem/world_builder.hpp"
-#include "dem/initial_state.hpp"
-#include "dem/step.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
+#include "dem/step/world_builder.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;

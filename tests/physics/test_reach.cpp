@@ -1,16 +1,16 @@
-// Floes kept out of Bullet's world until something reaches them (dem/unreached_floes.hpp,
-// dem/reach.hpp): a run is the same run, bit for bit, as with every floe in the world from the
+// Floes kept out of Bullet's world until something reaches them (dem/world/unreached_floes.hpp,
+// dem/activation/reach.hpp): a run is the same run, bit for bit, as with every floe in the world from the
 // start, and the floes nothing reached stay out of it.
-#include "dem/reach.hpp"
+#include "dem/activation/reach.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <cstring>
 
-#include "dem/initial_state.hpp"
-#include "dem/scene_builder.hpp"
-#include "dem/step.hpp"
+#include "dem/input/scene_builder.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
 
 namespace icedem {
 namespace {
@@ -75,7 +75,7 @@ TEST(Reach, BreakableFloesEnteringWhenReachedMakeTheSameRun) {
 }
 
 TEST(Reach, FreezingKeepsEveryFloeInTheWorld) {
-  // frozen floes entering when reached have not yet been made exact (dem/world.hpp): with
+  // frozen floes entering when reached have not yet been made exact (dem/world/world.hpp): with
   // activation.freeze_outside_region every floe is in the world from the start
   const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml",
                                  {"activation.freeze_outside_region=true", "activation.region_ahead=1.5"});

@@ -1,11 +1,11 @@
-// The Bullet world and its registry alone (dem/world): bodies and their liveness, freezing,
+// The Bullet world and its registry alone (dem/world/world): bodies and their liveness, freezing,
 // shared shapes. What the builder puts in it: test_world_builder.cpp.
 #include <gtest/gtest.h>
 
 #include <btBulletDynamicsCommon.h>
 
-#include "dem/world.hpp"
-#include "dem/world_builder.hpp"  // world_settings
+#include "dem/step/world_builder.hpp"  // world_settings
+#include "dem/world/world.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;

@@ -1,9 +1,9 @@
-// What the builder puts in the world (dem/world_builder): the structure, rigid floes as one
+// What the builder puts in the world (dem/step/world_builder): the structure, rigid floes as one
 // body each, breakable floes as lattices of elements and joints that share the floe's id and mass.
 #include <gtest/gtest.h>
 
-#include "dem/world.hpp"
-#include "dem/world_builder.hpp"
+#include "dem/step/world_builder.hpp"
+#include "dem/world/world.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;
@@ -41,7 +41,7 @@ TEST(WorldBuilder, RigidFloesAreOneBodyEachAndBreakableOnesLatticesOfElementsAnd
 // steps of a 96,000-floe field took 22 s). It finds the pairs an unsettled world finds.
 TEST(WorldBuilder, AFieldSettlesIntoABalancedTreeOfRestingBoxes) {
   // floes at rest asleep, as in a run: they stay in the tree of resting boxes. All of them in
-  // the world (none kept out until reached, dem/unreached_floes.hpp): that tree is the subject
+  // the world (none kept out until reached, dem/world/unreached_floes.hpp): that tree is the subject
   const Scene scene =
       bench_scene({"ice.floe_size=0.3", "activation.sleeping=true", "activation.unreached_out_of_world=false"});
   std::vector<Floe> floes;

@@ -1,7 +1,7 @@
-// A world rebuilt from a checkpoint's state (dem/world_state.hpp): it holds the state it was
+// A world rebuilt from a checkpoint's state (dem/output/world_state.hpp): it holds the state it was
 // rebuilt from, bit for bit, and continues as the world it was taken from does, up to the
 // round-off of its own order of bodies and contacts.
-#include "dem/world_state.hpp"
+#include "dem/output/world_state.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include <map>
 #include <tuple>
 
-#include "dem/initial_state.hpp"
-#include "dem/scene_builder.hpp"
-#include "dem/step.hpp"
+#include "dem/input/scene_builder.hpp"
+#include "dem/step/initial_state.hpp"
+#include "dem/step/step.hpp"
 
 namespace icedem {
 namespace {

@@ -34,8 +34,8 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/coupled_flow.hpp"
-#include "dem/scenario.hpp"
-#include "dem/simulation.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/run/simulation.hpp"
 
 using namespace icedem;
 

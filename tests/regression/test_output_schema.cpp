@@ -1,4 +1,4 @@
-// The output schema (dem/output_schema.hpp) is the file: a run with breaks writes exactly the
+// The output schema (dem/output/schema.hpp) is the file: a run with breaks writes exactly the
 // datasets the schema declares, with its shapes' ranks, element types and units, and the
 // attributes it lists; /stats repeats the summary's numbers. A dataset added to the recorder
 // but not to the schema (or the reverse) fails here, so docs/user/output.md cannot drift.
@@ -10,9 +10,9 @@
 #include <set>
 #include <string>
 
-#include "dem/output_schema.hpp"
-#include "dem/scenario.hpp"
-#include "dem/simulation.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/output/schema.hpp"
+#include "dem/run/simulation.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;

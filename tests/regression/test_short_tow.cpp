@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "dem/scenario.hpp"
-#include "dem/simulation.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/run/simulation.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;

@@ -1,5 +1,5 @@
 // A small Bullet world of boxes for the contact solver's tests: a floor, boxes,
-// a kinematic plate, with Bullet's solver or icedem's (dem/contact_solver.hpp).
+// a kinematic plate, with Bullet's solver or icedem's (dem/world/contact_solver.hpp).
 #pragma once
 
 #include <memory>
@@ -27,7 +27,7 @@ class Bench {
     btContactSolverInfo& info = world_->getSolverInfo();
     info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
     info.m_splitImpulse = true;
-    info.m_splitImpulsePenetrationThreshold = 0;  // as icedem (dem/world.cpp)
+    info.m_splitImpulsePenetrationThreshold = 0;  // as icedem (dem/world/world.cpp)
     previous_friction_ = gCalculateCombinedFrictionCallback;
     gCalculateCombinedFrictionCallback = &pair_friction;
   }

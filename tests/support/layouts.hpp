@@ -1,9 +1,9 @@
-// The layout tests' channel and generator settings (dem/floe_layout.hpp).
+// The layout tests' channel and generator settings (dem/layout/floe_layout.hpp).
 #pragma once
 
 #include <cstdint>
 
-#include "dem/floe_layout.hpp"
+#include "dem/layout/floe_layout.hpp"
 
 namespace icedem::testing {
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "dem/floe_layout.hpp"
-#include "dem/scenario.hpp"
-#include "dem/simulation.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/layout/floe_layout.hpp"
+#include "dem/run/simulation.hpp"
 
 namespace icedem::testing {
 

@@ -1,12 +1,12 @@
 // The classification of breaks into mechanisms and the distance from the
-// structure (dem/break_context.hpp), on hand-made contexts.
+// structure (dem/fracture/break_context.hpp), on hand-made contexts.
 #include <gtest/gtest.h>
 
 #include <set>
 #include <string>
 
-#include "dem/break_context.hpp"
-#include "dem/cone_geometry.hpp"
+#include "dem/fracture/break_context.hpp"
+#include "dem/world/cone_geometry.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;

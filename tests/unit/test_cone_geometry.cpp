@@ -9,8 +9,8 @@
 
 #include <Eigen/Geometry>
 
-#include "dem/cone_geometry.hpp"
-#include "dem/constants.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/world/cone_geometry.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;

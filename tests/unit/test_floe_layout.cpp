@@ -1,7 +1,7 @@
-// Unit tests of generated floe layouts (dem/floe_layout.hpp): square floes (count,
+// Unit tests of generated floe layouts (dem/layout/floe_layout.hpp): square floes (count,
 // concentration, no overlap, containment, yaw range, reproducibility) and input errors.
 // Layout files: test_layout_file.cpp.
-#include "dem/floe_layout.hpp"
+#include "dem/layout/floe_layout.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <fstream>
 #include <string>
 
-#include "dem/constants.hpp"
-#include "dem/errors.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/core/errors.hpp"
 #include "tests/support/layouts.hpp"
 
 namespace icedem {

@@ -1,13 +1,13 @@
-// Unit tests of floe shapes (dem/floe_shape): mass and principal inertia of a prism against
+// Unit tests of floe shapes (dem/world/floe_shape): mass and principal inertia of a prism against
 // the closed forms, the principal frame of a turned outline, the bounding radius, the
 // collision shape, and one shape per outline.
-#include "dem/floe_shape.hpp"
+#include "dem/world/floe_shape.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "dem/constants.hpp"
+#include "dem/core/constants.hpp"
 
 namespace icedem {
 namespace {

@@ -1,13 +1,13 @@
 // Water velocity models: still and uniform water, and the strip-wise cylinder potential
 // flow around the towed structure (docs/model/validation_targets.md §5).
-#include "dem/constants.hpp"
-#include "dem/flow_field.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/water/flow_field.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "dem/errors.hpp"
+#include "dem/core/errors.hpp"
 
 namespace icedem {
 namespace {

@@ -1,11 +1,11 @@
-// The edge load that breaks a floating floe (dem/fracture_analytic.hpp): its two limits in
+// The edge load that breaks a floating floe (dem/fracture/fracture_analytic.hpp): its two limits in
 // closed form, and the paper's 0.6 m floe against an independent solver.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "dem/fracture_analytic.hpp"
+#include "dem/fracture/fracture_analytic.hpp"
 
 using namespace icedem;
 

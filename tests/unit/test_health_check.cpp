@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
-#include "dem/errors.hpp"
-#include "dem/health_check.hpp"
-#include "dem/initial_state.hpp"
+#include "dem/core/errors.hpp"
+#include "dem/step/health_check.hpp"
+#include "dem/step/initial_state.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;

@@ -1,15 +1,15 @@
 // Hydrostatics of convex bodies: exact volumes and centroids against closed forms, symmetry
 // and an independent column integration; equilibrium draft and righting moment of a floe
 // against docs/model/validation_targets.md §1.
-#include "dem/constants.hpp"
-#include "dem/hydrostatics.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/water/hydrostatics.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "dem/errors.hpp"
+#include "dem/core/errors.hpp"
 
 namespace icedem {
 namespace {

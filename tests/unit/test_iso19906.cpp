@@ -1,11 +1,11 @@
 // The ISO 19906 (Croasdale and Cammaert) load of level ice on a sloping structure
-// (dem/iso19906.hpp), on the paper's cone and ice.
+// (dem/validation/iso19906.hpp), on the paper's cone and ice.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "dem/errors.hpp"
-#include "dem/iso19906.hpp"
+#include "dem/core/errors.hpp"
+#include "dem/validation/iso19906.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "dem/element_lattice.hpp"
-#include "dem/errors.hpp"
-#include "dem/joint_loads.hpp"
+#include "dem/core/errors.hpp"
+#include "dem/fracture/element_lattice.hpp"
+#include "dem/fracture/joint_loads.hpp"
 
 using namespace icedem;
 

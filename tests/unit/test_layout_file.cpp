@@ -1,7 +1,7 @@
-// Unit tests of layout files (dem/layout_file.hpp, layout_csv, layout_json; read through
-// read_layout_file of dem/floe_layout.hpp): CSV and JSON round trips, hand-written files, and
+// Unit tests of layout files (dem/layout/layout_file.hpp, layout_csv, layout_json; read through
+// read_layout_file of dem/layout/floe_layout.hpp): CSV and JSON round trips, hand-written files, and
 // error messages that name the file, line (or floe) and field.
-#include "dem/floe_layout.hpp"
+#include "dem/layout/floe_layout.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <fstream>
 #include <string>
 
-#include "dem/constants.hpp"
-#include "dem/errors.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/core/errors.hpp"
 #include "tests/support/layouts.hpp"
 
 namespace icedem {

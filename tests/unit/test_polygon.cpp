@@ -1,13 +1,13 @@
-// Unit tests of the convex polygon geometry in the (x, z) plane (dem/polygon.hpp):
+// Unit tests of the convex polygon geometry in the (x, z) plane (dem/layout/polygon.hpp):
 // area and centroid, orientation, convexity, placement and the SAT overlap test.
-#include "dem/polygon.hpp"
+#include "dem/layout/polygon.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "dem/constants.hpp"
+#include "dem/core/constants.hpp"
 
 namespace icedem {
 namespace {

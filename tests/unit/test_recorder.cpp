@@ -1,6 +1,6 @@
 // The HDF5 recorder: round trip of every dataset and attribute through the HDF5 C++ API, the
 // run status life cycle, and files left by runs that died (exception unwinding, SIGKILL).
-#include "dem/recorder.hpp"
+#include "dem/output/recorder.hpp"
 
 #include <H5Cpp.h>
 #include <gtest/gtest.h>
@@ -158,7 +158,7 @@ void expect_load_rows(const H5::H5File& file, int n) {
   const std::vector<double> p = read_doubles(file, "/structure/position");
   const auto contacts = read<int>(file, "/load/cone_contacts", H5::PredType::NATIVE_INT);
   const auto awake = read<int>(file, "/diagnostics/awake_bodies", H5::PredType::NATIVE_INT);
-  // the diagnostics' dataset names spelled out here, independently of dem/diagnostics.hpp
+  // the diagnostics' dataset names spelled out here, independently of dem/core/diagnostics.hpp
   const std::vector<double> w = read_doubles(file, "/diagnostics/max_angular_speed");
   const std::vector<double> v = read_doubles(file, "/diagnostics/max_speed");
   const std::vector<double> ke = read_doubles(file, "/diagnostics/kinetic_energy");

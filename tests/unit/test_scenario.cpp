@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "dem/errors.hpp"
-#include "dem/scenario.hpp"
+#include "dem/core/errors.hpp"
+#include "dem/input/scenario.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;
@@ -57,7 +57,7 @@ TEST(Scenario, SolverProfileFillsOnlyTheKeysTheScenarioLeavesUnset) {
   EXPECT_DOUBLE_EQ(converged.solver.tolerance, 0.01);
   EXPECT_DOUBLE_EQ(converged.solver.warm_start, 1.0);
   EXPECT_TRUE(converged.solver.friction_warm_start);
-  // "paper": 10 sweeps, no tolerance, Bullet's warm start 0.85 (dem/solver_profile.cpp)
+  // "paper": 10 sweeps, no tolerance, Bullet's warm start 0.85 (dem/input/solver_profile.cpp)
   const Scene paper = scene_from("[solver]\nprofile = \"paper\"\n");
   EXPECT_EQ(paper.solver.iterations, 10);
   EXPECT_DOUBLE_EQ(paper.solver.tolerance, 0.0);
@@ -140,7 +140,7 @@ TEST(Scenario, CrossKeyProblemPointsAtTheKeyLine) {
 }
 
 TEST(Scenario, NewtonWithCrushingContactsIsRefusedAtTheKey) {
-  // the crushing cap lives in the Gauss-Seidel rows only (dem/contact_solver.hpp)
+  // the crushing cap lives in the Gauss-Seidel rows only (dem/world/contact_solver.hpp)
   const std::string msg = error_of("[ice]\ncontact_crushing = true\n\n[solver]\nmethod = \"newton\"\n");
   EXPECT_NE(msg.find("test.toml:5"), std::string::npos) << msg;
   EXPECT_NE(msg.find("solver.method"), std::string::npos) << msg;

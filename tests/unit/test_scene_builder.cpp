@@ -1,4 +1,4 @@
-// Scenario -> Scene (dem/scene_builder.cpp): every allowed name of every choice key reaches
+// Scenario -> Scene (dem/input/scene_builder.cpp): every allowed name of every choice key reaches
 // its own Scene value, and none falls through to a default.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "dem/errors.hpp"
-#include "dem/scenario.hpp"
+#include "dem/core/errors.hpp"
+#include "dem/input/scenario.hpp"
 
 using namespace icedem;
 

@@ -1,4 +1,4 @@
-// The State is declared once (dem/state.hpp): every field of its values and of the run loop's
+// The State is declared once (dem/step/state.hpp): every field of its values and of the run loop's
 // history is in the list a checkpoint is written and read by, and comes back from a checkpoint
 // file bit for bit. A field added to StateValues but not to visit_fields fails the first tests
 // (the check is shown to catch such a field on a struct made to have one).
@@ -12,8 +12,8 @@
 #include <string>
 #include <type_traits>
 
-#include "dem/checkpoint.hpp"
-#include "dem/field_count.hpp"
+#include "dem/core/field_count.hpp"
+#include "dem/output/checkpoint.hpp"
 
 namespace icedem {
 namespace {
@@ -29,12 +29,17 @@ struct IsOptional<std::optional<T>> : std::true_type {};
 
 TEST(StateFields, EveryValueIsInTheCheckpointsList) {
   EXPECT_EQ(field_count<StateValues>(), visited_count<StateValues>())
-      << "a field of StateValues is missing from visit_fields (dem/state.hpp): a checkpoint would not keep it";
+      << "a field of StateValues is missing from visit_fields (dem/step/state.hpp): a checkpoint would not keep it";
+}
+
+TEST(StateFields, EveryFractureFieldIsInTheCheckpointsList) {
+  EXPECT_EQ(field_count<FractureState>(), visited_count<FractureState>())
+      << "a field of FractureState is missing from visit_fields (dem/fracture/fracture_state.hpp)";
 }
 
 TEST(StateFields, EveryHistoryFieldIsInTheCheckpointsList) {
   EXPECT_EQ(field_count<RunHistory>(), visited_count<RunHistory>())
-      << "a field of RunHistory is missing from visit_fields (dem/checkpoint.hpp)";
+      << "a field of RunHistory is missing from visit_fields (dem/output/checkpoint.hpp)";
 }
 
 // a struct with a field its list leaves out, as a StateValues with a new field would be
@@ -70,7 +75,9 @@ struct Fill {
   template <typename T>
   void operator()(const char*, T& v) {
     ++seed;
-    if constexpr (IsVector<T>::value) {
+    if constexpr (HasFields<T>::value) {
+      visit_fields(v, *this);
+    } else if constexpr (IsVector<T>::value) {
       v.resize(3);
       for (auto& x : v) bytes(x), ++seed;
     } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
@@ -89,16 +96,24 @@ struct Fill {
   }
 };
 
-// every field by name as its bytes (Eigen's vectors and the load by their numbers)
+// every field by name as its bytes (Eigen's vectors and the load by their numbers; the fields
+// of a part with fields of its own as "part.field")
 struct Bytes {
   std::map<std::string, std::string> fields;
+  std::string prefix;
   template <typename T>
   static std::string of(const T& v) {
     return std::string(reinterpret_cast<const char*>(&v), sizeof(T));
   }
   template <typename T>
   void operator()(const char* name, const T& v) {
-    std::string& out = fields[name];
+    if constexpr (HasFields<T>::value) {
+      Bytes part{{}, prefix + name + "."};
+      visit_fields(v, part);
+      fields.insert(part.fields.begin(), part.fields.end());
+      return;
+    }
+    std::string& out = fields[prefix + name];
     if constexpr (IsVector<T>::value) {
       for (const auto& x : v) out += of(x);
     } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
@@ -133,7 +148,7 @@ TEST(StateFields, EveryFieldComesBackFromACheckpointFile) {
   visit_fields(read.values, b);
   StateValues fresh;
   visit_fields(fresh, defaults);
-  ASSERT_EQ(a.fields.size(), field_count<StateValues>());
+  ASSERT_EQ(a.fields.size(), field_count<StateValues>() - 1 + field_count<FractureState>());
   for (const auto& [name, bytes] : a.fields) {
     EXPECT_NE(bytes, defaults.fields[name]) << name << ": the test should set it to a value other than its default";
     EXPECT_EQ(bytes, b.fields[name]) << name << " does not come back from the checkpoint";

@@ -1,9 +1,9 @@
 // Load statistics: analytic mean/std/extremes of synthetic signals, the zero-phase low-pass,
 // peak detection at the floe encounter period (docs/model/validation_targets.md §7) and the window.
-#include "dem/statistics.hpp"
+#include "dem/output/statistics.hpp"
 
-#include "dem/constants.hpp"
-#include "dem/errors.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/core/errors.hpp"
 
 #include <gtest/gtest.h>
 

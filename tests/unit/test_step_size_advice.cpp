@@ -1,9 +1,9 @@
 // The step-size warnings: silent for the paper's settings, and naming the
 // substeps that would bring an over-large Bullet step back within the limits
-// the stress suite measured (dem/step_size_advice.hpp).
+// the stress suite measured (dem/input/step_size_advice.hpp).
 #include <gtest/gtest.h>
 
-#include "dem/step_size_advice.hpp"
+#include "dem/input/step_size_advice.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;

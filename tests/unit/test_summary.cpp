@@ -1,8 +1,8 @@
 // The run summary: the warning for an element that rocks unstably, and the JSON key.
 #include <gtest/gtest.h>
 
-#include "dem/constants.hpp"
-#include "dem/summary.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/output/summary.hpp"
 
 using namespace icedem;
 

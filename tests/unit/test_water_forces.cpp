@@ -1,8 +1,8 @@
 // Water wrench on a floe: buoyancy (reserve buoyancy, equilibrium, righting moment), form
 // drag and skin friction with their torque arms, damping, and the damping coefficients,
 // against docs/model/validation_targets.md §1 and §5 and hand-computed per-face sums.
-#include "dem/constants.hpp"
-#include "dem/water_forces.hpp"
+#include "dem/core/constants.hpp"
+#include "dem/water/water_forces.hpp"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@ grid combination, over its seeds):
   the frequency of the largest power of the ensemble spectrum (the Welch spectra
   of the seeds' surge loads over their analysis windows, averaged), searched
   above MIN_PEAK_HZ (its period beside it);
-- breaks by failure mode and by mechanism (dem/break_context.hpp), summed over seeds;
+- breaks by failure mode and by mechanism (dem/fracture/break_context.hpp), summed over seeds;
 - the summed run time, wall and CPU.
 
 Written as one table: CSV and HDF5 (a compound dataset /configurations, and the

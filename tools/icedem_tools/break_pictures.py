@@ -8,7 +8,7 @@ submerged floe against the cone and breaks it; at f_ii = 0.7 floes break while
 sliding on the slope. For every breakable scenario of the sweep this picks,
 from the kept records (tools/icedem_tools/aggregate.py), the first break (lowest seed,
 then lowest f_is) of the class "pressed under" at f_ii 0.3 and of "on the slope"
-at 0.7 (dem/break_context.hpp); with none of that class, the first break at that
+at 0.7 (dem/fracture/break_context.hpp); with none of that class, the first break at that
 f_ii, and the title says so. The run is repeated with snapshots every 0.2 s up
 to just after the break (runs are deterministic; the title says whether the
 repeat broke the same joint at the same time), in OUT/pictures/, and drawn as

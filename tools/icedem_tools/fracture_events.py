@@ -16,7 +16,7 @@ import numpy as np
 from . import results
 
 
-# rad/s, as kRockingAngularSpeed in dem/constants.hpp: a 0.15 m element turning
+# rad/s, as kRockingAngularSpeed in dem/core/constants.hpp: a 0.15 m element turning
 # this fast moves its edge at over 1 m/s, 15 times the tow speed; floes in the
 # channel turn at a few rad/s at most
 ROCKING_RAD_S = 15.0

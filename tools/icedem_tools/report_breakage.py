@@ -131,7 +131,7 @@ def mechanism_table(records, s, mechanisms, rng):
 
 
 def mechanism_section(records, figs, report):
-    """Breaks by mechanism per f_ii (dem/break_context.hpp), against the paper's Fig. 18."""
+    """Breaks by mechanism per f_ii (dem/fracture/break_context.hpp), against the paper's Fig. 18."""
     L = ["## Breakage mechanisms", "",
          "Every break is recorded with what its floe was doing in the step of the break "
          "(`/fracture/events`; docs/model/breakage.md): whether an element of it touched the structure, the "

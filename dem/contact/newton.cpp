@@ -1,0 +1,308 @@
+#include "dem/contact/newton.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/SparseCholesky>
+
+namespace icedem {
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+// Where project_on_cone takes x: 0 to the apex, 1 inside the cone (x itself), 2 onto its
+// surface; `tangent` gets |x_T|.
+int cone_region(const Eigen::Vector3d& x, double mu, double& tangent) {
+  tangent = tangential_norm(x(1), x(2));
+  return mu * tangent <= -x(0) ? 0 : tangent <= mu * x(0) ? 1 : 2;
+}
+
+// The derivative of project_on_cone at x (symmetric, its eigenvalues in [0, 1]) in
+// `kind`, the cone_region of x.
+Eigen::Matrix3d cone_projection_jacobian(const Eigen::Vector3d& x, double mu, int& kind) {
+  double tangent;
+  kind = cone_region(x, mu, tangent);
+  if (kind == 0) return Eigen::Matrix3d::Zero();
+  if (kind == 1) return Eigen::Matrix3d::Identity();
+  // onto the surface: P = (a, mu a t), a = (x_N + mu |x_T|) / (1 + mu^2), t = x_T / |x_T|
+  const Eigen::Vector2d t = x.tail<2>() / tangent;
+  const double k = 1.0 / (1.0 + mu * mu), a = k * (x(0) + mu * tangent);
+  Eigen::Matrix3d d;
+  d(0, 0) = k;
+  d.block<1, 2>(0, 1) = k * mu * t.transpose();
+  d.block<2, 1>(1, 0) = k * mu * t;
+  d.block<2, 2>(1, 1) =
+      k * mu * mu * t * t.transpose() + (mu * a / tangent) * (Eigen::Matrix2d::Identity() - t * t.transpose());
+  return d;
+}
+
+// position of (row, col) in the compressed values of H
+int slot(const SparseMatrix& H, int row, int col) {
+  const int* begin = H.innerIndexPtr() + H.outerIndexPtr()[col];
+  const int* end = H.innerIndexPtr() + H.outerIndexPtr()[col + 1];
+  return static_cast<int>(std::lower_bound(begin, end, row) - H.innerIndexPtr());
+}
+
+// The inner problem's data and its function, gradient and Hessian pieces.
+class InnerProblem {
+ public:
+  InnerProblem(const ContactProblem& p, double rho_fraction)
+      : p_(p), g_(global_form(p)), nb_(static_cast<int>(p.bodies.size())), nc_(static_cast<int>(p.contacts.size())) {
+    // the part of the Hessian that does not change: the mass with the soft joints folded
+    // in (throws if a joint row is rigid)
+    const SparseMatrix Hc = folded_mass_matrix(g_).Mt;
+    c_inv_ = g_.compliance.cwiseInverse();
+    Jj_t_ = g_.Jj.transpose();
+    Jc_ = g_.Jc;
+    Jc_t_ = g_.Jc.transpose();
+
+    // each contact's weight: a fraction of its effective inverse mass J M^-1 J^T
+    inv_mass_.resize(nb_);
+    for (int i = 0; i < nb_; ++i) inv_mass_[i] = inverse_mass(p.bodies[i]);
+    rho_.resize(nc_);
+    for (int c = 0; c < nc_; ++c) {
+      const ProblemContact& k = p.contacts[c];
+      double trace = 0.0;
+      if (k.a >= 0) trace += (k.ja * inv_mass_[k.a] * k.ja.transpose()).trace();
+      if (k.b >= 0) trace += (k.jb * inv_mass_[k.b] * k.jb.transpose()).trace();
+      rho_(c) = rho_fraction * trace / 3.0;
+    }
+
+    // the Hessian's lower triangle: Hc and every contact's body blocks
+    std::vector<Eigen::Triplet<double>> t;
+    for (int col = 0; col < Hc.outerSize(); ++col)
+      for (SparseMatrix::InnerIterator it(Hc, col); it; ++it)
+        if (it.row() >= it.col()) t.emplace_back(it.row(), it.col(), it.value());
+    auto each_block = [&](const ProblemContact& k, auto&& visit) {
+      for (int i : {k.a, k.b})
+        for (int j : {k.a, k.b})
+          if (i >= 0 && j >= 0 && i >= j) visit(i, j);
+    };
+    for (const ProblemContact& k : p.contacts)
+      each_block(k, [&](int i, int j) {
+        for (int r = 0; r < 6; ++r)
+          for (int s = 0; s < 6; ++s)
+            if (6 * i + r >= 6 * j + s) t.emplace_back(6 * i + r, 6 * j + s, 0.0);
+      });
+    H_.resize(6 * nb_, 6 * nb_);
+    H_.setFromTriplets(t.begin(), t.end());
+    H_.makeCompressed();
+    base_ = Eigen::Map<const Eigen::VectorXd>(H_.valuePtr(), H_.nonZeros());
+    slots_.resize(nc_);
+    for (int c = 0; c < nc_; ++c)
+      each_block(p.contacts[c], [&](int i, int j) {
+        for (int r = 0; r < 6; ++r)
+          for (int s = 0; s < 6; ++s)
+            slots_[c].push_back(6 * i + r >= 6 * j + s ? slot(H_, 6 * i + r, 6 * j + s) : -1);
+      });
+  }
+
+  const GlobalForm& global() const { return g_; }
+  int contacts() const { return nc_; }
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& Jc() const { return Jc_; }
+
+  // z_c = rb_c - (u_c + s_c) / rho_c, whose projection is the contact's impulse
+  Eigen::Vector3d argument(int c, const Eigen::VectorXd& rb, const Eigen::Vector3d& uc, const Eigen::VectorXd& s) const {
+    Eigen::Vector3d z = rb.segment<3>(3 * c) - uc / rho_(c);
+    z(0) -= s(c) / rho_(c);
+    return z;
+  }
+
+  // the impulses r(v) and the gradient G(v) = M (v - v_free) + Jj^T C^-1 (Jj v + b) - Jc^T r
+  void gradient(const Eigen::VectorXd& v, const Eigen::VectorXd& u, const Eigen::VectorXd& rb,
+                const Eigen::VectorXd& s, Eigen::VectorXd& r, Eigen::VectorXd& G) const {
+    for (int c = 0; c < nc_; ++c)
+      r.segment<3>(3 * c) = project_on_cone(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c));
+    G = g_.M * (v - g_.v_free) - Jc_t_ * r;
+    if (g_.Jj.rows()) G += Jj_t_ * c_inv_.cwiseProduct(g_.Jj * v + g_.b);
+  }
+
+  // where each contact's argument goes under the projection (cone_projection_jacobian's kinds)
+  void kinds(const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s,
+             std::vector<int>& out) const {
+    out.resize(nc_);
+    double tangent;
+    for (int c = 0; c < nc_; ++c) out[c] = cone_region(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), tangent);
+  }
+
+  // H = Hc + Jc^T diag(dP_c / rho_c) Jc at the current arguments; `kinds` gets where each went
+  const SparseMatrix& hessian(const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s,
+                              std::vector<int>& kinds) {
+    Eigen::Map<Eigen::VectorXd>(H_.valuePtr(), H_.nonZeros()) = base_;
+    kinds.resize(nc_);
+    for (int c = 0; c < nc_; ++c) {
+      const ProblemContact& k = p_.contacts[c];
+      const Eigen::Matrix3d B =
+          cone_projection_jacobian(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), kinds[c]) / rho_(c);
+      if (kinds[c] == 0) continue;
+      int at = 0;
+      for (int i : {k.a, k.b})
+        for (int j : {k.a, k.b}) {
+          if (i < 0 || j < 0 || i < j) continue;
+          const ContactJacobian& Ji = i == k.a ? k.ja : k.jb;
+          const ContactJacobian& Jk = j == k.a ? k.ja : k.jb;
+          const Matrix6d block = Ji.transpose() * B * Jk;
+          for (int rr = 0; rr < 6; ++rr)
+            for (int ss = 0; ss < 6; ++ss, ++at)
+              if (slots_[c][at] >= 0) H_.valuePtr()[slots_[c][at]] += block(rr, ss);
+        }
+    }
+    return H_;
+  }
+
+  // The derivative of f along d at step a: phi'(a) = G(v + a d) . d, from the pieces
+  // that do not depend on a (so a trial costs O(contacts + joint rows)).
+  struct Line {
+    double md_v = 0, md_d = 0;       // d^T M (v - v_free), d^T M d
+    Eigen::VectorXd jj_v, jj_d;      // C^-1 (Jj v + b) and Jj d
+    Eigen::VectorXd u, ud;           // Jc v + w, Jc d
+  };
+  Line line(const Eigen::VectorXd& v, const Eigen::VectorXd& u, const Eigen::VectorXd& d) const {
+    Line l;
+    const Eigen::VectorXd Md = g_.M * d;
+    l.md_v = Md.dot(v - g_.v_free);
+    l.md_d = Md.dot(d);
+    if (g_.Jj.rows()) {
+      l.jj_v = g_.Jj * v + g_.b;
+      l.jj_d = g_.Jj * d;
+    }
+    l.u = u;
+    l.ud = Jc_ * d;
+    return l;
+  }
+  double slope(const Line& l, double a, const Eigen::VectorXd& rb, const Eigen::VectorXd& s) const {
+    double total = l.md_v + a * l.md_d;
+    if (l.jj_d.size()) total += l.jj_d.dot(c_inv_.cwiseProduct(l.jj_v + a * l.jj_d));
+    for (int c = 0; c < nc_; ++c) {
+      const Eigen::Vector3d uc = l.u.segment<3>(3 * c) + a * l.ud.segment<3>(3 * c);
+      total -= l.ud.segment<3>(3 * c).dot(project_on_cone(argument(c, rb, uc, s), g_.mu(c)));
+    }
+    return total;
+  }
+
+  // M^-1 x, body by body
+  Eigen::VectorXd inverse_mass_times(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd y(x.size());
+    for (int i = 0; i < nb_; ++i) y.segment<6>(6 * i) = inv_mass_[i] * x.segment<6>(6 * i);
+    return y;
+  }
+
+  Eigen::VectorXd joint_impulses(const Eigen::VectorXd& v) const {
+    if (!g_.Jj.rows()) return Eigen::VectorXd();
+    return -c_inv_.cwiseProduct(g_.Jj * v + g_.b);
+  }
+
+ private:
+  const ContactProblem& p_;
+  GlobalForm g_;
+  int nb_, nc_;
+  Eigen::VectorXd c_inv_, rho_;
+  SparseMatrix Jj_t_, Jc_t_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> Jc_;
+  std::vector<Matrix6d> inv_mass_;
+  SparseMatrix H_;
+  Eigen::VectorXd base_;
+  std::vector<std::vector<int>> slots_;
+};
+
+// The step length a > 0 where phi'(a) = 0 (phi convex: phi' nondecreasing, phi'(0) < 0),
+// to within a tenth of |phi'(0)| (the strong Wolfe condition): expand from a = 1 until
+// phi' changes sign, then regula falsi (Illinois) on the bracket.
+template <class Slope>
+double exact_line_search(Slope&& slope, double slope0) {
+  const double enough = 0.1 * std::abs(slope0);
+  double lo = 0.0, f_lo = slope0, hi = 1.0, f_hi = slope(1.0);
+  if (std::abs(f_hi) <= enough) return 1.0;
+  for (int k = 0; f_hi < 0 && k < 30; ++k) lo = hi, f_lo = f_hi, hi *= 2.0, f_hi = slope(hi);
+  if (f_hi < 0) return hi;
+  int side = 0;
+  double a = hi;
+  for (int k = 0; k < 60; ++k) {
+    a = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    const double f = slope(a);
+    if (std::abs(f) <= enough) break;
+    if (f < 0) {
+      lo = a, f_lo = f;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = a, f_hi = f;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    }
+  }
+  return a;
+}
+
+}  // namespace
+
+SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& options) {
+  InnerProblem inner(p, settings_.rho_fraction);
+  const GlobalForm& g = inner.global();
+  const int n = p.dofs(), m = p.contact_rows(), nc = inner.contacts();
+  const Merit merit(options.merit, p, local_q(g), g.mu);
+
+  // start: the warm start's impulses and the velocities they give
+  Eigen::VectorXd rb = options.warm_start ? contact_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(m));
+  const Eigen::VectorXd l0 =
+      options.warm_start ? joint_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(p.joint_rows()));
+  Eigen::VectorXd v = velocities(g, rb, l0);
+  Eigen::VectorXd u = inner.Jc() * v + g.w;
+  Eigen::VectorXd s(nc);
+  auto update_shift = [&] {
+    for (int c = 0; c < nc; ++c) s(c) = g.mu(c) * tangential_norm(u(3 * c + 1), u(3 * c + 2));
+  };
+  update_shift();
+
+  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> cholesky;
+  std::vector<int> kinds, kinds_after;
+  Eigen::VectorXd r(m), G(n), d(n);
+  SolverAnswer answer;
+  answer.residual = std::numeric_limits<double>::infinity();
+  int steps = 0;
+  bool analysed = false, failed = false;
+  while (steps < options.max_iterations && !failed) {
+    // inner: Newton on f for this centre and shift
+    for (int k = 0; k < settings_.inner_iterations && steps < options.max_iterations; ++k) {
+      inner.gradient(v, u, rb, s, r, G);
+      const SparseMatrix& H = inner.hessian(rb, u, s, kinds);
+      if (!analysed) cholesky.analyzePattern(H), analysed = true;
+      cholesky.factorize(H);
+      // H is positive definite unless a body's mass matrix is not: nothing more to do
+      if (cholesky.info() != Eigen::Success) {
+        failed = true;
+        break;
+      }
+      d = -cholesky.solve(G);
+      ++steps;
+      const double slope0 = G.dot(d);
+      if (!(slope0 < 0)) break;  // at the minimum to round-off
+      const InnerProblem::Line line = inner.line(v, u, d);
+      const double a = exact_line_search([&](double x) { return inner.slope(line, x, rb, s); }, slope0);
+      v += a * d;
+      u += a * line.ud;
+      // a full step that kept every contact where it was has reached the exact minimum of
+      // this piecewise quadratic (up to the cone's curvature): the inner problem is solved
+      inner.kinds(rb, u, s, kinds_after);
+      if (std::abs(a - 1.0) < 1e-3 && kinds_after == kinds) break;
+    }
+    // judged on what the answer is: the impulses r (and the joints' l at v) and the
+    // velocities they give, v - M^-1 G, not on v itself (the inner loop may stop short)
+    inner.gradient(v, u, rb, s, r, G);
+    const Eigen::VectorXd u_r = inner.Jc() * (v - inner.inverse_mass_times(G)) + g.w;
+    answer.residual = merit(r, u_r);
+    if (answer.residual <= options.tolerance) break;
+    // outer: the impulses become the proximal centre, the sliding speeds the shift
+    rb = r;
+    update_shift();
+  }
+  answer.sweeps = steps;
+  answer.capped = answer.residual > options.tolerance;
+  answer.r = r;
+  answer.l = inner.joint_impulses(v);
+  return answer;
+}
+
+}  // namespace icedem

@@ -1,0 +1,99 @@
+// Per-step numerical-health diagnostics: what the health check measures after
+// every step, the recorder writes under /diagnostics and the summary reduces to
+// its extremes. The stress suite (scripts/stress) judges a run by them, so each
+// has a physical bound there.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+
+namespace icedem {
+
+struct StepDiagnostics {
+  double max_angular_speed = 0;     // rad/s, fastest-turning awake floe or element
+  double max_speed = 0;             // m/s, fastest awake floe or element (centre of mass)
+  double kinetic_energy = 0;        // J, translation + rotation of the awake ice bodies
+  double ice_mass = 0;              // kg, ice in the Bullet world with its centre inside the tank
+  double max_joint_gap = 0;         // m, widest separation of an intact joint's two anchors
+  double max_cone_penetration = 0;  // m, deepest ice vertex inside the structure hull (radial)
+  double max_contact_penetration = 0;  // m, deepest contact point of the step's manifolds (overlap of two bodies)
+  double solver_iterations = 0;     // most contact sweeps an island used (dem/world/contact_solver.hpp)
+  double solver_residual = 0;       // largest residual an island ended its sweeps with
+  double solver_capped = 0;         // 1 if an island reached solver.iterations above solver.tolerance
+  double boundary_load = 0;         // N, fixed bodies' resistance to the structure's push (dem/world/boundary_load.hpp)
+  double locked = 0;                // 1 if the boundaries carry kLockedShare of the surge load or more
+};
+
+/// One diagnostic: its dataset name under /diagnostics, unit and meaning.
+struct DiagnosticColumn {
+  const char* name;
+  const char* unit;
+  const char* description;
+  double StepDiagnostics::*field;
+};
+
+inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
+    {"max_angular_speed", "rad/s",
+     "fastest-turning awake floe or element (a growing rocking of elements shows here before a blow-up)",
+     &StepDiagnostics::max_angular_speed},
+    {"max_speed", "m/s", "fastest awake floe or element (centre of mass)", &StepDiagnostics::max_speed},
+    {"kinetic_energy", "J", "kinetic energy (translation and rotation) of the awake ice",
+     &StepDiagnostics::kinetic_energy},
+    {"ice_mass", "kg", "mass of the ice in the world with its centre inside the tank", &StepDiagnostics::ice_mass},
+    {"max_joint_gap", "m", "widest separation of the two anchors of an intact element joint",
+     &StepDiagnostics::max_joint_gap},
+    {"max_cone_penetration", "m", "deepest ice vertex inside the structure hull, radially (tunnelling shows here)",
+     &StepDiagnostics::max_cone_penetration},
+    {"max_contact_penetration", "m",
+     "deepest contact point of any two bodies in Bullet's manifolds after the step (their overlap; the "
+     "split-impulse position sweeps push it out, solver.position_iterations)",
+     &StepDiagnostics::max_contact_penetration},
+    {"solver_iterations", "1",
+     "most PGS sweeps over the contacts any island used in the step (the cap is solver.iterations); with "
+     "another solver.method, most of its iterations (cap solver.method_iterations)",
+     &StepDiagnostics::solver_iterations},
+    {"solver_residual", "1",
+     "largest residual an island ended the step's sweeps with: the relative change of its bodies' net impulses and "
+     "of its load on the structure in the last sweep over 1 - rate, an estimate of the error left "
+     "(dem/world/contact_solver.hpp); with another solver.method, the largest merit (natural-map residual, "
+     "docs/model/contact_problems.md)",
+     &StepDiagnostics::solver_residual},
+    {"solver_capped", "1",
+     "1 if an island reached solver.iterations with its residual above solver.tolerance (another "
+     "solver.method: solver.method_iterations with its merit above solver.merit_tolerance)",
+     &StepDiagnostics::solver_capped},
+    {"boundary_load", "N",
+     "load the fixed bodies (walls, mother ice, frozen floes) take off the structure: their contact impulses on "
+     "the ice of the islands touching the structure, along its travel, over the step (dem/world/boundary_load.hpp)",
+     &StepDiagnostics::boundary_load},
+    {"locked", "1",
+     "1 if the fixed bodies carry half the structure's surge load or more: the pack is locked against a "
+     "boundary and the load is the confinement's (docs/model/contact_problems.md, \"Locked packs\")",
+     &StepDiagnostics::locked},
+};
+inline constexpr std::size_t kDiagnosticCount = std::size(kDiagnosticColumns);
+
+/// The extremes of the diagnostics over a run.
+struct DiagnosticExtremes {
+  StepDiagnostics max;                          // largest value of each diagnostic
+  double max_time[kDiagnosticCount] = {};       // s, when (kDiagnosticColumns order)
+  double initial_ice_mass = -1;                 // kg, after the first step (-1: no step yet)
+  double max_ice_mass_change = 0;               // largest |m - m0| / m0 (ice lost or created)
+
+  void add(double time, const StepDiagnostics& d) {
+    for (std::size_t c = 0; c < kDiagnosticCount; ++c) {
+      const auto field = kDiagnosticColumns[c].field;
+      if (d.*field > max.*field) {
+        max.*field = d.*field;
+        max_time[c] = time;
+      }
+    }
+    if (initial_ice_mass < 0) initial_ice_mass = d.ice_mass;
+    if (initial_ice_mass > 0)
+      max_ice_mass_change = std::max(max_ice_mass_change, std::abs(d.ice_mass - initial_ice_mass) / initial_ice_mass);
+  }
+};
+
+}  // namespace icedem

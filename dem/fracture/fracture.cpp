@@ -1,0 +1,91 @@
+#include "dem/fracture/fracture.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "dem/fracture/break_context.hpp"
+#include "dem/fracture/ice_lattice.hpp"
+#include "dem/world/bullet_eigen.hpp"
+
+namespace icedem {
+
+JointLoads joint_loads(const World& world, const IceJoint& joint) {
+  const Eigen::Isometry3d pose_a = body_pose(*world.floes()[joint.body_a].body);
+  return decompose_joint_load(to_eigen(joint.feedback->m_appliedForceBodyA),
+                              to_eigen(joint.feedback->m_appliedTorqueBodyA), pose_a.translation(),
+                              pose_a * joint.midpoint_a, pose_a.linear() * joint.axis_a,
+                              pose_a.linear() * Eigen::Vector3d::UnitY());
+}
+
+namespace {
+
+// First-order low-pass y += a (x - y), a = h / (tau + h): a load held for much
+// less than tau reaches only a fraction of its value, a sustained load reaches
+// all of it. It removes the one-step impulses of an unconverged PGS solve
+// without lowering the static capacity of a joint.
+void low_pass(JointLoads& y, const JointLoads& x, double a) {
+  y.axial += a * (x.axial - y.axial);
+  y.shear_in_plane += a * (x.shear_in_plane - y.shear_in_plane);
+  y.shear_vertical += a * (x.shear_vertical - y.shear_vertical);
+  y.bending_out_of_plane += a * (x.bending_out_of_plane - y.bending_out_of_plane);
+  y.bending_in_plane += a * (x.bending_in_plane - y.bending_in_plane);
+  y.torsion += a * (x.torsion - y.torsion);
+}
+
+}  // namespace
+
+void check_fracture(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h, FractureState& fracture) {
+  std::vector<IceJoint>& joints = world.joints();
+  if (joints.empty()) return;
+  const JointCapacity capacity =
+      paper_joint_capacity(scene.fracture.element_size, scene.ice.thickness, scene.ice.compressive_strength,
+                           scene.ice.shear_strength, scene.ice.bending_strength);
+  const double tau = scene.fracture.load_filter_time;
+  const double a = h / (tau + h);
+  if (tau > 0 && fracture.filtered_joint_loads.size() != joints.size())
+    fracture.filtered_joint_loads.resize(joints.size(), JointLoads{});
+
+  // The joints that fail this step are broken after all of them are found: breaking one
+  // refreshes its floe's broadphase proxies, which drops the floe's contact manifolds until
+  // the next collision pass, and the context of the floe's other breaks of the step (its
+  // contacts with the structure and with other floes) must be read from those manifolds.
+  std::vector<std::size_t> failed;
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    IceJoint& joint = joints[i];
+    if (!joint.constraint) continue;  // broken already
+    const btRigidBody& body_a = *world.floes()[joint.body_a].body;
+    const btRigidBody& body_b = *world.floes()[joint.body_b].body;
+    // asleep: the feedback is stale (docs/model/bullet.md) and the filter keeps its last value
+    if (liveness(body_a) != Liveness::kAwake && liveness(body_b) != Liveness::kAwake && scene.activation.skip_asleep)
+      continue;
+
+    JointLoads loads = joint_loads(world, joint);
+    if (tau > 0) {
+      low_pass(fracture.filtered_joint_loads[i], loads, a);
+      loads = fracture.filtered_joint_loads[i];
+    }
+    double ratio = 0;
+    const FailureMode mode = failure_mode(loads, capacity, ratio);
+    const Eigen::Vector3d at = body_pose(body_a) * joint.midpoint_a;
+    if (fracture.floe_margins.size() <= static_cast<std::size_t>(joint.floe))
+      fracture.floe_margins.resize(joint.floe + 1);
+    FloeFailureMargin& margin = fracture.floe_margins[joint.floe];
+    margin.max_ratio = std::max(margin.max_ratio, ratio);
+    margin.min_distance =
+        std::min(margin.min_distance, distance_from_structure(scene, structure, at));
+    if (mode == FailureMode::kNone) continue;
+
+    BreakContext context = break_context(scene, world, joint.floe, at, structure, h);
+    context.ratios = criterion_ratios(loads, capacity);
+    const BreakMechanism mechanism = classify_break(context, scene.ice.thickness);
+    const std::array<double, kFailureModes>& r = context.ratios;  // FailureMode order
+    fracture.add(FractureEvent{
+        time, joint.floe, joint.index, static_cast<int>(mode), ratio, at.x(), at.z(),
+        static_cast<int>(mechanism), context.touching_structure ? 1 : 0, context.depth, context.distance,
+        context.structure_force, context.press_down, context.press_toward, r[0], r[1], r[2], r[3], r[4]});
+    failed.push_back(i);
+  }
+  for (std::size_t i : failed) break_joint(world, joints[i]);
+}
+
+}  // namespace icedem

@@ -1,0 +1,235 @@
+#include "dem/fracture/ice_lattice.hpp"
+
+#include "dem/world/joint_springs.hpp"
+
+#include <functional>
+#include <map>
+
+namespace icedem {
+
+ElementLattice floe_lattice(const Polygon& shape, double element_size, double& yaw0) {
+  yaw0 = principal_yaw(shape);
+  Polygon outline;
+  for (const Eigen::Vector2d& v : shape) outline.push_back(rotate(v, -yaw0));
+  return make_element_lattice(outline, element_size);
+}
+
+void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, const FractureSettings& fracture,
+                      const IceSettings& ice, double friction) {
+  // the lattice in the floe's principal frame (elements are squares in that frame)
+  double yaw0 = 0;
+  const double Le = fracture.element_size;
+  const ElementLattice lattice = floe_lattice(floe.shape, Le, yaw0);
+  const FloeShape& element = world.shape(square(Le));
+
+  const double yaw = floe.yaw + yaw0;
+  const btQuaternion rotation(btVector3(0, 1, 0), yaw);
+
+  // far from the structure the floe is one rigid body: its elements wait outside the world
+  const bool dormant = fracture.lattice_radius > 0;
+  btTransform stand_in_pose;
+  if (dormant) {
+    const FloeShape& whole = world.shape(floe.shape);
+    stand_in_pose.setIdentity();
+    stand_in_pose.setOrigin(btVector3(floe.centre.x(), y, floe.centre.y()));
+    stand_in_pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + whole.principal_yaw));
+    DormantLattice d;
+    d.stand_in = world.add_resting_floe(whole, stand_in_pose, floe_id, friction);
+    world.floes()[d.stand_in].stand_in = true;
+    world.floes()[d.stand_in].lattice = static_cast<int>(world.lattices().size());
+    d.first_element = static_cast<int>(world.floes().size());
+    d.elements = static_cast<int>(lattice.centres.size());
+    d.first_joint = static_cast<int>(world.joints().size());
+    d.joints = static_cast<int>(lattice.joints.size());
+    d.radius = whole.radius;
+    world.lattices().push_back(std::move(d));
+  }
+
+  const int first = static_cast<int>(world.floes().size());
+  for (const Eigen::Vector2d& c : lattice.centres) {
+    const Eigen::Vector2d at = floe.centre + rotate(c, yaw);
+    btTransform pose;
+    pose.setIdentity();
+    pose.setOrigin(btVector3(at.x(), y, at.y()));
+    pose.setRotation(rotation);
+    // one piece: its elements do not collide with each other (fragment 0)
+    const int index = world.add_body(element, pose, floe_id, friction, 0, !dormant);
+    if (dormant) {
+      DormantLattice& d = world.lattices().back();
+      world.floes()[index].lattice = static_cast<int>(world.lattices().size()) - 1;
+      d.offsets.push_back(stand_in_pose.inverse() * pose);
+    }
+  }
+
+  // fixed joints at the middle of each shared face; softness set on all six axes
+  // (axis -1, Bullet's default for setParam, is silently ignored)
+  int index = 0;
+  for (const LatticeJoint& j : lattice.joints) {
+    IceJoint joint;
+    joint.floe = floe_id;
+    joint.index = index++;
+    joint.body_a = first + j.a;
+    joint.body_b = first + j.b;
+    const Eigen::Vector2d mid_a = j.midpoint - lattice.centres[j.a];
+    const Eigen::Vector2d mid_b = j.midpoint - lattice.centres[j.b];
+    joint.midpoint_a = Eigen::Vector3d(mid_a.x(), 0, mid_a.y());
+    joint.axis_a = Eigen::Vector3d(j.axis.x(), 0, j.axis.y());
+    btTransform frame_a, frame_b;
+    frame_a.setIdentity();
+    frame_b.setIdentity();
+    frame_a.setOrigin(btVector3(mid_a.x(), 0, mid_a.y()));
+    frame_b.setOrigin(btVector3(mid_b.x(), 0, mid_b.y()));
+    btRigidBody& body_a = *world.floes()[joint.body_a].body;
+    btRigidBody& body_b = *world.floes()[joint.body_b].body;
+    // elastic: springs of the ice, the same at any step (dem/world/joint_springs.hpp); else
+    // Bullet's ERP and CFM below set the stiffness
+    if (fracture.elastic_joints)
+      joint.constraint = std::make_unique<SpringJoint>(body_a, body_b, frame_a, frame_b,
+                                                       elastic_joint_springs(fracture, ice, joint.axis_a), kSpringJointErp);
+    else
+      joint.constraint = std::make_unique<btFixedConstraint>(body_a, body_b, frame_a, frame_b);
+    for (int axis = 0; axis < 6; ++axis) {
+      joint.constraint->setParam(BT_CONSTRAINT_STOP_CFM, fracture.cfm, axis);
+      joint.constraint->setParam(BT_CONSTRAINT_STOP_ERP, fracture.elastic_joints ? kSpringJointErp : fracture.erp, axis);
+    }
+    // more iterations for the joints than for contacts where asked: Bullet solves a
+    // constraint's rows for max(its override, solver.iterations) sweeps, contacts
+    // only for solver.iterations (btSequentialImpulseConstraintSolver)
+    if (fracture.joint_iterations > 0) joint.constraint->setOverrideNumSolverIterations(fracture.joint_iterations);
+    joint.feedback = std::make_unique<btJointFeedback>();
+    joint.constraint->setJointFeedback(joint.feedback.get());
+    // a dormant lattice's joints wait for wake_lattice
+    world.add_joint(std::move(joint), !dormant);
+  }
+}
+
+void wake_lattice(World& world, DormantLattice& lattice) {
+  if (lattice.replaced) return;
+  std::vector<FloeBody>& floes = world.floes();
+  world.enter_reached(lattice.stand_in);  // if nothing had reached it: as if it had been in the world
+  FloeBody& whole = floes[lattice.stand_in];
+  if (whole.frozen) world.unfreeze(whole);
+  btRigidBody& w = *whole.body;
+  const btTransform T = w.getCenterOfMassTransform();
+  const btVector3 v = w.getLinearVelocity(), omega = w.getAngularVelocity();
+  world.dynamics().removeRigidBody(&w);
+  w.forceActivationState(DISABLE_SIMULATION);
+  const bool sleeping = world.settings().activation.sleeping;
+  for (int i = 0; i < lattice.elements; ++i) {
+    btRigidBody& e = *floes[lattice.first_element + i].body;
+    const btTransform pose = T * lattice.offsets[i];
+    e.setCenterOfMassTransform(pose);  // also the interpolation pose
+    e.getMotionState()->setWorldTransform(pose);
+    // rigid-body motion of the stand-in at the element's place
+    e.setLinearVelocity(v + omega.cross(pose.getOrigin() - T.getOrigin()));
+    e.setAngularVelocity(omega);
+    world.enter_world(e);
+    // awake: the structure is near (the sleep clock starts again)
+    e.forceActivationState(sleeping ? ACTIVE_TAG : DISABLE_DEACTIVATION);
+    e.setDeactivationTime(0);
+  }
+  for (int j = 0; j < lattice.joints; ++j) {
+    btTypedConstraint* c = world.joints()[lattice.first_joint + j].constraint.get();
+    if (c) world.dynamics().addConstraint(c, false);
+  }
+  lattice.replaced = true;
+}
+
+bool make_dormant(World& world, DormantLattice& lattice) {
+  if (!lattice.replaced || lattice.broken) return false;
+  std::vector<FloeBody>& floes = world.floes();
+  for (int i = 0; i < lattice.elements; ++i)
+    if (floes[lattice.first_element + i].frozen) return false;
+  // the floe's motion: centre of mass and mean velocities of its (equal) elements,
+  // orientation from the first element through its offset
+  btVector3 v(0, 0, 0), omega(0, 0, 0);
+  bool awake = false;
+  for (int i = 0; i < lattice.elements; ++i) {
+    const btRigidBody& e = *floes[lattice.first_element + i].body;
+    v += e.getLinearVelocity();
+    omega += e.getAngularVelocity();
+    awake = awake || liveness(e) == Liveness::kAwake;
+  }
+  const double n = lattice.elements;
+  btTransform T = floes[lattice.first_element].body->getCenterOfMassTransform() * lattice.offsets[0].inverse();
+  T.setOrigin(lattice_centre(world, lattice));
+
+  for (int j = 0; j < lattice.joints; ++j)
+    world.dynamics().removeConstraint(world.joints()[lattice.first_joint + j].constraint.get());
+  for (int i = 0; i < lattice.elements; ++i) {
+    btRigidBody& e = *floes[lattice.first_element + i].body;
+    world.dynamics().removeRigidBody(&e);
+    e.forceActivationState(DISABLE_SIMULATION);
+  }
+  btRigidBody& w = *floes[lattice.stand_in].body;
+  w.setCenterOfMassTransform(T);
+  w.getMotionState()->setWorldTransform(T);
+  w.setLinearVelocity(v / n);
+  w.setAngularVelocity(omega / n);
+  world.enter_world(w);
+  w.forceActivationState(!world.settings().activation.sleeping ? DISABLE_DEACTIVATION
+                         : awake                                ? ACTIVE_TAG
+                                                                : ISLAND_SLEEPING);
+  w.setDeactivationTime(0);
+  lattice.replaced = false;
+  return true;
+}
+
+btVector3 lattice_centre(const World& world, const DormantLattice& lattice) {
+  const std::vector<FloeBody>& floes = world.floes();
+  if (!lattice.replaced) return floes[lattice.stand_in].body->getCenterOfMassPosition();
+  btVector3 centre(0, 0, 0);
+  for (int i = 0; i < lattice.elements; ++i) centre += floes[lattice.first_element + i].body->getCenterOfMassPosition();
+  return centre / lattice.elements;
+}
+
+Eigen::Isometry3d output_pose(const World& world, const FloeBody& floe) {
+  if (floe.lattice >= 0 && !floe.stand_in) {
+    const DormantLattice& d = world.lattices()[floe.lattice];
+    if (!d.replaced) {
+      const int i = floe.body->getUserIndex2() - d.first_element;
+      return to_eigen(world.floes()[d.stand_in].body->getCenterOfMassTransform() * d.offsets[i]);
+    }
+  }
+  return body_pose(*floe.body);
+}
+
+bool output_awake(const World& world, const FloeBody& floe) {
+  if (floe.lattice >= 0 && !floe.stand_in && !world.lattices()[floe.lattice].replaced)
+    return liveness(*world.floes()[world.lattices()[floe.lattice].stand_in].body) == Liveness::kAwake;
+  return liveness(*floe.body) == Liveness::kAwake;
+}
+
+namespace {
+
+void update_fragments(World& world, int floe_id) {
+  std::vector<FloeBody>& floes = world.floes();
+  // fragments: connected components of the floe's elements over intact joints
+  std::vector<int> bodies;
+  for (int b = 0; b < static_cast<int>(floes.size()); ++b)
+    if (floes[b].floe_id == floe_id && floes[b].fragment >= 0) bodies.push_back(b);
+  std::map<int, int> parent;
+  for (int b : bodies) parent[b] = b;
+  std::function<int(int)> root = [&](int x) { return parent[x] == x ? x : parent[x] = root(parent[x]); };
+  for (const IceJoint& j : world.joints())
+    if (j.floe == floe_id && j.constraint) parent[root(j.body_a)] = root(j.body_b);
+  for (int b : bodies) floes[b].fragment = root(b);
+  // new broadphase pairs between pieces that came apart: re-create their proxies
+  for (int b : bodies) {
+    floes[b].body->activate(true);
+    world.dynamics().refreshBroadphaseProxy(floes[b].body);
+  }
+}
+
+}  // namespace
+
+void break_joint(World& world, IceJoint& joint) {
+  if (!joint.constraint) return;
+  const int lattice = world.floes()[joint.body_a].lattice;
+  if (lattice >= 0) world.lattices()[lattice].broken = true;
+  world.dynamics().removeConstraint(joint.constraint.get());
+  joint.constraint.reset();
+  update_fragments(world, joint.floe);
+}
+
+}  // namespace icedem

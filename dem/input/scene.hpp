@@ -1,0 +1,237 @@
+// The Scene: the immutable, validated, SI input of one run.
+//
+// Built once from the scenario file (dem/input/scenario.hpp) and never changed while
+// stepping; everything that changes lives in the State (dem/step/state.hpp). Field
+// meanings and defaults are declared in dem/input/scenario_keys.cpp.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace icedem {
+
+/// One station of the structure's hull profile.
+struct ProfileStation {
+  double y;       // m, height above the still-water line (negative below)
+  double radius;  // m
+};
+
+struct TimeSettings {
+  double dt;        // s, output and control step
+  double duration;  // s, simulated time
+  int substeps;     // Bullet steps per dt
+};
+
+enum class Broadphase { kDbvt, kSweepAndPrune };
+
+/// Order of the rows within a sweep.
+enum class SweepOrder {
+  kBullet,         // the order Bullet builds them (manifold by manifold): its arrays' history
+  kCanonical,      // by the bodies (contacts) and joints (joint rows) they act on: the same in a
+                   // world rebuilt from a checkpoint (dem/output/world_state.hpp)
+  kFromStructure,  // canonical, then the contacts by distance from the structure axis, outward
+                   // on even sweeps, inward on odd
+};
+
+struct SolverSettings {
+  int iterations;             // cap of PGS sweeps over the contacts per island and Bullet step
+  double tolerance;           // -, residual that ends an island's sweeps early; 0 = never
+  double warm_start;          // -, fraction of the last step's impulses a step starts from
+  bool friction_warm_start;   // friction impulses warm-started too
+  SweepOrder order;           // of the rows in a sweep
+  double sor;                 // -, over-relaxation of the contact rows
+  Broadphase broadphase;
+  bool split_impulse;         // position correction kept out of the contact impulses
+  double contact_erp;         // -, fraction of penetration corrected per step
+  std::string method;         // contact method of an island: "pgs" (the sweeps above), "pgs_cone", "newton", "apgd"
+  double merit_tolerance;     // -, merit that ends a method's solve
+  std::string merit;          // which: "impulse" (forces relative to forces) or "siconos" (dem/contact/merit.hpp)
+  double joint_merit_tolerance;  // -, the same for an island with joint rows, if smaller
+  double structure_merit_tolerance;  // -, the same for an island touching the structure, if smaller
+  int method_iterations;      // cap of the method's iterations per island and Bullet step
+  int position_iterations;    // cap of the split-impulse position sweeps per island and Bullet step
+};
+
+struct StructureSettings {
+  double speed;                         // m/s, surge, prescribed
+  double start_x;                       // m, axis position at t = 0
+  double start_z;                       // m
+  std::vector<ProfileStation> profile;  // keel to deck, y increasing
+  int segments;                         // polygon sides per station
+};
+
+struct ChannelSettings {
+  double start_x;    // m, floes in x >= start_x
+  double length;     // m
+  double width;      // m, centred on z = 0
+  bool end_wall;     // mother ice at x = start_x + length
+  double tank_width; // m
+  double tank_depth; // m, water depth
+};
+
+struct IceSettings {
+  double floe_size;             // m, side of square floes
+  double thickness;             // m
+  double concentration;         // -, area fraction
+  double density;               // kg/m^3
+  double elastic_modulus;       // Pa
+  double bending_strength;      // Pa
+  double compressive_strength;  // Pa
+  double shear_strength;        // Pa
+  double poisson_ratio;         // -
+  bool contact_crushing;        // a contact's normal force limited to the crushing force
+  // derived once by make_scene, not keys:
+  double draft = 0;              // m, floating draft h rho_i / rho_w (Archimedes, a flat floe)
+  double flexural_rigidity = 0;  // N m, D = E h^3 / (12 (1 - nu^2)), thin-plate theory
+};
+
+/// Largest normal force of one contact with crushing on: the compressive strength
+/// over a patch as wide as the ice is thick (ice.contact_crushing), N.
+inline double crushing_force(const IceSettings& ice) {
+  return ice.compressive_strength * ice.thickness * ice.thickness;
+}
+
+struct LayoutSettings {
+  std::string file;  // absolute path of a floe file, or "" to generate
+  double max_yaw;    // rad
+  int sweeps;        // Monte-Carlo sweeps
+  double min_gap;    // m
+  int layers;        // generated floe layers stacked at t = 0 (1: one floating layer)
+};
+
+struct FrictionSettings {
+  double ice_ice;        // -, also floe against mother ice
+  double ice_structure;  // -
+};
+
+struct WaterSettings {
+  double density;                    // kg/m^3
+  double gravity;                    // m/s^2
+  double drag_coefficient;           // -
+  double skin_friction_coefficient;  // -
+  double heave_damping_ratio;        // -
+  double roll_pitch_damping_ratio;   // -
+};
+
+enum class FlowModel { kStill, kUniform, kPotential, kCoupled };
+struct FlowSettings {
+  FlowModel model;
+  Eigen::Vector3d velocity;  // m/s, uniform current
+};
+
+enum class CouplingMode { kField, kProbe };
+/// flow.model = "coupled": the OpenFOAM potential-flow case (coupling/, foam_case/).
+struct CouplingSettings {
+  CouplingMode mode;
+  std::string mesh;       // "coarse" | "medium" | "fine"
+  std::string cache_dir;  // absolute; solved cases by hash of their inputs
+  double domain_length;   // m, along x, centred on the structure axis
+  double grid_spacing;    // m, of the sampled velocity grid
+  double grid_depth;      // m, the grid spans y from -grid_depth to the still-water line
+  int exchange_steps;          // probe mode: steps between exchanges
+  double timeout;              // s, probe mode: longest wait for the partner
+  std::string exchange_dir;    // probe mode: absolute, or "" for a temporary directory
+  bool spawn_partner;          // probe mode: start coupling/foam_partner.py ourselves
+};
+
+// off: rigid floes; on / auto: floes of breakable elements (all, or those at least l_c);
+// analytic: rigid floes that split when the structure's load reaches the breaking edge load
+// of a floating beam (dem/fracture/fracture_split.hpp)
+enum class FractureMode { kOff, kOn, kAuto, kAnalytic };
+struct FractureSettings {
+  FractureMode mode;
+  double element_size;  // m
+  double cfm;           // -, Bullet units
+  double erp;           // -
+  bool elastic_joints;  // joint rows are springs of the ice's modulus (fracture.joint_stiffness = "elastic")
+  double stiffness_scale;  // -, factor on the elastic rows' stiffness
+  double characteristic_length;  // m, l_c = (D / (rho_w g))^(1/4) of the ice ("auto")
+  int joint_iterations;          // PGS iterations of the joints; 0: solver.iterations
+  double load_filter_time;       // s, low-pass time constant of joint loads; 0: raw
+  double lattice_radius;         // m, breakable floes are lattices only this near the structure; 0: always
+};
+
+enum class IslandMode { kContact, kBullet };
+struct ActivationSettings {
+  bool sleeping;             // bodies at rest may sleep
+  IslandMode islands;        // how sleeping islands are formed
+  bool skip_asleep;          // water forces and joint checks on awake bodies only
+  double linear_threshold;   // m/s
+  double angular_threshold;  // rad/s
+  double time;               // s below thresholds before sleeping
+  bool unreached_out_of_world;  // floes nothing reached stay out of Bullet's world (dem/world/unreached_floes.hpp)
+  bool freeze_outside_region;  // resting floes outside the region become fixed obstacles
+  double region_ahead;         // m ahead of the structure axis
+  double region_behind;        // m behind it
+};
+
+struct OutputSettings {
+  double snapshot_interval;  // s, 0 = no snapshots
+  double checkpoint_interval;  // s, simulated, between checkpoints (dem/output/checkpoint.hpp); 0 = none
+  double stop_grace;           // s, wall: how long a signalled run may go on to its next checkpoint
+};
+
+struct StatsSettings {
+  double window_start_travel;  // m beyond first contact
+  double window_end_travel;    // m beyond first contact, 0 = end of run
+  double lowpass_hz;           // Hz, 0 = unfiltered
+};
+
+enum class ValidationKind { kNone, kPlateDeflection, kCantilever };
+struct ValidationSettings {
+  ValidationKind kind;
+  double plate_size;  // m
+  double load;        // N, downward at the plate centre
+  double tolerance;   // -, relative
+  int beam_elements;  // cantilever: elements along the beam
+  double load_rate;   // N/s, cantilever tip load growth
+  double tip_speed;   // m/s, floating cantilever pushed down at the tip; 0: load ramp in air
+};
+
+/// Everything one run needs, validated and in SI units.
+struct Scene {
+  std::string source_path;    // scenario file as given
+  std::string resolved_text;  // every key with its resolved value, as TOML
+  std::uint64_t seed;
+  TimeSettings time;
+  SolverSettings solver;
+  StructureSettings structure;
+  ChannelSettings channel;
+  IceSettings ice;
+  LayoutSettings layout;
+  FrictionSettings friction;
+  WaterSettings water;
+  FlowSettings flow;
+  CouplingSettings coupling;
+  FractureSettings fracture;
+  ActivationSettings activation;
+  OutputSettings output;
+  StatsSettings stats;
+  ValidationSettings validation;
+};
+
+/// Time steps of a run (each of scene.time.dt).
+inline long step_count(const Scene& s) { return std::lround(s.time.duration / s.time.dt); }
+
+/// Whether generated (square, ice.floe_size) floes are made of breakable elements:
+/// fracture.mode "on", or "auto" with floes at least the characteristic length.
+inline bool generated_floes_breakable(const Scene& s) {
+  return s.fracture.mode == FractureMode::kOn ||
+         (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
+}
+
+/// Whether rigid floes split under the structure's load (fracture.mode "analytic").
+inline bool floes_split(const Scene& s) { return s.fracture.mode == FractureMode::kAnalytic; }
+
+/// PGS sweeps the element joints get per step: Bullet solves a constraint
+/// max(its override, solver.iterations) times (fracture.joint_iterations).
+inline int joint_sweeps(const Scene& s) {
+  return s.fracture.joint_iterations > s.solver.iterations ? s.fracture.joint_iterations : s.solver.iterations;
+}
+
+}  // namespace icedem

@@ -1,0 +1,293 @@
+#include "dem/output/checkpoint.hpp"
+
+#include <H5Cpp.h>
+
+#include <filesystem>
+#include <type_traits>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "dem/core/errors.hpp"
+#include "dem/core/field_count.hpp"
+#include "dem/core/hdf5_io.hpp"
+
+namespace icedem {
+namespace {
+
+constexpr const char* kGroup = "/checkpoint";
+
+// Records are written as this build holds them in memory: bytes, with their size as an
+// attribute so that a checkpoint of another layout is refused, not misread
+template <typename T>
+void write_records(const H5::Group& group, const std::string& name, const T* data, std::size_t count) {
+  static_assert(std::is_trivially_copyable_v<T>, "a checkpoint record must be plain data");
+  const hsize_t bytes = count * sizeof(T);
+  H5::DataSpace space(1, &bytes);
+  H5::DataSet set = group.createDataSet(name, H5::PredType::STD_U8LE, space);
+  if (bytes) set.write(data, H5::PredType::NATIVE_UINT8);
+  write_attr(set, "record_bytes", static_cast<uint64_t>(sizeof(T)));
+}
+template <typename T>
+void write_records(const H5::Group& group, const std::string& name, const std::vector<T>& v) {
+  write_records(group, name, v.data(), v.size());
+}
+
+template <typename T>
+std::vector<T> read_records(const H5::Group& group, const std::string& name, const std::string& path) {
+  H5::DataSet set = group.openDataSet(name);
+  uint64_t record = 0;
+  set.openAttribute("record_bytes").read(H5::PredType::NATIVE_UINT64, &record);
+  const hsize_t bytes = static_cast<hsize_t>(set.getSpace().getSimpleExtentNpoints());
+  if (record != sizeof(T) || bytes % sizeof(T) != 0)
+    throw InputError(fmt::format("{}: checkpoint record {} has {} bytes, this build's {}: the checkpoint was written by "
+                                 "another build of icedem",
+                                 path, name, record, sizeof(T)));
+  std::vector<T> out(bytes / sizeof(T));
+  if (bytes) set.read(out.data(), H5::PredType::NATIVE_UINT8);
+  return out;
+}
+
+template <typename T>
+T read_record(const H5::Group& group, const std::string& name, const std::string& path) {
+  const std::vector<T> v = read_records<T>(group, name, path);
+  if (v.size() != 1) throw InputError(fmt::format("{}: checkpoint record {} is not one record", path, name));
+  return v.front();
+}
+
+std::string read_string(const H5::Group& group, const std::string& name) {
+  H5::Attribute attr = group.openAttribute(name);
+  std::string value;
+  attr.read(attr.getStrType(), value);
+  return value;
+}
+
+template <typename T>
+struct IsVector : std::false_type {};
+template <typename T>
+struct IsVector<std::vector<T>> : std::true_type {};
+
+// the LoadReading's numbers (Eigen's vectors are not plain data)
+struct LoadRow {
+  double force[3], moment[3];
+  int contacts;
+};
+
+// Writes each field it is shown as a dataset of `group` named after it: plain data as its
+// bytes, a vector as its records, Eigen's vectors and the LoadReading by their numbers, a
+// struct with fields of its own (the fracture stage's) as a group of them
+struct FieldWriter {
+  const H5::Group& group;
+  template <typename T>
+  void operator()(const char* name, const T& v) const {
+    if constexpr (HasFields<T>::value) {
+      visit_fields(v, FieldWriter{group.createGroup(name)});
+    } else if constexpr (IsVector<T>::value) {
+      write_records(group, name, v);
+    } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
+      write_records(group, name, v.data(), 3);
+    } else if constexpr (std::is_same_v<T, LoadReading>) {
+      const LoadRow row{{v.force.x(), v.force.y(), v.force.z()}, {v.moment.x(), v.moment.y(), v.moment.z()},
+                        v.contacts};
+      write_records(group, name, &row, 1);
+    } else {
+      write_records(group, name, &v, 1);
+    }
+  }
+};
+
+// Reads back what FieldWriter wrote
+struct FieldReader {
+  const H5::Group& group;
+  const std::string& path;
+  template <typename T>
+  void operator()(const char* name, T& v) const {
+    if constexpr (HasFields<T>::value) {
+      visit_fields(v, FieldReader{group.openGroup(name), path});
+    } else if constexpr (IsVector<T>::value) {
+      v = read_records<typename T::value_type>(group, name, path);
+    } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
+      const std::vector<double> x = read_records<double>(group, name, path);
+      if (x.size() != 3) throw InputError(fmt::format("{}: checkpoint record {} is not a vector of 3", path, name));
+      v = Eigen::Vector3d(x[0], x[1], x[2]);
+    } else if constexpr (std::is_same_v<T, LoadReading>) {
+      const LoadRow row = read_record<LoadRow>(group, name, path);
+      v.force = Eigen::Vector3d(row.force[0], row.force[1], row.force[2]);
+      v.moment = Eigen::Vector3d(row.moment[0], row.moment[1], row.moment[2]);
+      v.contacts = row.contacts;
+    } else {
+      v = read_record<T>(group, name, path);
+    }
+  }
+};
+
+// a manifold's row in the checkpoint: its bodies and where its points are
+struct ManifoldRow {
+  int body0, body1;
+  int first, count;
+};
+
+void write_world(const H5::Group& g, const WorldState& world) {
+  write_records(g, "bodies", world.bodies);
+  write_records(g, "lattice_replaced", world.lattice_replaced);
+  write_records(g, "joint_broken", world.joint_broken);
+  write_records(g, "floe_splits", world.splits);
+  std::vector<ManifoldRow> rows;
+  std::vector<btManifoldPoint> points;
+  std::vector<int> has_memory;
+  std::vector<btVector3> memory;
+  for (const ManifoldState& m : world.manifolds) {
+    rows.push_back({m.body0, m.body1, static_cast<int>(points.size()), static_cast<int>(m.points.size())});
+    points.insert(points.end(), m.points.begin(), m.points.end());
+    has_memory.insert(has_memory.end(), m.has_friction_memory.begin(), m.has_friction_memory.end());
+    memory.insert(memory.end(), m.friction_memory.begin(), m.friction_memory.end());
+  }
+  write_records(g, "manifolds", rows);
+  write_records(g, "contact_points", points);
+  write_records(g, "friction_remembered", has_memory);
+  write_records(g, "friction_memory", memory);
+}
+
+WorldState read_world(const H5::Group& g, const std::string& path) {
+  WorldState world;
+  world.bodies = read_records<BodyState>(g, "bodies", path);
+  world.lattice_replaced = read_records<uint8_t>(g, "lattice_replaced", path);
+  world.joint_broken = read_records<uint8_t>(g, "joint_broken", path);
+  world.splits = read_records<FloeSplit>(g, "floe_splits", path);
+  const std::vector<ManifoldRow> rows = read_records<ManifoldRow>(g, "manifolds", path);
+  const std::vector<btManifoldPoint> points = read_records<btManifoldPoint>(g, "contact_points", path);
+  const std::vector<int> has_memory = read_records<int>(g, "friction_remembered", path);
+  const std::vector<btVector3> memory = read_records<btVector3>(g, "friction_memory", path);
+  for (const ManifoldRow& r : rows) {
+    if (r.first < 0 || r.count <= 0 || static_cast<std::size_t>(r.first + r.count) > points.size() ||
+        points.size() != has_memory.size() || points.size() != memory.size())
+      throw InputError(fmt::format("{}: the checkpoint's contact points do not add up: the file is damaged", path));
+    ManifoldState m;
+    m.body0 = r.body0;
+    m.body1 = r.body1;
+    m.points.assign(points.begin() + r.first, points.begin() + r.first + r.count);
+    m.has_friction_memory.assign(has_memory.begin() + r.first, has_memory.begin() + r.first + r.count);
+    m.friction_memory.assign(memory.begin() + r.first, memory.begin() + r.first + r.count);
+    world.manifolds.push_back(std::move(m));
+  }
+  return world;
+}
+
+void write_group(H5::H5File& file, const Checkpoint& c) {
+  const H5::Group g = file.createGroup(kGroup);
+  write_attr(g, "version", c.version);
+  visit_fields(c.values, FieldWriter{g.createGroup("state")});
+  visit_fields(c.history, FieldWriter{g.createGroup("history")});
+  write_world(g.createGroup("world"), c.world);
+}
+
+Checkpoint read_group(const H5::H5File& file, const std::string& path) {
+  if (!file.nameExists(kGroup)) throw InputError(fmt::format("{}: not a checkpoint (no {} group)", path, kGroup));
+  const H5::Group g = file.openGroup(kGroup);
+  Checkpoint c;
+  c.version = read_string(g, "version");
+  if (c.version != ICEDEM_VERSION)
+    throw InputError(fmt::format("{}: a checkpoint of icedem {}, this is {}: resume it with that version", path,
+                                 c.version, ICEDEM_VERSION));
+  if (!g.nameExists("state"))
+    throw InputError(fmt::format("{}: a checkpoint laid out by an earlier build of icedem {}: resume it with that "
+                                 "build", path, c.version));
+  visit_fields(c.values, FieldReader{g.openGroup("state"), path});
+  visit_fields(c.history, FieldReader{g.openGroup("history"), path});
+  c.world = read_world(g.openGroup("world"), path);
+  return c;
+}
+
+// the file's bytes on the disk before it is renamed into place
+void sync_file(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+std::string checkpoint_path(const std::string& output) { return output + ".checkpoint"; }
+
+Checkpoint take_checkpoint(const State& state, const RunHistory& history) {
+  return Checkpoint{ICEDEM_VERSION, state, capture_world(*state.world), history};
+}
+
+void write_checkpoint(const std::string& output, const Checkpoint& checkpoint) {
+  const std::string target = checkpoint_path(output), temporary = target + ".tmp";
+  QuietHdf5 quiet;
+  try {
+    std::filesystem::copy_file(output, temporary, std::filesystem::copy_options::overwrite_existing);
+    {
+      H5::H5File file(temporary, H5F_ACC_RDWR);
+      write_group(file, checkpoint);
+      file.close();
+    }
+    sync_file(temporary);
+    std::filesystem::rename(temporary, target);  // atomic: the last checkpoint until now
+  } catch (const H5::Exception& e) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw OutputError(fmt::format("cannot write the checkpoint {}: {}", target, hdf5_reason(e)));
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw OutputError(fmt::format("cannot write the checkpoint {}: {}", target, e.what()));
+  }
+}
+
+Checkpoint read_checkpoint(const std::string& path) {
+  QuietHdf5 quiet;
+  try {
+    const H5::H5File file(path, H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT, unlocked_access());
+    return read_group(file, path);
+  } catch (const H5::Exception& e) {
+    throw InputError(fmt::format("{}: cannot read the checkpoint: {}", path, hdf5_reason(e)));
+  }
+}
+
+OutputMeta read_output_meta(const std::string& path) {
+  QuietHdf5 quiet;
+  try {
+    const H5::H5File file(path, H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT, unlocked_access());
+    const H5::Group meta = file.openGroup("/meta");
+    OutputMeta m{read_string(meta, "status"), read_string(meta, "scenario"), read_string(meta, "scenario_path"),
+                 read_string(meta, "message")};
+    const H5::DataSet time = file.openDataSet("/load/time");
+    const H5::DataSpace space = time.getSpace();
+    hsize_t rows = 0;
+    space.getSimpleExtentDims(&rows);
+    m.rows = static_cast<long>(rows);
+    if (rows > 0) {
+      const hsize_t last = rows - 1, one = 1;
+      H5::DataSpace select = time.getSpace();
+      select.selectHyperslab(H5S_SELECT_SET, &one, &last);
+      time.read(&m.last_time, H5::PredType::NATIVE_DOUBLE, H5::DataSpace(1, &one), select);
+    }
+    return m;
+  } catch (const H5::Exception& e) {
+    throw InputError(fmt::format("{}: not an icedem output file ({})", path, hdf5_reason(e)));
+  }
+}
+
+void remove_checkpoint_group(const std::string& path) {
+  QuietHdf5 quiet;
+  try {
+    // the file is locked by its run (dem/output/lock.hpp), not by HDF5
+    H5::H5File file(path, H5F_ACC_RDWR, H5::FileCreatPropList::DEFAULT, unlocked_access());
+    if (file.nameExists(kGroup)) file.unlink(kGroup);
+  } catch (const H5::Exception& e) {
+    throw OutputError(fmt::format("{}: cannot remove the checkpoint group: {}", path, hdf5_reason(e)));
+  }
+}
+
+void restore_state(const Checkpoint& c, State& state) {
+  restore_world(*state.world, c.world);
+  static_cast<StateValues&>(state) = c.values;
+  state.flow->set_structure(state.structure_position, state.structure_velocity);
+}
+
+}  // namespace icedem
