@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """Every unit of dem/ is in the file map of docs/model/architecture.md, and every unit the map
-names exists; every room of dem/ is a room of dem/CMakeLists.txt and of the map's table of rooms.
+names exists; every room of dem/ is a room of dem/CMakeLists.txt and of the map's table of rooms;
+every Python command of scripts/ is a link to scripts/icedem_tool.py with a row in its table, and
+every row has its link.
 
 Usage: test_architecture.py SOURCE_DIR
 """
@@ -43,6 +45,29 @@ for room in rooms:
         failures.append(f"dem/{room}/{u} is not in the file map (docs/model/architecture.md, ### dem/{room}/)")
     for u in sorted(named - units):
         failures.append(f"the file map names dem/{room}/{u}, which does not exist")
+
+# the Python commands: one entry point, a link per command
+import importlib.util  # noqa: E402
+scripts = os.path.join(root, "scripts")
+spec = importlib.util.spec_from_file_location("icedem_tool", os.path.join(scripts, "icedem_tool.py"))
+tool = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(tool)
+links = {f for f in os.listdir(scripts) if os.path.islink(os.path.join(scripts, f))}
+for f in sorted(links):
+    if os.readlink(os.path.join(scripts, f)) != "icedem_tool.py":
+        failures.append(f"scripts/{f} links to {os.readlink(os.path.join(scripts, f))}, not icedem_tool.py")
+for f in sorted(links - set(tool.COMMANDS)):
+    failures.append(f"scripts/{f} is a link without a row in scripts/icedem_tool.py")
+for f in sorted(set(tool.COMMANDS) - links):
+    failures.append(f"scripts/icedem_tool.py names {f}, which is not a link in scripts/")
+for f in sorted(os.listdir(scripts)):
+    path = os.path.join(scripts, f)
+    if (not os.path.islink(path) and f != "icedem_tool.py"
+            and re.search(r"^from icedem_tools\.\w+ import main", open(path, errors="replace").read(), re.M)):
+        failures.append(f"scripts/{f} is a shim of its own: make it a link to icedem_tool.py")
+for module, _ in tool.COMMANDS.values():
+    if not os.path.exists(os.path.join(root, "tools", "icedem_tools", module + ".py")):
+        failures.append(f"scripts/icedem_tool.py names tools/icedem_tools/{module}.py, which does not exist")
 
 for f in failures:
     print("FAILED:", f)

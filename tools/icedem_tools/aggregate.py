@@ -68,6 +68,117 @@ def change_verdict(interval, tolerance):
     return "moves" if lo > 0 or hi < 0 else "unresolved"
 
 
+def window_loads(summary, t_end=None):
+    """Mean, 99th percentile and max of the surge load over the run's analysis
+    window, or over the part of it before t_end (s)."""
+    run = results.load_run(os.path.join(summary["run_dir"], RUN_FILES["h5"]))
+    t, surge = run["/load/time"], run["/load/surge"]
+    end = summary["window_end_s"] if t_end is None else min(t_end, summary["window_end_s"])
+    w = (t >= summary["window_start_s"]) & (t <= end)
+    if not w.any():
+        return float("nan"), float("nan"), float("nan")
+    return float(surge[w].mean()), float(np.percentile(surge[w], 99)), float(surge[w].max())
+
+
+TOP_FLOES = 20  # the floes whose load / capacity ratios make a run's failure ratio
+
+
+def fracture_figures(summary):
+    """A run's failure ratio and its floes broken, read from its file at once.
+
+    The failure ratio says how near its ice came to breaking: the mean of the TOP_FLOES
+    largest per-floe load / capacity ratios (/fracture/floe_max_ratio), or None for rigid
+    floes. At the paper's strength the lattices break a floe in one run of several, so
+    breaks per run cannot tell two solves apart over five seeds; this tail of the ratios,
+    which every run has, can (a solve that inflates the joints' loads raises it).
+    Floes broken, not joints: joints break in clusters (a floe at several joints in a step
+    or two), so the floes are the independent events."""
+    with h5py.File(os.path.join(summary["run_dir"], RUN_FILES["h5"]), "r") as f:
+        events = f["/fracture/events"][()]
+        r = np.sort(f["/fracture/floe_max_ratio"][:])[::-1] if "/fracture/floe_max_ratio" in f else []
+    ratio = float(r[:TOP_FLOES].mean()) if len(r) and r[0] > 0 else None
+    return ratio, len(set(int(x) for x in events["floe"])) if len(events) else 0
+
+
+def finished(summary):
+    """Whether a run finished with statistics (its summary's status and mean)."""
+    return summary.get("status") == "complete" and summary.get("mean_fx_N") is not None
+
+
+def ensemble(runs, per_run, summary=lambda run: run, counts=finished):
+    """The project's one reduction of a setting's runs over seeds, for every study and report.
+
+    `runs`: one item per seed (a summary, or a record that `summary` takes its summary from);
+    those `counts` accepts are reduced. `per_run(run)` gives a run's numbers by name. Returns None
+    without a counted run, else {"n", "failed" (runs not counted), "message" (the first of
+    theirs), "seeds", "runs": {name: array over the counted runs}, name: (mean, half-width of
+    its 95 % interval, nan for one run) for each name, and the means of the cost and solver
+    figures "cpu" (s per run), "rtf" (simulated over CPU time), "sweeps" (iterations per step)
+    and "capped" (share of the window's steps stopped at the cap)}."""
+    ok = [r for r in runs if counts(r)]
+    if not ok:
+        return None
+    sums = [summary(r) for r in ok]
+    rows = [per_run(r) for r in ok]
+    e = {"n": len(ok), "failed": len(runs) - len(ok),
+         "message": next((str(summary(r).get("message", "")) for r in runs if not counts(r)), ""),
+         "seeds": [x.get("seed") for x in sums],
+         "runs": {k: np.array([row[k] for row in rows], dtype=float) for k in rows[0]}}
+    for k, v in e["runs"].items():
+        e[k] = mean_ci(v)
+    nan = float("nan")
+    cpu = np.array([x.get("cpu_time_s", nan) for x in sums], dtype=float)
+    e["cpu"] = float(cpu.mean())
+    with np.errstate(divide="ignore", invalid="ignore"):
+        e["rtf"] = float(np.mean(np.array([x.get("sim_time_s", nan) for x in sums], dtype=float) / cpu))
+    e["sweeps"] = float(np.mean([x.get("solver", {}).get("iterations_mean", nan) for x in sums]))
+    e["capped"] = float(np.mean([x.get("solver", {}).get("capped_window_fraction", nan) for x in sums]))
+    return e
+
+
+def breaks_agree(e, ref):
+    """Whether a setting's floes break as often as the reference's ("floes_broken" per run in
+    both ensembles): the exact test of two Poisson rates (given the total count, the setting's
+    share is binomial with its share of the runs), two-sided at 5 %. Floes, not joints: joints
+    break in clusters (a floe at several in a step or two), the floes are the independent events.
+    At the paper's strength a floe breaks in one run of several, where Student's interval of the
+    reference would be [0, 0] after five runs without one."""
+    from scipy.stats import binomtest
+    k1, k2 = round(e["floes_broken"][0] * e["n"]), round(ref["floes_broken"][0] * ref["n"])
+    if k1 + k2 == 0:
+        return True
+    return binomtest(k1, k1 + k2, e["n"] / (e["n"] + ref["n"])).pvalue >= 0.05
+
+
+def judge(e, ref, tolerances):
+    """A setting's ensemble against the reference's, by the project's one rule: per criterion of
+    `tolerances` ({name: bound on the relative change}) that both have, the relative change over
+    the seeds both ran, paired seed by seed (the same seed is the same floe layout, so a layout's
+    own effect drops out), with the half-width of its 95 % interval and change_verdict's verdict
+    (with one common seed its point estimate alone is judged); whether floes break as often
+    (breaks_agree, where both count them); overall "yes" when every criterion is within and the
+    floes agree, "no" when one is beyond or they do not, else "undecided".
+    Returns (changes {name: (change, half-width, verdict)}, floes agree, overall, seeds paired)."""
+    common = [x for x in e["seeds"] if x in ref["seeds"]]
+    out = {}
+    for k, bound in tolerances.items():
+        if k not in e["runs"] or k not in ref["runs"] or not common:
+            continue
+        a = np.array([e["runs"][k][e["seeds"].index(x)] for x in common])
+        b = np.array([ref["runs"][k][ref["seeds"].index(x)] for x in common])
+        if not b.mean():
+            continue
+        diff = (a - b) / b.mean()
+        d = float(diff.mean())
+        hw = float("nan") if len(common) < 2 else mean_ci(diff)[1] if diff.any() else 0.0
+        out[k] = (d, hw, change_verdict((d, d) if len(common) < 2 else (d - hw, d + hw), bound))
+    floes_ok = breaks_agree(e, ref) if "floes_broken" in e and "floes_broken" in ref else True
+    verdicts = [v for _, _, v in out.values()]
+    overall = ("no" if "beyond" in verdicts or not floes_ok
+               else "yes" if verdicts and all(v == "within" for v in verdicts) else "undecided")
+    return out, floes_ok, overall, len(common)
+
+
 def welch_spectrum(t, x, segment_s=SEGMENT_S):
     """(frequencies Hz, power N^2/Hz) of x(t) (uniform steps): Welch, Hann window, half
     overlap, segments of segment_s (or the whole record if shorter), each detrended

@@ -19,7 +19,7 @@ time per run. A variant passes against the reference when its mean is within 3 %
 its p99 within 5 %, its mean of maxima within 10 %, its failure ratio within 5 %,
 and its floes break as often as the reference's (breaks_agree; the issue's "breaks
 per run inside the reference's 95 % interval", with a test that holds for rare
-events).
+events: aggregate.breaks_agree).
 Each difference is judged with its confidence interval by the project's one rule
 (aggregate.change_verdict): "within" the bound when the whole interval is, "beyond" when
 the whole interval is outside, "moves" when it excludes no change but straddles the bound,
@@ -30,13 +30,12 @@ prints them.
 """
 import argparse
 import datetime
-import math
 import os
 import sys
 
 from . import execute, spec
-from .aggregate import change_verdict
-from .convergence import half_width, window_loads
+from .aggregate import TOP_FLOES, ensemble, fracture_figures, window_loads
+from .aggregate import judge as aggregate_judge
 from .spec import ROOT
 
 STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "full_runs.toml")
@@ -44,92 +43,33 @@ REFERENCE = "reference: apgd 1e-5, dt/2"
 # the issue's criteria, and one for how near the ice came to breaking (see fracture_figures)
 TOLERANCE = {"mean": 0.03, "p99": 0.05, "max": 0.10, "ratio": 0.05}
 NAMES = {"mean": "mean", "p99": "p99", "max": "mean of maxima", "ratio": "failure ratio"}
-TOP_FLOES = 20
 
 
-def fracture_figures(summary):
-    """A run's failure ratio and its floes broken, read from its file at once.
-
-    The failure ratio says how near its ice came to breaking: the mean of the TOP_FLOES
-    largest per-floe load / capacity ratios (/fracture/floe_max_ratio), or None for rigid
-    floes. At the paper's strength the lattices break a floe in one run of several, so
-    breaks per run cannot tell two solves apart over five seeds; this tail of the ratios,
-    which every run has, can (a solve that inflates the joints' loads raises it).
-    Floes broken, not joints: joints break in clusters (a floe at several joints in a step
-    or two), so the floes are the independent events."""
-    import h5py  # noqa: E402 (not needed to list the runs)
-    import numpy as np
-    with h5py.File(os.path.join(summary["run_dir"], "run.h5"), "r") as f:
-        events = f["/fracture/events"][()]
-        r = np.sort(f["/fracture/floe_max_ratio"][:])[::-1] if "/fracture/floe_max_ratio" in f else []
-    ratio = float(r[:TOP_FLOES].mean()) if len(r) and r[0] > 0 else None
-    return ratio, len(set(int(x) for x in events["floe"])) if len(events) else 0
+def per_run(summary):
+    """One finished run's numbers: the window's mean, p99 and max, breaks, floes broken, and for
+    lattices the failure ratio (aggregate.fracture_figures)."""
+    mean, p99, peak = window_loads(summary)
+    ratio, floes = fracture_figures(summary)
+    row = {"mean": mean, "p99": p99, "max": peak, "breaks": summary["breaks"], "floes_broken": floes}
+    if ratio is not None:
+        row["ratio"] = ratio
+    return row
 
 
 def statistics(runs):
-    """Per metric over the finished runs: (mean, half-width of its 95 % interval), and the
-    runs' breaks, cost and solver figures; None without a finished run."""
-    import numpy as np
-    ok = [s for s in runs if s.get("status") == "complete" and s.get("mean_fx_N") is not None]
-    if not ok:
-        return None
-    loads = np.array([window_loads(s) for s in ok])
-    per_run = {"mean": loads[:, 0], "p99": loads[:, 1], "max": loads[:, 2],
-               "breaks": np.array([s["breaks"] for s in ok], dtype=float)}
-    ratios, floes = zip(*[fracture_figures(s) for s in ok])
-    per_run["floes_broken"] = np.array(floes, dtype=float)
-    if all(r is not None for r in ratios):
-        per_run["ratio"] = np.array(ratios)
-    e = {"n": len(ok), "seeds": [s["seed"] for s in ok], "runs": per_run}
-    for k, v in per_run.items():
-        e[k] = (float(v.mean()), half_width(v) if len(v) > 1 and v.any() else (0.0 if len(v) > 1 else float("nan")))
-    e["cpu"] = np.mean([s["cpu_time_s"] for s in ok])
-    e["sweeps"] = np.mean([s["solver"]["iterations_mean"] for s in ok])
-    e["capped"] = np.mean([s["solver"]["capped_window_fraction"] for s in ok])
+    """The finished runs reduced over seeds (aggregate.ensemble); None without one. The failure
+    ratio only where every run has one (lattices)."""
+    e = ensemble(runs, per_run)
+    if e and len(e["runs"].get("ratio", [])) != e["n"]:
+        e["runs"].pop("ratio", None)
+        e.pop("ratio", None)
     return e
 
 
-def breaks_agree(e, ref):
-    """Whether the variant's breaking floes are as frequent as the reference's: the exact
-    test of two Poisson rates (given the total count, the variant's share is binomial with
-    its share of the runs), two-sided at 5 %. At the paper's strength a floe breaks in one
-    run of several, where Student's interval of the reference would be [0, 0] after five
-    runs without one."""
-    from scipy.stats import binomtest
-    k1, k2 = round(e["floes_broken"][0] * e["n"]), round(ref["floes_broken"][0] * ref["n"])
-    if k1 + k2 == 0:
-        return True
-    return binomtest(k1, k1 + k2, e["n"] / (e["n"] + ref["n"])).pvalue >= 0.05
-
-
 def judge(e, ref):
-    """Per criterion against the reference: the relative difference and the half-width of
-    its 95 % interval, from the seeds both have run, paired (the same seed is the same floe
-    layout, so a layout's own effect on the loads drops out of the difference), and a
-    verdict by aggregate.change_verdict (within, beyond, moves or unresolved; with one common
-    seed the point estimate alone). For breaks, whether its floes break as often as the reference's
-    (breaks_agree). Overall "yes" when every criterion is within (breaks in the interval), "no"
-    when one is beyond (or breaks outside), else "undecided"."""
-    import numpy as np
-    common = [x for x in e["seeds"] if x in ref["seeds"]]
-    out = {}
-    for k, bound in TOLERANCE.items():
-        if k not in e["runs"] or k not in ref["runs"] or not common:
-            continue
-        a = np.array([e["runs"][k][e["seeds"].index(x)] for x in common])
-        b = np.array([ref["runs"][k][ref["seeds"].index(x)] for x in common])
-        if not b.mean():
-            continue
-        diff = (a - b) / b.mean()
-        d = float(diff.mean())
-        # with one common seed the point estimate alone is judged
-        hw = float("nan") if len(common) < 2 else half_width(diff) if diff.any() else 0.0
-        out[k] = (d, hw, change_verdict((d, d) if len(common) < 2 else (d - hw, d + hw), bound))
-    breaks_ok = breaks_agree(e, ref)
-    verdicts = [v for _, _, v in out.values()]
-    overall = ("no" if "beyond" in verdicts or not breaks_ok
-               else "yes" if verdicts and all(v == "within" for v in verdicts) else "undecided")
-    return out, breaks_ok, overall, len(common)
+    """The variant against the reference by aggregate.judge with the criteria of TOLERANCE:
+    (changes, floes break as often, overall "yes" / "no" / "undecided", seeds paired)."""
+    return aggregate_judge(e, ref, TOLERANCE)
 
 
 def table(name, variants, found):

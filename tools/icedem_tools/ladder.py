@@ -33,14 +33,14 @@ kept in DIR/runs, or in sweeps/ladder (where `scripts/sweep run` puts them).
 """
 import argparse
 import datetime
+import math
 import os
 import sys
 import tempfile
 import tomllib
 
-import numpy as np
 
-from . import execute, spec
+from . import aggregate as agg, execute, spec
 from . import pareto as pareto_plot
 from .spec import ROOT
 
@@ -52,16 +52,17 @@ FLOAT = "float precision"
 MEAN_TOLERANCE, MAX_TOLERANCE = STUDY["mean_tolerance"], STUDY["max_tolerance"]
 
 
+TOLERANCE = {"mean": MEAN_TOLERANCE, "max": MAX_TOLERANCE}
+
+
 def ensemble(summaries):
-    ok = [s for s in summaries if s.get("status") == "complete" and s.get("mean_fx_N") is not None]
+    """A rung's runs over the seeds (aggregate.ensemble: mean and max surge load, breaks per
+    run, cost), or {"failed", "message"} if one of them did not finish."""
+    ok = [s for s in summaries if agg.finished(s)]
     if len(ok) < len(summaries):
         bad = [s for s in summaries if s not in ok]
         return {"failed": len(bad), "message": str(bad[0].get("message", ""))}
-    mean = np.array([s["mean_fx_N"] for s in ok])
-    return {"mean": mean.mean(), "mean_se": mean.std(ddof=1) / np.sqrt(len(ok)) if len(ok) > 1 else float("nan"),
-            "max": np.mean([s["max_fx_N"] for s in ok]), "breaks": np.mean([s["breaks"] for s in ok]),
-            "cpu": np.mean([s["cpu_time_s"] for s in ok]),
-            "rtf": np.mean([s["sim_time_s"] / s["cpu_time_s"] for s in ok])}
+    return agg.ensemble(summaries, lambda s: {"mean": s["mean_fx_N"], "max": s["max_fx_N"], "breaks": s["breaks"]})
 
 
 def main(argv=None):
@@ -110,29 +111,34 @@ def main(argv=None):
         names = list(dict.fromkeys(n for (r, n, _) in results if r == ref))
         ens = {n: ensemble([results[(ref, n, s)] for s in seeds]) for n in names}
         r0, d0 = ens[REFERENCE], ens.get(DEFAULT)
-        if "failed" in r0 or d0 is None or "failed" in d0:
-            lines += [f"## {ref}", "", f"reference or default failed: {r0.get('message', '')} {d0}", ""]
+        if not r0 or r0.get("failed") or not d0 or d0.get("failed"):
+            lines += [f"## {ref}", "", f"reference or default failed: {(r0 or {}).get('message', '')} {d0}", ""]
             failures += 1
             continue
+        spread = "" if math.isnan(r0["mean"][1]) else f" ± {r0['mean'][1]:.2f} (95 %)"
         lines += [f"## {ref} ({files[ref]}, {len(seeds)} seed{'s' * (len(seeds) > 1)})", "",
-                  f"Reference ({', '.join(sets[(ref, REFERENCE)]) or 'as the file is'}): mean surge {r0['mean']:.2f} N "
-                  f"(seed scatter: standard error {100 * r0['mean_se'] / r0['mean']:.1f} %), max "
-                  f"{r0['max']:.2f} N, breaks {r0['breaks']:.1f}, {r0['cpu']:.1f} s CPU per run.", "",
-                  "| rung | mean N | err mean | max N | err max | breaks | CPU s/run | x real time (CPU) | time / default | accurate |",
+                  f"Reference ({', '.join(sets[(ref, REFERENCE)]) or 'as the file is'}): mean surge "
+                  f"{r0['mean'][0]:.2f}{spread} N, max {r0['max'][0]:.2f} N, breaks "
+                  f"{r0['breaks'][0]:.1f}, {r0['cpu']:.1f} s CPU per run.", "",
+                  "| rung | mean N | change of mean | max N | change of max | breaks | CPU s/run | x real time (CPU) | "
+                  "time / default | accurate |",
                   "|---|---|---|---|---|---|---|---|---|---|"]
         pareto[ref] = []
         for n in names:
             e = ens[n]
-            if "failed" in e:
+            if e.get("failed"):
                 lines.append(f"| {n} | failed ({e['failed']} of {len(seeds)}): {e['message'][:120]} |||||||||")
                 continue
-            em, ex = (e["mean"] - r0["mean"]) / r0["mean"], (e["max"] - r0["max"]) / r0["max"]
-            ok = abs(em) <= MEAN_TOLERANCE and abs(ex) <= MAX_TOLERANCE
-            lines.append(f"| {n} | {e['mean']:.2f} | {100 * em:+.1f} % | {e['max']:.2f} | {100 * ex:+.1f} % | "
-                         f"{e['breaks']:.1f} | {e['cpu']:.1f} | {e['rtf']:.1f} | {e['cpu'] / d0['cpu']:.2f} | "
-                         f"{'yes' if ok else 'no'} |")
+            changes, _, overall, _ = agg.judge(e, r0, TOLERANCE)
+            em, ex = changes["mean"][0], changes["max"][0]
+            def cell(k):
+                d, hw, verdict = changes[k]
+                return f"{100 * d:+.1f}{'' if math.isnan(hw) else f' ± {100 * hw:.1f}'} % ({verdict})"
+            lines.append(f"| {n} | {e['mean'][0]:.2f} | {cell('mean')} | {e['max'][0]:.2f} | {cell('max')} | "
+                         f"{e['breaks'][0]:.1f} | {e['cpu']:.1f} | {e['rtf']:.1f} | {e['cpu'] / d0['cpu']:.2f} | "
+                         f"{overall} |")
             if n != REFERENCE:
-                pareto[ref].append((n, e["cpu"] / d0["cpu"], abs(em), abs(ex), ok, e["rtf"]))
+                pareto[ref].append((n, e["cpu"] / d0["cpu"], abs(em), abs(ex), overall == "yes", e["rtf"]))
         accurate = sorted([p for p in pareto[ref] if p[4] and not p[0].startswith(("skip off", "every"))],
                           key=lambda p: p[1])
         lines.append("")
@@ -155,9 +161,11 @@ def main(argv=None):
               f"Command: `scripts/ladder{' --quick' if a.quick else ''}"
               f"{'' if a.quick or a.seeds is None else f' --seeds {a.seeds}'}{' --out DIR' if a.out else ''} "
               f"{' '.join(a.references)}`: {len(results)} runs, {cpu_total / 3600:.2f} CPU hours in all (this "
-              f"invocation {wall:.0f} s wall; finished runs are reused). Errors are "
-              f"relative to the reference ensemble; 'accurate' is within {100 * MEAN_TOLERANCE:.0f} % (mean) and "
-              f"{100 * MAX_TOLERANCE:.0f} % (max).", ""]
+              f"invocation {wall:.0f} s wall; finished runs are reused). Changes are "
+              f"relative to the reference, paired seed by seed, with the half-width of their 95 % interval (none "
+              f"for one seed); 'accurate' (the project's one rule, aggregate.judge) is yes when the whole interval "
+              f"is within {100 * MEAN_TOLERANCE:.0f} % (mean) and {100 * MAX_TOLERANCE:.0f} % (max), no when one "
+              f"is beyond, else undecided.", ""]
     text = "\n".join(header + lines)
     print(text)
     out_dir = a.out or (runs_dir if a.quick else os.path.join(ROOT, "bench", "results"))

@@ -36,20 +36,30 @@ def model_runs(records, scenario, fii):
 
 
 def stats(recs):
-    """The table's numbers over the runs `recs`: (mean, ci) of the mean, p99 and max, the largest
-    max, breaks and floes broken per run, and CPU s per run."""
-    s = [rec["summary"] for rec in recs]
+    """The table's numbers over the runs `recs` (records of finished runs; aggregate.ensemble):
+    (mean, ci) of the mean, p99 and max, the largest max, breaks and floes broken per run, and
+    CPU s per run."""
     p99 = [rec.get("window", {}).get("p99_fx_N") for rec in recs]
-    out = {k: agg.mean_ci([x[k] for x in s if x.get(k) is not None]) for k in ("mean_fx_N", "max_fx_N")}
-    out["p99_fx_N"] = agg.mean_ci([v for v in p99 if v is not None]) if all(v is not None for v in p99) else None
-    out["largest"] = max(x["max_fx_N"] for x in s)
-    out["breaks"] = float(np.mean([x.get("breaks", 0) for x in s]))
-    # a lattice's floe breaks in two when a line of 3-4 joints has; the floes that broke at all
-    # compare the models on one footing
-    out["floes"] = float(np.mean([len({e["floe"] for e in rec.get("fracture_events", [])}) for rec in recs]))
-    out["cpu"] = float(np.mean([x.get("cpu_time_s", float("nan")) for x in s]))
+    with_p99 = all(v is not None for v in p99)
+
+    def per_run(rec):
+        s = rec["summary"]
+        # a lattice's floe breaks in two when a line of 3-4 joints has; the floes that broke at all
+        # compare the models on one footing
+        row = {"mean_fx_N": s["mean_fx_N"], "max_fx_N": s["max_fx_N"], "breaks": s.get("breaks", 0),
+               "floes": len({e["floe"] for e in rec.get("fracture_events", [])})}
+        if with_p99:
+            row["p99_fx_N"] = rec["window"]["p99_fx_N"]
+        return row
+    e = agg.ensemble(recs, per_run, summary=lambda rec: rec["summary"], counts=lambda rec: True)
+    out = {k: e[k] for k in ("mean_fx_N", "max_fx_N")}
+    out["p99_fx_N"] = e["p99_fx_N"] if with_p99 else None
+    out["largest"] = float(e["runs"]["max_fx_N"].max())
+    out["breaks"] = e["breaks"][0]
+    out["floes"] = e["floes"][0]
+    out["cpu"] = e["cpu"]
     # how far past its capacity a break's load went within the step of the break (1: resolved)
-    ratios = [e["ratio"] for rec in recs for e in rec.get("fracture_events", []) if "ratio" in e]
+    ratios = [ev["ratio"] for rec in recs for ev in rec.get("fracture_events", []) if "ratio" in ev]
     out["ratio"] = (float(np.median(ratios)), float(np.percentile(ratios, 90))) if ratios else None
     return out
 

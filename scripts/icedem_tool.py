@@ -1,0 +1,58 @@
+#!/usr/bin/python3
+"""The one entry point of the project's Python commands (tools/icedem_tools/).
+
+Every command of scripts/ below is a link to this file; the name it is called by picks the
+module whose main() runs. `scripts/icedem_tool.py` alone lists them; `scripts/icedem_tool.py
+COMMAND ARGS...` runs one by name. A new command is a row here and a link:
+`ln -s icedem_tool.py scripts/NAME`.
+"""
+import importlib
+import os
+import sys
+
+# command (as scripts/ names it) -> (module of tools/icedem_tools, what it does)
+COMMANDS = {
+    "sweep": ("sweep", "parameter sweeps of icedem runs: scenarios x variants x grid x seeds"),
+    "report": ("report", "a sweep's report beside the seed paper"),
+    "sweep_figures.py": ("figures", "a sweep's figures (and XDMF views for ParaView)"),
+    "full_runs": ("full_runs", "the contact solve judged on the paper's full runs"),
+    "convergence": ("convergence", "convergence of the contact solve, error against cost"),
+    "ladder": ("ladder", "run time against error, a ladder of solver settings"),
+    "stress": ("stress", "the numerical stability stress suite"),
+    "fuzz": ("fuzz", "fuzz icedem's input handling with mutated scenario and layout files"),
+    "layout_from_photo": ("layout_from_photo", "a floe layout file from a top-view photo of the floes"),
+    "photo_layout_validation.py": ("photo_layout_validation",
+                                   "validation of scripts/layout_from_photo on synthetic photos of known layouts"),
+    "validation_report.py": ("validation_report", "run the validation scenarios (scenarios/validation/) and plot them"),
+    "fig6_modulus_vs_cfm.py": ("fig6_modulus_vs_cfm",
+                               "the seed paper's Figure 6 for this solver: elastic modulus against the joints' CFM"),
+    "edge_load.py": ("edge_load", "the vertical edge load that breaks a square floe floating on water, in bending"),
+    "break_pictures.py": ("break_pictures", "pictures of breaks like the seed paper's Fig. 18"),
+    "fracture_events.py": ("fracture_events", "the joint breaks of one run: count by mode, and where they happened"),
+    "compare_flow_models.py": ("compare_flow_models",
+                               "the flow models compared on one scenario: still water, analytic and OpenFOAM"),
+    "xdmf_snapshots.py": ("xdmf", "a run's snapshots as an XDMF view for ParaView"),
+}
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))  # scripts/, also when called through a link
+    sys.path.insert(0, os.path.join(os.path.dirname(here), "tools"))
+    name = os.path.basename(sys.argv[0])
+    if name == "icedem_tool.py":
+        if len(sys.argv) < 2 or sys.argv[1] not in COMMANDS:
+            print(__doc__.strip() + "\n\ncommands:")
+            for command, (_, what) in COMMANDS.items():
+                print(f"  scripts/{command:<28} {what}")
+            return 0 if len(sys.argv) < 2 else 2
+        name = sys.argv.pop(1)
+        sys.argv[0] = os.path.join(here, name)
+    if name not in COMMANDS:
+        print(f"{name}: not a command of scripts/icedem_tool.py (run it alone for the list)", file=sys.stderr)
+        return 2
+    module = importlib.import_module(f"icedem_tools.{COMMANDS[name][0]}")
+    return module.main()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
