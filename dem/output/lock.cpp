@@ -41,25 +41,36 @@ extern "C" void on_signal_before_the_run(int signal) {
 OutputLock::OutputLock(const std::string& path) : path_(path) {
   std::error_code ec;
   created_ = !std::filesystem::exists(path, ec);
-  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0)
-    throw OutputError(fmt::format("cannot open output file '{}': {}", path, std::strerror(errno)));
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    const int err = errno;
-    ::close(fd_);
-    fd_ = -1;
-    if (err == EWOULDBLOCK)
-      throw InputError(fmt::format("-o {}: another icedem run is writing this file; wait for it to end or "
-                                   "choose another output file",
-                                   path));
-    throw OutputError(fmt::format("cannot lock output file '{}': {}", path, std::strerror(err)));
-  }
+  // the handlers first: a signal between creating the file and installing them left an empty
+  // output file behind (the process ended by the signal's default action)
   if (path.size() < sizeof g_path) {
     std::memcpy(g_path, path.c_str(), path.size() + 1);
     g_remove = created_ ? 1 : 0;
   }
   previous_int_ = std::signal(SIGINT, on_signal_before_the_run);
   previous_term_ = std::signal(SIGTERM, on_signal_before_the_run);
+  auto give_up = [this] {
+    std::signal(SIGINT, previous_int_);
+    std::signal(SIGTERM, previous_term_);
+    g_remove = 0;
+  };
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) {
+    const int err = errno;
+    give_up();
+    throw OutputError(fmt::format("cannot open output file '{}': {}", path, std::strerror(err)));
+  }
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int err = errno;
+    ::close(fd_);
+    fd_ = -1;
+    give_up();
+    if (err == EWOULDBLOCK)
+      throw InputError(fmt::format("-o {}: another icedem run is writing this file; wait for it to end or "
+                                   "choose another output file",
+                                   path));
+    throw OutputError(fmt::format("cannot lock output file '{}': {}", path, std::strerror(err)));
+  }
 }
 
 OutputLock::~OutputLock() {

@@ -2,9 +2,10 @@
 // HDF5 file for as long as it runs, so that a second run given the same -o is
 // refused instead of mixing its results into the first one's file. The lock is
 // taken before the file is truncated, and released when the process ends. While it is held,
-// a Ctrl-C or SIGTERM before the run loop takes them over (set-up can take long) ends the
-// process with a message and exit code 128 + the signal, removing the file if the lock
-// created it and nothing was written to it.
+// a Ctrl-C or SIGTERM before the run takes them over (set-up can take long; the run takes them
+// just before it writes the file's layout, dem/run/simulation.cpp) ends the process with a
+// message and exit code 128 + the signal, removing the file if the lock created it and nothing
+// was written to it. Its handlers are in place before it creates the file.
 #pragma once
 
 #include <csignal>

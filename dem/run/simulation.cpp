@@ -281,6 +281,10 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   for (const std::string& w : layout_warnings(scene, layout)) summary.warnings.push_back(w);
   summary.achieved_concentration = layout.achieved_concentration;
 
+  // From here on a signal stops the run at the loop's next check, with the file closed and
+  // marked "interrupted": the output lock's handler, which ends set-up at once, would end the
+  // process while the recorder writes the file's layout and leave a file without a status
+  InterruptGuard interrupt_guard;
   // a resumed run appends to its output as the checkpoint left it (its layout attributes too)
   std::unique_ptr<Recorder> record_to =
       options.resume ? std::make_unique<Recorder>(options.output, Recorder::Reopen{})
@@ -300,7 +304,6 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   history.time.reserve(total_steps);
   history.surge.reserve(total_steps);
   Progress progress(total_steps * scene.time.dt, options.progress);
-  InterruptGuard interrupt_guard;
   double last_flush = 0.0;
   summary.status = "complete";
 
