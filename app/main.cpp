@@ -14,6 +14,7 @@
 //   icedem flow SCENARIO.toml -o OUT.csv        the flow model's water velocity at sample points
 // Exit codes (dem/core/errors.hpp): 0 success, 2 bad input, 3 numerical failure, 4 OpenFOAM coupling
 // failure, 5 output not written (disk full), 130 interrupted by SIGINT, 143 by SIGTERM, 1 other.
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -35,6 +36,7 @@
 #include "dem/input/step_size_advice.hpp"
 #include "dem/output/checkpoint.hpp"
 #include "dem/output/lock.hpp"
+#include "dem/output/output_guard.hpp"
 #include "dem/output/recorder.hpp"
 #include "dem/output/schema.hpp"
 #include "dem/run/simulation.hpp"
@@ -53,52 +55,6 @@ std::string joined_command_line(int argc, char** argv) {
   return s;
 }
 
-// two paths naming one file (the same path once resolved, or one file under two names)
-bool same_file(const std::string& a, const std::string& b) {
-  std::error_code ec;
-  if (std::filesystem::equivalent(a, b, ec)) return true;
-  const auto resolved = [](const std::string& p) {
-    std::error_code e;
-    return std::filesystem::weakly_canonical(std::filesystem::absolute(p), e);
-  };
-  return resolved(a) == resolved(b);
-}
-
-// Every file a run writes goes through here before the run starts: it must not be an input of
-// the run (the scenario, its layout file, a checkpoint it resumes from), nor another of its
-// outputs, nor a directory, and its directory must exist
-void guard_outputs(const std::vector<std::pair<std::string, std::string>>& outputs,
-                   const std::vector<std::string>& inputs) {
-  std::error_code ec;
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    const auto& [option, path] = outputs[i];
-    if (path.empty()) continue;
-    if (std::filesystem::is_directory(path, ec))
-      throw InputError(fmt::format("{} {}: that is a directory; give a file name", option, path));
-    const std::filesystem::path dir = std::filesystem::absolute(path).parent_path();
-    if (!std::filesystem::is_directory(dir, ec))
-      throw InputError(fmt::format("{} {}: the directory {} does not exist", option, path, dir.string()));
-    for (const std::string& input : inputs)
-      if (!input.empty() && same_file(path, input))
-        throw InputError(fmt::format("{} {}: that is an input of the run ({}); choose another file", option, path,
-                                     input));
-    for (std::size_t j = 0; j < i; ++j)
-      if (!outputs[j].second.empty() && same_file(path, outputs[j].second))
-        throw InputError(fmt::format("{} {}: the run writes that file already ({}); choose another file", option,
-                                     path, outputs[j].first));
-  }
-}
-
-// a file the run will write at its end must be writable before the run starts
-void require_writable(const std::string& path, const std::string& option) {
-  const std::filesystem::path p = std::filesystem::absolute(path);
-  std::error_code ec;
-  const std::string target = std::filesystem::exists(p, ec) ? p.string() : p.parent_path().string();
-  if (::access(target.c_str(), W_OK) != 0 || std::filesystem::is_directory(p, ec))
-    throw InputError(fmt::format("{} {}: cannot write there ({} is {})", option, path, target,
-                                 std::filesystem::exists(target, ec) ? "not writable" : "missing"));
-}
-
 // HDF5 1.10 crashes at exit cleaning up a file it could not close (a full disk mid-close):
 // then end here, after the messages, without the library's exit-time cleanup
 int leave(int code) {
@@ -113,6 +69,15 @@ void write_json(const std::string& path, const nlohmann::json& j) {
   std::ofstream out(path);
   if (!out) throw OutputError(fmt::format("{}: cannot write the summary JSON", path));
   out << j.dump(2) << "\n";
+  out.close();  // a full disk shows here, not at the write
+  if (!out) throw OutputError(fmt::format("{}: the summary JSON could not be written in full", path));
+}
+
+// the optional outputs that were given
+std::vector<PlannedOutput> given(std::vector<PlannedOutput> outputs) {
+  outputs.erase(std::remove_if(outputs.begin(), outputs.end(), [](const PlannedOutput& o) { return o.path.empty(); }),
+                outputs.end());
+  return outputs;
 }
 
 // 0, or 128 + the signal that interrupted the run (130 for Ctrl-C, 143 for SIGTERM)
@@ -126,9 +91,8 @@ int run_command(const std::string& scenario_path, std::string output, const std:
                 const ProblemExportSettings& problems) {
   const Scene scene = load_scene(scenario_path, sets);
   if (output.empty()) output = std::filesystem::path(scenario_path).stem().string() + ".h5";
-  guard_outputs({{"-o", output}, {"its checkpoint", checkpoint_path(output)}, {"--summary-json", summary_path}},
+  guard_outputs(given({{"-o", output, OutputKind::kRun, true}, {"--summary-json", summary_path, OutputKind::kFile}}),
                 {scenario_path, scene.layout.file});
-  if (!summary_path.empty()) require_writable(summary_path, "--summary-json");
   const OutputLock lock(output);  // one run per output file
   RunOptions options{output, !quiet, command_line, openfoam_coupling(), problems};
   const RunSummary summary = run_simulation(scene, options);
@@ -164,9 +128,8 @@ int resume_command(const std::string& output, const std::string& summary_path, b
   const OutputMeta origin = read_output_meta(saved);
   const std::filesystem::path base = std::filesystem::path(origin.scenario_path).parent_path();
   const Scene scene = make_scene(parse_scenario(origin.scenario_text, origin.scenario_path, base.string(), {}));
-  guard_outputs({{"the output", output}, {"--summary-json", summary_path}},
+  guard_outputs(given({{"the output", output, OutputKind::kRun}, {"--summary-json", summary_path, OutputKind::kFile}}),
                 {saved, origin.scenario_path, scene.layout.file});
-  if (!summary_path.empty()) require_writable(summary_path, "--summary-json");
   const OutputLock lock(output);  // one run per output file
   // the output as it stood at the checkpoint, copied into the locked file itself (a rename
   // would put an unlocked file in its place); a kill during the copy leaves the checkpoint whole
@@ -222,6 +185,7 @@ int check_command(const std::string& scenario_path, const std::vector<std::strin
 
 int stl_command(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& output) {
   const Scene scene = load_scene(scenario_path, sets);
+  guard_outputs({{"-o", output, OutputKind::kFile}}, {scenario_path, scene.layout.file});
   const TriangleMesh mesh = hull_surface(scene.structure.profile, scene.structure.segments);
   write_stl(mesh, output, "structure");
   std::cout << fmt::format("{}: {} triangles, enclosed volume {:.6f} m^3 (structure frame: axis = y, "
@@ -276,6 +240,7 @@ int cone_load_command(const std::string& scenario_path, const std::vector<std::s
 
 int foam_case_command(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& output) {
   const Scene scene = load_scene(scenario_path, sets);
+  guard_outputs({{"-o", output, OutputKind::kDirectory}}, {scenario_path, scene.layout.file});
   const FoamCaseSpec spec = foam_case_spec(scene);
   write_foam_case(spec, foam_template_dir(), output);
   const GridAxes g = foam_grid_axes(spec);
@@ -299,6 +264,7 @@ int foam_solve_command(const std::string& scenario_path, const std::vector<std::
 // z, ux, uy, uz), tank frame, m and m/s.
 int flow_command(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& output) {
   const Scene scene = load_scene(scenario_path, sets);
+  guard_outputs({{"-o", output, OutputKind::kFile}}, {scenario_path, scene.layout.file});
   const std::unique_ptr<FlowField> flow = make_flow(scene, openfoam_coupling());
   const Eigen::Vector3d axis(scene.structure.start_x, 0.0, scene.structure.start_z);
   flow->set_structure(axis, Eigen::Vector3d(scene.structure.speed, 0.0, 0.0));
@@ -323,6 +289,7 @@ int flow_command(const std::string& scenario_path, const std::vector<std::string
 int calibrate_command(const std::string& scenario_path, const std::vector<std::string>& sets, double target,
                       const std::string& write_path) {
   const Scene scene = load_scene(scenario_path, sets);
+  guard_outputs(given({{"--write", write_path, OutputKind::kFile}}), {scenario_path, scene.layout.file});
   if (target <= 0) target = scene.ice.elastic_modulus;
   const std::string key = scene.fracture.elastic_joints ? "fracture.stiffness_scale" : "fracture.cfm";
   std::cout << fmt::format("calibrating {} for E = {:.1f} MPa: {} m plate of {} m elements, "
@@ -447,8 +414,10 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run)
+    if (*run) {
+      if (run->count("-o") && output.empty()) throw InputError("-o '': give a file name (or leave -o out: <scenario>.h5)");
       return run_command(scenario, output, sets, summary_path, quiet, joined_command_line(argc, argv), problems);
+    }
     if (*resume) return resume_command(output, summary_path, quiet, joined_command_line(argc, argv));
     if (*info) return info_command(output);
     if (*check) return check_command(scenario, sets);
