@@ -34,6 +34,9 @@ struct RunHistory {
   std::vector<StepDiagnostics> diagnostics;      // per step
   double awake_sum = 0;                          // awake floes summed over the steps
   DiagnosticExtremes health;                     // extremes of the diagnostics
+  // s, what the run's earlier processes spent (a resumed run's), up to their last checkpoint: the
+  // summary's wall and CPU time cover the whole run, as its stage times do
+  double earlier_wall_s = 0, earlier_cpu_s = 0;
 };
 
 /// Calls `visit(name, field)` for every field of a RunHistory (as visit_fields of StateValues).
@@ -46,6 +49,8 @@ std::enable_if_t<std::is_same_v<std::remove_const_t<History>, RunHistory>> visit
   visit("diagnostics", h.diagnostics);
   visit("awake_sum", h.awake_sum);
   visit("health", h.health);
+  visit("earlier_wall_s", h.earlier_wall_s);
+  visit("earlier_cpu_s", h.earlier_cpu_s);
 }
 
 /// A run's state between two steps.

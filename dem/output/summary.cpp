@@ -196,9 +196,12 @@ const std::vector<SummaryField>& summary_fields() {
        "breaking load)", [](S s) { return json(s.near_structure_max_ratio); }},
       {"steps", "1", true, false, "solver steps", [](S s) { return json(s.steps); }},
       {"sim_time_s", "s", true, false, "simulated time", [](S s) { return json(s.sim_time_s); }},
-      {"wall_time_s", "s", true, false, "wall time of the run", [](S s) { return json(s.wall_time_s); }},
-      {"cpu_time_s", "s", true, false, "user + system CPU time of the process (the fair cost on a shared machine)",
-       [](S s) { return json(s.cpu_time_s); }},
+      {"wall_time_s", "s", true, false,
+       "wall time of the run; a resumed run's adds what its earlier processes spent up to the checkpoint it was "
+       "resumed from", [](S s) { return json(s.wall_time_s); }},
+      {"cpu_time_s", "s", true, false,
+       "user + system CPU time of the run's processes (the fair cost on a shared machine); a resumed run's adds "
+       "its earlier processes' up to the checkpoint it was resumed from", [](S s) { return json(s.cpu_time_s); }},
       {"realtime_factor", "1", false, false, "simulated time over wall time",
        [](S s) { return s.wall_time_s > 0 ? num(s.sim_time_s / s.wall_time_s) : json(nullptr); }},
       {"steps_per_second", "1/s", false, false, "steps per second of wall time",

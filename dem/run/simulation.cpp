@@ -311,7 +311,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   auto fail = [&](const std::string& message) {
     if (state.drag_exchange) state.drag_exchange->finish(false);
     progress.done();
-    summary.wall_time_s = wall();
+    summary.wall_time_s = history.earlier_wall_s + wall();
     recorder.finish("failed", message, summary.wall_time_s);
   };
   // asked to stop: at once, or (if the run can reach it within output.stop_grace) at the next
@@ -384,7 +384,9 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       // two go on from the same world (dem/output/checkpoint.hpp)
       if (checkpoint_every && state.step % checkpoint_every == 0 && state.step < total_steps) {
         recorder.flush();
-        const Checkpoint checkpoint = take_checkpoint(state, history);
+        Checkpoint checkpoint = take_checkpoint(state, history);
+        checkpoint.history.earlier_wall_s += wall();  // what a run resumed from here has spent before
+        checkpoint.history.earlier_cpu_s += process_cpu_time();
         write_checkpoint(options.output, checkpoint);
         State rebuilt = initial_state(scene, layout.floes, options.coupling);
         restore_state(checkpoint, rebuilt);
@@ -425,8 +427,9 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   boundary_summary(history, summary);
   if (problems) summary.problem_files = problems->files();
   if (validation) summary.validation = validation->result(scene).to_json();
-  summary.wall_time_s = wall();
-  summary.cpu_time_s = process_cpu_time();
+  // the whole run's, over every process that made it (up to the checkpoint each was resumed from)
+  summary.wall_time_s = history.earlier_wall_s + wall();
+  summary.cpu_time_s = history.earlier_cpu_s + process_cpu_time();
   write_statistics(recorder, summary);
   recorder.finish(summary.status, summary.message, summary.wall_time_s);
   // a finished run is never resumed: its checkpoint goes

@@ -13,6 +13,7 @@ during a checkpoint write is reproduced by what it leaves on the disk: a torn te
 checkpoint and a torn output file. Then a run of breakable floes killed between two groups
 of breaks, and one of rigid floes that split (their pieces are bodies made mid-run). `icedem info` and refusals are checked on the way.
 """
+import json
 import os
 import signal
 import subprocess
@@ -89,8 +90,14 @@ for t in (5.0, 15.0, 25.0):
     info = run("info", name).stdout
     check("running" in info and "killed" in info and f"resumable from t = {t:.2f} s" in info,
           f"icedem info: killed, resumable from t = {t} s")
-    p = run("resume", name, "-q")
+    p = run("resume", name, "-q", "--summary-json", name + ".json")
     check(p.returncode == 0, f"resumed from t = {t} s (exit 0)")
+    # the wall time counts every process of the run, as the stage times do: they add up to no
+    # more than it (a resumed run's summary once counted only its own process: "other -0.9 s")
+    summary = json.load(open(name + ".json"))
+    stages = sum(v for k, v in summary["stage_time_s"].items() if k != "bullet")
+    check(stages <= summary["wall_time_s"] and summary["cpu_time_s"] > 0,
+          f"resumed from t = {t} s: wall time {summary['wall_time_s']:.2f} s covers the stages' {stages:.2f} s")
     same = contents(name) == full
     check(same, f"resumed from t = {t} s: every dataset and the statistics as the uninterrupted run's")
     check(not os.path.exists(name + ".checkpoint"), "the finished run's checkpoint is gone")
