@@ -415,7 +415,8 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) {
-      if (run->count("-o") && output.empty()) throw InputError("-o '': give a file name (or leave -o out: <scenario>.h5)");
+      if (run->count("-o") && output.empty())
+        throw InputError("-o '': give a file name (or leave -o out: <scenario>.h5)");
       return run_command(scenario, output, sets, summary_path, quiet, joined_command_line(argc, argv), problems);
     }
     if (*resume) return resume_command(output, summary_path, quiet, joined_command_line(argc, argv));

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace icedem {
 namespace field_count_detail {
@@ -43,6 +44,12 @@ constexpr std::size_t field_count() {
   else
     return sizeof...(Fields);
 }
+
+/// Whether T is a std::vector (a field of records).
+template <typename T>
+struct IsVector : std::false_type {};
+template <typename T>
+struct IsVector<std::vector<T>> : std::true_type {};
 
 /// Whether T lists its fields by a visit_fields(T&, visit) (the State's values and their parts).
 template <typename T, typename = void>

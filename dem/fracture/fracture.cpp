@@ -34,7 +34,8 @@ void low_pass(JointLoads& y, const JointLoads& x, double a) {
 
 }  // namespace
 
-void check_fracture(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h, FractureState& fracture) {
+void check_fracture(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h,
+                    FractureState& fracture) {
   std::vector<IceJoint>& joints = world.joints();
   if (joints.empty()) return;
   const JointCapacity capacity =

@@ -24,6 +24,7 @@ JointLoads joint_loads(const World& world, const IceJoint& joint);
 /// Check every intact joint of `world` with an awake element after a Bullet step of `h` seconds
 /// that ended at `time`, the structure's reference point at `structure` (low-passing the loads
 /// if fracture.load_filter_time > 0); break those that fail and add their events to `fracture`.
-void check_fracture(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h, FractureState& fracture);
+void check_fracture(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h,
+                    FractureState& fracture);
 
 }  // namespace icedem

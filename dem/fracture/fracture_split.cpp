@@ -105,7 +105,8 @@ CrackPlan plan_crack(const Scene& scene, const Polygon& outline, const Eigen::Ve
   return plan;
 }
 
-void check_splits(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h, FractureState& fracture) {
+void check_splits(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h,
+                  FractureState& fracture) {
   // every floe's load and crack first, then the splits: a split removes the floe and its
   // contacts, which the context of another floe's split may still need
   struct Split {
@@ -121,7 +122,8 @@ void check_splits(const Scene& scene, World& world, double time, const Eigen::Ve
     // bending is by the force normal to the floe's plane (its body y axis)
     const double normal_load = std::abs(load.force.dot(pose.linear().col(1)));
     const double ratio = normal_load / plan.breaking_load;
-    if (fracture.floe_margins.size() <= static_cast<std::size_t>(floe.floe_id)) fracture.floe_margins.resize(floe.floe_id + 1);
+    if (fracture.floe_margins.size() <= static_cast<std::size_t>(floe.floe_id))
+      fracture.floe_margins.resize(floe.floe_id + 1);
     FloeFailureMargin& margin = fracture.floe_margins[floe.floe_id];
     margin.max_ratio = std::max(margin.max_ratio, ratio);
     margin.min_distance = 0.0;  // touching the structure

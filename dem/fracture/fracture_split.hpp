@@ -48,6 +48,7 @@ CrackPlan plan_crack(const Scene& scene, const Polygon& outline, const Eigen::Ve
 /// ended at `time`, the structure's reference point at `structure`; split those whose load
 /// reaches their breaking load (World::split_floe) and add their breaks to `fracture` (joint -1,
 /// mode bending).
-void check_splits(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h, FractureState& fracture);
+void check_splits(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h,
+                  FractureState& fracture);
 
 }  // namespace icedem

@@ -64,20 +64,9 @@ std::string read_string(const H5::Group& group, const std::string& name) {
   return value;
 }
 
-template <typename T>
-struct IsVector : std::false_type {};
-template <typename T>
-struct IsVector<std::vector<T>> : std::true_type {};
-
-// the LoadReading's numbers (Eigen's vectors are not plain data)
-struct LoadRow {
-  double force[3], moment[3];
-  int contacts;
-};
-
 // Writes each field it is shown as a dataset of `group` named after it: plain data as its
-// bytes, a vector as its records, Eigen's vectors and the LoadReading by their numbers, a
-// struct with fields of its own (the fracture stage's) as a group of them
+// bytes, a vector as its records, Eigen's vectors by their numbers (they are not plain data), a
+// struct with fields of its own (the fracture stage's, the load) as a group of them
 struct FieldWriter {
   const H5::Group& group;
   template <typename T>
@@ -88,10 +77,6 @@ struct FieldWriter {
       write_records(group, name, v);
     } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
       write_records(group, name, v.data(), 3);
-    } else if constexpr (std::is_same_v<T, LoadReading>) {
-      const LoadRow row{{v.force.x(), v.force.y(), v.force.z()}, {v.moment.x(), v.moment.y(), v.moment.z()},
-                        v.contacts};
-      write_records(group, name, &row, 1);
     } else {
       write_records(group, name, &v, 1);
     }
@@ -112,11 +97,6 @@ struct FieldReader {
       const std::vector<double> x = read_records<double>(group, name, path);
       if (x.size() != 3) throw InputError(fmt::format("{}: checkpoint record {} is not a vector of 3", path, name));
       v = Eigen::Vector3d(x[0], x[1], x[2]);
-    } else if constexpr (std::is_same_v<T, LoadReading>) {
-      const LoadRow row = read_record<LoadRow>(group, name, path);
-      v.force = Eigen::Vector3d(row.force[0], row.force[1], row.force[2]);
-      v.moment = Eigen::Vector3d(row.moment[0], row.moment[1], row.moment[2]);
-      v.contacts = row.contacts;
     } else {
       v = read_record<T>(group, name, path);
     }

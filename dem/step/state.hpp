@@ -1,10 +1,11 @@
 // The State: everything that changes during a run (the Scene does not).
 //
-// It is declared once. StateValues holds every value the stages change from step to step;
-// a checkpoint (dem/output/checkpoint.hpp) copies it whole and writes and reads it field by field
-// through visit_fields(), and a test fails when a field is declared here but not listed there. The world's bodies, lattices and contact points
-// are kept by dem/output/world_state.hpp, which a checkpoint takes the same way. Outputs (the recorder,
-// the contact problems a run exports) belong to the run loop, not to the State.
+// It is declared once. StateValues holds every value the stages change from step to step; a
+// checkpoint (dem/output/checkpoint.hpp) copies it whole and writes and reads it field by field
+// through visit_fields(), and a test fails when a field is declared here but not listed there.
+// The world's bodies, lattices and contact points are kept by dem/output/world_state.hpp, which a
+// checkpoint takes the same way. Outputs (the recorder, the contact problems a run exports)
+// belong to the run loop, not to the State.
 #pragma once
 
 #include <array>

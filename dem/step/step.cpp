@@ -139,7 +139,8 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
     {
       StageTimer t(times.fracture);
       check_fracture(scene, *state.world, state.time, state.structure_position, h, state.fracture);
-      if (floes_split(scene)) check_splits(scene, *state.world, state.time, state.structure_position, h, state.fracture);
+      if (floes_split(scene))
+        check_splits(scene, *state.world, state.time, state.structure_position, h, state.fracture);
     }
   }
   state.load = cell.finish(scene.time.dt);

@@ -14,6 +14,7 @@
 // no position-correction push.
 #pragma once
 
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -30,6 +31,15 @@ struct LoadReading {
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // N m, about the reference point
   int contacts = 0;                                  // contact points on the structure (last substep)
 };
+
+/// Calls `visit(name, field)` for every field of a LoadReading (a checkpoint writes it so, as the
+/// State's values: dem/step/state.hpp).
+template <typename Load, typename Visit>  // Load: LoadReading or const LoadReading
+std::enable_if_t<std::is_same_v<std::remove_const_t<Load>, LoadReading>> visit_fields(Load& l, Visit&& visit) {
+  visit("force", l.force);
+  visit("moment", l.moment);
+  visit("contacts", l.contacts);
+}
 
 /// The contact manifolds that involve `structure`, into `out` (cleared first), in the contact
 /// solver's canonical order: sums over them then do not depend on the order of Bullet's arrays,

@@ -109,10 +109,11 @@ def ensemble(runs, per_run, summary=lambda run: run, counts=finished):
     """The project's one reduction of a setting's runs over seeds, for every study and report.
 
     `runs`: one item per seed (a summary, or a record that `summary` takes its summary from);
-    those `counts` accepts are reduced. `per_run(run)` gives a run's numbers by name. Returns None
-    without a counted run, else {"n", "failed" (runs not counted), "message" (the first of
-    theirs), "seeds", "runs": {name: array over the counted runs}, name: (mean, half-width of
-    its 95 % interval, nan for one run) for each name, and the means of the cost and solver
+    those `counts` accepts are reduced. `per_run(run)` gives a run's numbers by name (None or
+    left out where a run has none); a number is reduced only where every counted run has it.
+    Returns None without a counted run, else {"n", "failed" (runs not counted), "message" (the
+    first of theirs), "seeds", "runs": {name: array over the counted runs}, name: (mean,
+    half-width of its 95 % interval, nan for one run) for each name, and the means of the cost and solver
     figures "cpu" (s per run), "rtf" (simulated over CPU time), "sweeps" (iterations per step)
     and "capped" (share of the window's steps stopped at the cap)}."""
     ok = [r for r in runs if counts(r)]
@@ -123,7 +124,8 @@ def ensemble(runs, per_run, summary=lambda run: run, counts=finished):
     e = {"n": len(ok), "failed": len(runs) - len(ok),
          "message": next((str(summary(r).get("message", "")) for r in runs if not counts(r)), ""),
          "seeds": [x.get("seed") for x in sums],
-         "runs": {k: np.array([row[k] for row in rows], dtype=float) for k in rows[0]}}
+         "runs": {k: np.array([row[k] for row in rows], dtype=float) for k in rows[0]
+                  if all(row.get(k) is not None for row in rows)}}
     for k, v in e["runs"].items():
         e[k] = mean_ci(v)
     nan = float("nan")

@@ -50,20 +50,14 @@ def per_run(summary):
     lattices the failure ratio (aggregate.fracture_figures)."""
     mean, p99, peak = window_loads(summary)
     ratio, floes = fracture_figures(summary)
-    row = {"mean": mean, "p99": p99, "max": peak, "breaks": summary["breaks"], "floes_broken": floes}
-    if ratio is not None:
-        row["ratio"] = ratio
-    return row
+    return {"mean": mean, "p99": p99, "max": peak, "breaks": summary["breaks"], "floes_broken": floes,
+            "ratio": ratio}
 
 
 def statistics(runs):
     """The finished runs reduced over seeds (aggregate.ensemble); None without one. The failure
     ratio only where every run has one (lattices)."""
-    e = ensemble(runs, per_run)
-    if e and len(e["runs"].get("ratio", [])) != e["n"]:
-        e["runs"].pop("ratio", None)
-        e.pop("ratio", None)
-    return e
+    return ensemble(runs, per_run)
 
 
 def judge(e, ref):

@@ -39,21 +39,15 @@ def stats(recs):
     """The table's numbers over the runs `recs` (records of finished runs; aggregate.ensemble):
     (mean, ci) of the mean, p99 and max, the largest max, breaks and floes broken per run, and
     CPU s per run."""
-    p99 = [rec.get("window", {}).get("p99_fx_N") for rec in recs]
-    with_p99 = all(v is not None for v in p99)
-
     def per_run(rec):
         s = rec["summary"]
         # a lattice's floe breaks in two when a line of 3-4 joints has; the floes that broke at all
         # compare the models on one footing
-        row = {"mean_fx_N": s["mean_fx_N"], "max_fx_N": s["max_fx_N"], "breaks": s.get("breaks", 0),
-               "floes": len({e["floe"] for e in rec.get("fracture_events", [])})}
-        if with_p99:
-            row["p99_fx_N"] = rec["window"]["p99_fx_N"]
-        return row
+        return {"mean_fx_N": s["mean_fx_N"], "max_fx_N": s["max_fx_N"], "breaks": s.get("breaks", 0),
+                "floes": len({e["floe"] for e in rec.get("fracture_events", [])}),
+                "p99_fx_N": rec.get("window", {}).get("p99_fx_N")}
     e = agg.ensemble(recs, per_run, summary=lambda rec: rec["summary"], counts=lambda rec: True)
-    out = {k: e[k] for k in ("mean_fx_N", "max_fx_N")}
-    out["p99_fx_N"] = e["p99_fx_N"] if with_p99 else None
+    out = {k: e.get(k) for k in ("mean_fx_N", "max_fx_N", "p99_fx_N")}  # p99: None unless every run has one
     out["largest"] = float(e["runs"]["max_fx_N"].max())
     out["breaks"] = e["breaks"][0]
     out["floes"] = e["floes"][0]
