@@ -40,7 +40,9 @@ class OutputGuard : public ::testing::Test {
     checkpoint.createGroup("/checkpoint");
   }
   std::string at(const std::string& name) const { return dir_ + "/" + name; }
-  const std::string dir_ = std::string(ICEDEM_TEST_TMP) + "/output_guard";
+  // a directory per test: ctest runs the tests of this file in parallel processes
+  const std::string dir_ = std::string(ICEDEM_TEST_TMP) + "/output_guard_" +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name();
 };
 
 TEST_F(OutputGuard, RefusesWhatWouldDestroyAUsersFilesAndNothingElse) {
