@@ -127,7 +127,9 @@ int resume_command(const std::string& output, const std::string& summary_path, b
   const Checkpoint checkpoint = read_checkpoint(saved);
   const OutputMeta origin = read_output_meta(saved);
   const std::filesystem::path base = std::filesystem::path(origin.scenario_path).parent_path();
-  const Scene scene = make_scene(parse_scenario(origin.scenario_text, origin.scenario_path, base.string(), {}));
+  // the scenario as the checkpoint stores it (resolved: its lines are not the original file's)
+  Scene scene = make_scene(parse_scenario(origin.scenario_text, saved + ":/meta/scenario", base.string(), {}));
+  scene.source_path = origin.scenario_path;
   guard_outputs(given({{"the output", output, OutputKind::kRun}, {"--summary-json", summary_path, OutputKind::kFile}}),
                 {saved, origin.scenario_path, scene.layout.file});
   const OutputLock lock(output);  // one run per output file
@@ -145,14 +147,25 @@ int resume_command(const std::string& output, const std::string& summary_path, b
 
 // What state a run's output is in, and whether (and from when) it can be resumed.
 int info_command(const std::string& output) {
-  const OutputMeta meta = read_output_meta(output);
   const std::string saved = checkpoint_path(output);
+  // an output lost after its run was killed: its checkpoint says what there is (resume rebuilds it)
+  const bool lost = !std::filesystem::exists(output) && std::filesystem::exists(saved);
+  const OutputMeta meta = read_output_meta(lost ? saved : output);
   std::optional<double> resumable;
-  if (std::filesystem::exists(saved)) resumable = read_checkpoint(saved).values.time;
-  std::cout << fmt::format("{}: {}, {} steps recorded, to t = {:.2f} s\n", output, meta.status, meta.rows,
-                           meta.last_time);
+  std::string refused;  // why its checkpoint cannot be resumed (changed or damaged since it was written)
+  if (std::filesystem::exists(saved)) try {
+      resumable = read_checkpoint(saved).values.time;
+    } catch (const InputError& e) {
+      refused = e.what();
+    }
+  if (lost)
+    std::cout << fmt::format("{}: no such file; its checkpoint {} holds {} steps, to t = {:.2f} s\n", output, saved,
+                             meta.rows, meta.last_time);
+  else
+    std::cout << fmt::format("{}: {}, {} steps recorded, to t = {:.2f} s\n", output, meta.status, meta.rows,
+                             meta.last_time);
   if (!meta.message.empty()) std::cout << "  " << meta.message << "\n";
-  if (meta.status == "running") {
+  if (meta.status == "running" && !lost) {
     // a live run holds the file's lock (dem/output/lock.hpp): if we can take it, the writer died
     bool alive = false;
     try {
@@ -164,6 +177,10 @@ int info_command(const std::string& output) {
                         : fmt::format("  its writer was killed at t = {:.2f} s or up to one block of rows (10 s) "
                                       "later\n",
                                       meta.last_time));
+  }
+  if (!refused.empty()) {
+    std::cout << "  not resumable: its checkpoint is refused\n" << std::flush;
+    throw InputError(refused);
   }
   if (meta.status != "complete")
     std::cout << (resumable ? fmt::format("  resumable from t = {:.2f} s: icedem resume {}\n", *resumable, output)

@@ -1,14 +1,17 @@
 // Microbenchmarks of the hot paths of a step (Google Benchmark): buoyancy
 // clipping, the water wrench (buoyancy, drag, damping), the load-cell sum over
 // a compacted field's manifolds, joint-load decomposition, and layout
-// generation. Run: build/bench/micro/icedem_micro (scripts/bench.sh --micro).
+// generation, and the checkpoint's digest beside the copy it is taken of. Run: build/bench/micro/icedem_micro (scripts/bench.sh --micro).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <filesystem>
 
+#include "dem/core/hdf5_io.hpp"
 #include "dem/fracture/joint_loads.hpp"
 #include "dem/input/scenario.hpp"
 #include "dem/layout/floe_layout.hpp"
+#include "dem/output/file_digest.hpp"
 #include "dem/step/initial_state.hpp"
 #include "dem/step/step.hpp"
 #include "dem/water/flow_field.hpp"
@@ -85,6 +88,39 @@ void BM_LoadCellSum(benchmark::State& s) {
   s.SetLabel(std::to_string(dispatcher.getNumManifolds()) + " manifolds");
 }
 BENCHMARK(BM_LoadCellSum)->Unit(benchmark::kMicrosecond);
+
+// A file the size of the paper small-floe run's output (12 MB): 6000 steps of 250 floes' positions,
+// compressed as the recorder writes them. A checkpoint copies it and then digests it: the digest's
+// cost is read against the copy's, in the same run
+const std::string& output_like_file() {
+  static const std::string path = [] {
+    const std::string p = (std::filesystem::temp_directory_path() / "icedem_micro_digest.h5").string();
+    H5::H5File file(p, H5F_ACC_TRUNC);
+    const H5::Group g = file.createGroup("/floes");
+    Series positions = create_series(g, "position", H5::PredType::IEEE_F64LE, {250, 3}, 64, "m", "positions", true);
+    std::vector<double> row(250 * 3);
+    for (int step = 0; step < 6000; ++step) {
+      for (std::size_t k = 0; k < row.size(); ++k) row[k] = std::sin(0.001 * step * (k % 17 + 1)) + 1e-7 * k * step;
+      positions.write(row.data(), 1, H5::PredType::NATIVE_DOUBLE);
+    }
+    return p;
+  }();
+  return path;
+}
+
+void BM_CheckpointCopy(benchmark::State& s) {
+  const std::string from = output_like_file(), to = from + ".copy";
+  for (auto _ : s) std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing);
+  s.SetLabel(std::to_string(std::filesystem::file_size(from) >> 20) + " MB file");
+}
+BENCHMARK(BM_CheckpointCopy)->Unit(benchmark::kMillisecond);
+
+void BM_CheckpointDigest(benchmark::State& s) {
+  const H5::H5File file(output_like_file(), H5F_ACC_RDONLY);
+  for (auto _ : s) benchmark::DoNotOptimize(file_digest(file).size());
+  s.SetLabel("36 MB of values");
+}
+BENCHMARK(BM_CheckpointDigest)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -3,21 +3,27 @@
 #include <H5Cpp.h>
 
 #include <filesystem>
+#include <map>
 #include <type_traits>
 
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "dem/core/errors.hpp"
 #include "dem/core/field_count.hpp"
 #include "dem/core/hdf5_io.hpp"
+#include "dem/core/isolated_read.hpp"
+#include "dem/input/scenario.hpp"
+#include "dem/output/file_digest.hpp"
 
 namespace icedem {
 namespace {
 
 constexpr const char* kGroup = "/checkpoint";
+constexpr const char* kDigest = "digest";  // attribute of kGroup: the digest of everything else
 
 // Records are written as this build holds them in memory: bytes, with their size as an
 // attribute so that a checkpoint of another layout is refused, not misread
@@ -163,17 +169,86 @@ void write_group(H5::H5File& file, const Checkpoint& c) {
   write_world(g.createGroup("world"), c.world);
 }
 
-Checkpoint read_group(const H5::H5File& file, const std::string& path) {
+// what a part of the file holds, for a refusal to say what it was that changed
+std::string described_part(const std::string& part) {
+  static const std::map<std::string, std::string> kParts{
+      {"/", "the file's own attributes"},
+      {"/meta", "the scenario and the run's metadata"},
+      {"/load", "the recorded loads"},
+      {"/checkpoint", "the checkpoint's version"},
+      {"/checkpoint/state", "the run's state"},
+      {"/checkpoint/history", "what the statistics are made from"},
+      {"/checkpoint/world", "the bodies, joints and contacts"},
+  };
+  const auto it = kParts.find(part.substr(0, part.find(' ')));
+  return it == kParts.end() ? "" : " (" + it->second + ")";
+}
+
+// The checkpoint as it was written, or an InputError naming what differs: a checkpoint changed or
+// damaged since (an edited scenario, a flipped bit in a record) is never continued
+void check_digest(const H5::H5File& file, const H5::Group& g, const std::string& path) {
+  FileDigest recorded, now;
+  try {
+    recorded = parse_digest(read_string(g, kDigest));
+    now = file_digest(file, kGroup, kDigest);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("{}: the checkpoint's digest is damaged ({}): it cannot be resumed", path, e.what()));
+  } catch (const std::runtime_error& e) {
+    throw InputError(fmt::format("{}: the checkpoint cannot be read whole ({}): it is damaged and cannot be resumed",
+                                 path, e.what()));
+  }
+  std::vector<std::string> differ = digest_differences(recorded, now);
+  for (std::string& part : differ) part += described_part(part);
+  if (!differ.empty())
+    throw InputError(fmt::format("{}: the checkpoint was changed or damaged after it was written: {} differ{} from "
+                                 "its digest. It cannot be resumed; run the scenario again",
+                                 path, fmt::join(differ, ", "), differ.size() == 1 ? "s" : ""));
+}
+
+// The checkpoint's group, if this build wrote it: else an InputError saying which did
+H5::Group checkpoint_group(const H5::H5File& file, const std::string& path) {
   if (!file.nameExists(kGroup)) throw InputError(fmt::format("{}: not a checkpoint (no {} group)", path, kGroup));
   const H5::Group g = file.openGroup(kGroup);
+  const std::string version = read_string(g, "version");
+  if (version != ICEDEM_VERSION)
+    throw InputError(fmt::format("{}: a checkpoint of icedem {}, this is {}: resume it with that version", path,
+                                 version, ICEDEM_VERSION));
+  if (!g.nameExists("state") || !g.attrExists(kDigest))
+    throw InputError(fmt::format("{}: a checkpoint laid out by an earlier build of icedem {}: resume it with that "
+                                 "build", path, version));
+  return g;
+}
+
+// Throws an InputError unless `path` is a checkpoint of this build whose contents are those it was
+// written with. Read in a child process (dem/core/isolated_read.hpp): HDF5 may crash on a damaged
+// file rather than say so, and a damaged checkpoint is refused, never the command's end
+void verify_checkpoint(const std::string& path) {
+  std::error_code ec;
+  const double megabytes = static_cast<double>(std::filesystem::file_size(path, ec)) / 1e6;
+  const IsolatedResult result = read_isolated(
+      [&] {
+        QuietHdf5 quiet;
+        try {
+          const H5::H5File file(path, H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT, unlocked_access());
+          check_digest(file, checkpoint_group(file, path), path);
+        } catch (const H5::Exception& e) {
+          throw InputError(fmt::format("{}: cannot read the checkpoint ({}): it is damaged and cannot be resumed", path,
+                                       hdf5_reason(e)));
+        }
+        return std::string();
+      },
+      60.0 + (ec ? 0.0 : megabytes / 20.0));  // the digest reads 400 MB/s here: twenty times that
+  if (!result.ok) {
+    if (result.value.rfind(path + ": ", 0) == 0) throw InputError(result.value);  // the reader's own refusal
+    throw InputError(fmt::format("{}: the checkpoint is damaged ({}): it cannot be resumed; run the scenario again",
+                                 path, result.value));
+  }
+}
+
+Checkpoint read_group(const H5::H5File& file, const std::string& path) {
+  const H5::Group g = checkpoint_group(file, path);
   Checkpoint c;
   c.version = read_string(g, "version");
-  if (c.version != ICEDEM_VERSION)
-    throw InputError(fmt::format("{}: a checkpoint of icedem {}, this is {}: resume it with that version", path,
-                                 c.version, ICEDEM_VERSION));
-  if (!g.nameExists("state"))
-    throw InputError(fmt::format("{}: a checkpoint laid out by an earlier build of icedem {}: resume it with that "
-                                 "build", path, c.version));
   visit_fields(c.values, FieldReader{g.openGroup("state"), path});
   visit_fields(c.history, FieldReader{g.openGroup("history"), path});
   c.world = read_world(g.openGroup("world"), path);
@@ -204,6 +279,7 @@ void write_checkpoint(const std::string& output, const Checkpoint& checkpoint) {
     {
       H5::H5File file(temporary, H5F_ACC_RDWR);
       write_group(file, checkpoint);
+      write_attr(file.openGroup(kGroup), kDigest, format_digest(file_digest(file, kGroup, kDigest)));
       file.close();
     }
     sync_file(temporary);
@@ -212,7 +288,7 @@ void write_checkpoint(const std::string& output, const Checkpoint& checkpoint) {
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);
     throw OutputError(fmt::format("cannot write the checkpoint {}: {}", target, hdf5_reason(e)));
-  } catch (const std::filesystem::filesystem_error& e) {
+  } catch (const std::exception& e) {  // the file system's or the digest's
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);
     throw OutputError(fmt::format("cannot write the checkpoint {}: {}", target, e.what()));
@@ -220,6 +296,10 @@ void write_checkpoint(const std::string& output, const Checkpoint& checkpoint) {
 }
 
 Checkpoint read_checkpoint(const std::string& path) {
+  // a directory or a FIFO is refused before HDF5 opens it (it would block on a FIFO)
+  if (const std::string why = not_a_file(path); !why.empty())
+    throw InputError(fmt::format("{}: cannot read the checkpoint: {}", path, why));
+  verify_checkpoint(path);  // then HDF5 reads here what it has read whole once already
   QuietHdf5 quiet;
   try {
     const H5::H5File file(path, H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT, unlocked_access());
@@ -229,7 +309,10 @@ Checkpoint read_checkpoint(const std::string& path) {
   }
 }
 
-OutputMeta read_output_meta(const std::string& path) {
+namespace {
+
+// /meta of `path`, read here
+OutputMeta read_meta_here(const std::string& path) {
   QuietHdf5 quiet;
   try {
     const H5::H5File file(path, H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT, unlocked_access());
@@ -251,6 +334,42 @@ OutputMeta read_output_meta(const std::string& path) {
   } catch (const H5::Exception& e) {
     throw InputError(fmt::format("{}: not an icedem output file ({})", path, hdf5_reason(e)));
   }
+}
+
+// an OutputMeta as text, from the child that read it to the command: each field as its length and
+// its characters, so that any text comes through
+std::string to_text(const OutputMeta& m) {
+  std::string out;
+  for (const std::string& field : {m.status, m.scenario_text, m.scenario_path, m.message, std::to_string(m.rows),
+                                   fmt::format("{:a}", m.last_time)})
+    out += std::to_string(field.size()) + ":" + field;
+  return out;
+}
+OutputMeta from_text(const std::string& text) {
+  std::vector<std::string> fields;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t colon = text.find(':', at);
+    const std::size_t size = std::stoul(text.substr(at, colon - at));
+    fields.push_back(text.substr(colon + 1, size));
+    at = colon + 1 + size;
+  }
+  if (fields.size() != 6) throw std::logic_error("read_output_meta: a reply of " + std::to_string(fields.size()) + " fields");
+  return OutputMeta{fields[0], fields[1], fields[2], fields[3], std::stol(fields[4]),
+                    std::strtod(fields[5].c_str(), nullptr)};
+}
+
+}  // namespace
+
+OutputMeta read_output_meta(const std::string& path) {
+  if (const std::string why = not_a_file(path); !why.empty())
+    throw InputError(fmt::format("{}: not an icedem output file: {}", path, why));
+  // in a child: the file may be damaged, and HDF5 may crash on it (dem/core/isolated_read.hpp)
+  const IsolatedResult result = read_isolated([&] { return to_text(read_meta_here(path)); }, 60.0);
+  if (!result.ok) {
+    if (result.value.rfind(path + ": ", 0) == 0) throw InputError(result.value);
+    throw InputError(fmt::format("{}: not an icedem output file, or a damaged one ({})", path, result.value));
+  }
+  return from_text(result.value);
 }
 
 void remove_checkpoint_group(const std::string& path) {

@@ -233,7 +233,9 @@ std::string output_markdown() {
         "(a file torn by the kill is no loss) and continues the run to its end, appending to it. The resumed\n"
         "run ends bit for bit as the uninterrupted one. A complete run's checkpoint is deleted, and a complete\n"
         "file is never resumed. `/checkpoint` holds this build's records as bytes: only the icedem version\n"
-        "that wrote it reads it.\n";
+        "that wrote it reads it. Its attribute `digest` holds a SHA-256 of everything else in the file, one\n"
+        "line per part (`/meta`, `/load`, ..., `/checkpoint/world`): `resume` and `info` refuse a checkpoint\n"
+        "whose contents no longer match it, naming the parts that differ.\n";
   md += "\n## Summary (`--summary-json FILE`)\n\n"
         "Statistics are `null` when the analysis window holds no data (`statistics_note` says why).\n\n"
         "| key | unit | meaning |\n|---|---|---|\n";

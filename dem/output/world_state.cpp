@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "dem/core/errors.hpp"
 #include "dem/fracture/ice_lattice.hpp"
 
 namespace icedem {
@@ -114,15 +115,15 @@ void restore_world(World& world, const WorldState& s) {
   if (!world.splits().empty()) throw std::runtime_error("restore_world: the world has split floes already");
   for (const FloeSplit& split : s.splits) {
     if (split.body < 0 || split.body >= static_cast<int>(world.floes().size()))
-      throw std::runtime_error(fmt::format("the checkpoint splits body {}, the scene builds {} ice bodies: it is not "
-                                           "this scene's",
+      throw InputError(fmt::format("the checkpoint splits body {}, the scene builds {} ice bodies: it is not "
+                                   "this scene's",
                                            split.body, world.floes().size()));
     world.split_floe(split);
   }
   const auto& bodies = world.bodies();
   if (s.bodies.size() != bodies.size() || s.lattice_replaced.size() != world.lattices().size() ||
       s.joint_broken.size() != world.joints().size())
-    throw std::runtime_error(fmt::format(
+    throw InputError(fmt::format(
         "the checkpoint holds {} bodies, {} lattices and {} joints, the scene builds {}, {} and {}: it is not this "
         "scene's",
         s.bodies.size(), s.lattice_replaced.size(), s.joint_broken.size(), bodies.size(), world.lattices().size(),
@@ -143,18 +144,24 @@ void restore_world(World& world, const WorldState& s) {
   const auto index = body_indices(world);
   const auto member = members(world);
   std::vector<char> touching(bodies.size(), 0);
-  for (const ManifoldState& ms : s.manifolds) touching.at(ms.body0) = touching.at(ms.body1) = 1;
+  for (const ManifoldState& ms : s.manifolds) {
+    if (ms.body0 < 0 || ms.body1 < 0 || ms.body0 >= static_cast<int>(bodies.size()) ||
+        ms.body1 >= static_cast<int>(bodies.size()))
+      throw InputError(fmt::format("the checkpoint has a contact between bodies {} and {}, the scene builds {}: it is "
+                                   "not this scene's", ms.body0, ms.body1, bodies.size()));
+    touching[ms.body0] = touching[ms.body1] = 1;
+  }
   std::vector<btCollisionObject*> moved;  // since the build: their broadphase boxes are stale
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     btRigidBody& body = *bodies[i];
     const BodyState& b = s.bodies[i];
     const FloeBody* f = world.ice_body(&body);
     if (f && f->fragment != b.fragment)
-      throw std::runtime_error(fmt::format("body {}: fragment {} in the checkpoint, {} rebuilt from its broken joints",
-                                           i, b.fragment, f->fragment));
+      throw InputError(fmt::format("body {}: fragment {} in the checkpoint, {} rebuilt from its broken joints: it "
+                                   "is not this scene's checkpoint", i, b.fragment, f->fragment));
     if ((member.count(&body) > 0) != (b.in_world != 0))
-      throw std::runtime_error(fmt::format("body {}: {} the world in the checkpoint, not in the rebuilt one", i,
-                                           b.in_world ? "in" : "out of"));
+      throw InputError(fmt::format("body {}: {} the world in the checkpoint, not in the rebuilt one: it is not this "
+                                   "scene's checkpoint", i, b.in_world ? "in" : "out of"));
     const btTransform pose = transform(b.transform), interpolation = transform(b.interpolation_transform);
     if (b.in_world && !(pose == body.getWorldTransform() && interpolation == body.getInterpolationWorldTransform()))
       moved.push_back(&body);

@@ -11,7 +11,8 @@ SIGKILL once it has written its checkpoint at t = 5, 15 and 25 s, resumed with
 `icedem resume`, and every dataset and the /stats attributes compared, bit for bit. A kill
 during a checkpoint write is reproduced by what it leaves on the disk: a torn temporary
 checkpoint and a torn output file. Then a run of breakable floes killed between two groups
-of breaks, and one of rigid floes that split (their pieces are bodies made mid-run). `icedem info` and refusals are checked on the way.
+of breaks, and one of rigid floes that split (their pieces are bodies made mid-run). `icedem info` and refusals are checked on the way,
+and checkpoints changed or damaged after they were written are refused.
 """
 import json
 import os
@@ -197,6 +198,57 @@ check(killed_at(name, 25.0), "killed after its checkpoint at t = 25 s")
 os.remove(name)
 p = run("resume", name, "-q")
 check(p.returncode == 0 and contents(name) == full, "the output deleted after the kill: resumed from its checkpoint alone")
+
+# a checkpoint changed or damaged after it was written is refused (exit 2), naming what differs,
+# and neither it nor the output is touched: an edited scenario (friction 0.5 -> 0.9), a changed
+# recorded row, a flipped bit in the world's records, a flipped bit in the file's own structures
+name = "tampered.h5"
+check(killed_at(name, 15.0), "killed after its checkpoint at t = 15 s (to tamper with)")
+pristine = open(name + ".checkpoint", "rb").read()
+
+
+def meta_scenario(f):
+    f["meta"].attrs["scenario"] = f["meta"].attrs["scenario"].replace("ice_ice = 0.5", "ice_ice = 0.9")
+
+
+def surge_row(f):
+    f["load/surge"][100] = f["load/surge"][100] + 28.0
+
+
+def world_bit(f):
+    return f["checkpoint/world/friction_memory"].id.get_offset()
+
+
+tampers = [("an edited scenario", meta_scenario, None, "/meta"),
+           ("a changed recorded row", surge_row, None, "/load"),
+           ("a flipped bit in the friction memory", None, world_bit, "/checkpoint/world"),
+           ("a flipped bit in the root group's header", None, lambda f: 100, "")]
+for what, edit, flip_at, part in tampers:
+    with open(name + ".checkpoint", "wb") as f:
+        f.write(pristine)
+    if edit:
+        with h5py.File(name + ".checkpoint", "r+") as f:
+            edit(f)
+    else:
+        with h5py.File(name + ".checkpoint", "r") as f:
+            at = flip_at(f)
+        data = bytearray(pristine)
+        data[at + 8] ^= 0x10
+        with open(name + ".checkpoint", "wb") as f:
+            f.write(data)
+    tampered = open(name + ".checkpoint", "rb").read()
+    before = open(name, "rb").read()
+    p = run("resume", name, "-q", expect=2)
+    check(p.returncode == 2 and (part + " ") in p.stderr + " " and "cannot be resumed" in p.stderr
+          and open(name, "rb").read() == before and open(name + ".checkpoint", "rb").read() == tampered,
+          f"{what}: resume refuses it (exit {p.returncode}), names {part or 'the damage'}, touches no file: "
+          f"{p.stderr.strip()[:160]}")
+    p = run("info", name, expect=2)
+    check(p.returncode == 2 and "not resumable" in p.stdout, f"{what}: icedem info says it is not resumable (exit 2)")
+with open(name + ".checkpoint", "wb") as f:
+    f.write(pristine)
+p = run("resume", name, "-q")
+check(p.returncode == 0 and contents(name) == full, "the checkpoint as written: resumed, as the uninterrupted run")
 
 # a run without checkpoints cannot be resumed, and says why
 name = "no_checkpoints.h5"
