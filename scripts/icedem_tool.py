@@ -51,7 +51,15 @@ def main():
         print(f"{name}: not a command of scripts/icedem_tool.py (run it alone for the list)", file=sys.stderr)
         return 2
     module = importlib.import_module(f"icedem_tools.{COMMANDS[name][0]}")
-    return module.main()
+    from icedem_tools import output_guard  # noqa: E402 (on the path set above)
+    try:
+        return module.main()
+    except output_guard.Refused as e:  # before any work: nothing written
+        print(f"{name}: error: {e}", file=sys.stderr)
+        return 2
+    except output_guard.WriteFailed as e:
+        print(f"{name}: error: {e}", file=sys.stderr)
+        return 5
 
 
 if __name__ == "__main__":

@@ -99,7 +99,9 @@ std::optional<KeyValue> convert(const KeySpec& s, const toml::node& n) {
     }
     case KeyType::kInteger: {
       auto* i = n.as_integer();
-      if (!i || !in_range(s, static_cast<double>(i->get()))) return std::nullopt;
+      // compared as integers: 9000000000000000001 is 9e18 as a double, and would pass a bound of 9e18
+      if (!i || !in_range(s, static_cast<double>(i->get())) || i->get() > static_cast<std::int64_t>(s.max))
+        return std::nullopt;
       return KeyValue{static_cast<std::int64_t>(i->get())};
     }
     case KeyType::kBoolean: {
@@ -177,6 +179,14 @@ void assign(Scenario& sc, const std::string& path, const toml::node& node, const
 void walk(Scenario& sc, const toml::table& table, const std::string& prefix, const std::string& file,
           const std::set<std::string>& overridden) {
   for (auto&& [key, node] : table) {
+    // "time.dt" = 0.5 is one key whose name holds a dot, not dt of [time]: joined into a path it
+    // would pass for time.dt and silently override [time] dt
+    if (key.str().find('.') != std::string_view::npos)
+      throw InputError(fmt::format("{}: the quoted key \"{}\" is one key with a dot in its name, not a key of a "
+                                   "section: write it unquoted under its section ([{}] {} = ...)",
+                                   origin_of(file, node), excerpt(std::string(key.str())),
+                                   excerpt(std::string(key.str().substr(0, key.str().rfind('.')))),
+                                   excerpt(std::string(key.str().substr(key.str().rfind('.') + 1)))));
     const std::string path = prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
     if (overridden.count(path) && find_key(path)) continue;
     if (const toml::table* sub = node.as_table()) {
@@ -205,6 +215,10 @@ std::string override_key(const std::string& text) {
 }
 
 void apply_override(Scenario& sc, const std::string& text) {
+  // TOML would read a second line as a second key and the value would be cut silently at the first
+  if (text.find_first_of("\n\r") != std::string::npos)
+    throw InputError(fmt::format("--set {}: a value of more than one line; give the key and its value on one line",
+                                 excerpt(text)));
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError(fmt::format("--set {}: expected key.path=value", text));
@@ -227,6 +241,25 @@ void apply_override(Scenario& sc, const std::string& text) {
     parsed = toml::table{{"v", raw}};
   }
   assign(sc, path, *parsed.get("v"), where);
+}
+
+// The key a line of a scenario sets, with its section ("ice.thickness"), "" if it sets none: a
+// syntax error in a value (a number too long for 64 bits) then names its key, not only its line
+std::string key_on_line(const std::string& text, std::size_t line) {
+  std::stringstream in(text);
+  std::string section, current;
+  for (std::size_t n = 1; n <= line && std::getline(in, current); ++n) {
+    const std::string t = trimmed(current);
+    if (n < line && t.size() > 2 && t.front() == '[' && t[1] != '[') section = trimmed(t.substr(1, t.find(']') - 1));
+  }
+  const std::string t = trimmed(current);
+  const auto eq = t.find('=');
+  if (eq == std::string::npos || t.empty() || t.front() == '#' || t.front() == '[') return "";
+  const std::string key = trimmed(t.substr(0, eq));
+  if (key.empty() || key.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-.") !=
+                         std::string::npos)
+    return "";
+  return section.empty() ? key : section + "." + key;
 }
 
 }  // namespace
@@ -295,8 +328,9 @@ Scenario parse_scenario(const std::string& toml_text, const std::string& display
   try {
     table = toml::parse(toml_text, display_name);
   } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}: TOML syntax error: {}", display_name, e.source().begin.line,
-                                 e.description()));
+    const std::string key = key_on_line(toml_text, e.source().begin.line);
+    throw InputError(fmt::format("{}:{}: {}TOML syntax error: {}", display_name, e.source().begin.line,
+                                 key.empty() ? "" : excerpt(key) + ": ", e.description()));
   }
   std::set<std::string> overridden;
   for (const std::string& o : overrides) overridden.insert(override_key(o));

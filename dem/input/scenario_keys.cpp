@@ -335,6 +335,10 @@ std::vector<KeySpec> make_keys() {
                    "window ends this far beyond first contact; 0: at the end of the run"));
   k.push_back(real("stats.lowpass_hz", "Hz", 0.0, 0.0, 1.0e3,
                    "low-pass cut-off applied to the surge load before statistics; 0: none"));
+  k.push_back(boolean("stats.include_squeeze", false,
+                      "keep in the statistics the steps where the structure squeezes the ice against the channel's "
+                      "end wall (the rig's load, not the ice's: dem/input/structure_path.hpp); false ends the "
+                      "analysis window where the squeeze begins"));
 
   // validation cases (scenarios/validation/)
   k.push_back(choice("validation.case", "none", {"none", "plate_deflection", "cantilever"},

@@ -5,6 +5,8 @@
 // meanings and defaults are declared in dem/input/scenario_keys.cpp.
 #pragma once
 
+#include <algorithm>
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -180,6 +182,7 @@ struct StatsSettings {
   double window_start_travel;  // m beyond first contact
   double window_end_travel;    // m beyond first contact, 0 = end of run
   double lowpass_hz;           // Hz, 0 = unfiltered
+  bool include_squeeze;        // keep the steps of a squeeze against the end wall (dem/input/structure_path.hpp)
 };
 
 enum class ValidationKind { kNone, kPlateDeflection, kCantilever };
@@ -232,6 +235,23 @@ inline bool floes_split(const Scene& s) { return s.fracture.mode == FractureMode
 /// max(its override, solver.iterations) times (fracture.joint_iterations).
 inline int joint_sweeps(const Scene& s) {
   return s.fracture.joint_iterations > s.solver.iterations ? s.fracture.joint_iterations : s.solver.iterations;
+}
+
+/// The hull's largest radius between heights y0 and y1 (m; 0 where the hull is not): its stations
+/// there and the profile interpolated linearly at y0 and y1, as the hull is built between stations.
+inline double hull_radius_over(const std::vector<ProfileStation>& hull, double y0, double y1) {
+  const auto radius_at = [&](double y) {
+    for (std::size_t i = 1; i < hull.size(); ++i)
+      if (y >= hull[i - 1].y && y <= hull[i].y) {
+        const double t = (y - hull[i - 1].y) / (hull[i].y - hull[i - 1].y);
+        return hull[i - 1].radius + t * (hull[i].radius - hull[i - 1].radius);
+      }
+    return 0.0;
+  };
+  double r = std::max(radius_at(y0), radius_at(y1));
+  for (const ProfileStation& p : hull)
+    if (p.y >= y0 && p.y <= y1) r = std::max(r, p.radius);
+  return r;
 }
 
 }  // namespace icedem

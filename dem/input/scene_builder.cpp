@@ -87,6 +87,27 @@ void check_limits(const Scenario& sc, const Scene& s) {
 
 }  // namespace
 
+// The structure can meet the ice and stays within the tank: a hull wholly above the floating ice
+// (or under it) tows through nothing, and a hull through the tank's side cannot be built (a tow
+// scene; validation cases park the structure away from their plate). A keel below the bottom is a
+// warning (dem/input/setting_warnings.hpp): a structure standing on the floor is one
+void check_structure_in_tank(const Scenario& sc, const Scene& s) {
+  const std::vector<ProfileStation>& hull = s.structure.profile;
+  const double keel = hull.front().y, deck = hull.back().y;
+  const double ice_bottom = -s.ice.draft, ice_top = s.ice.thickness - s.ice.draft;
+  if (keel >= ice_top || deck <= ice_bottom)
+    fail_key(sc, "structure.profile",
+             fmt::format("the hull spans y = {} to {} m and the ice floats from y = {:.4f} to {:.4f} m: the structure "
+                         "would pass {} the ice without meeting it",
+                         keel, deck, ice_bottom, ice_top, keel >= ice_top ? "above" : "under"));
+  const double r = hull_radius_over(hull, ice_bottom, ice_top);
+  if (std::abs(s.structure.start_z) + r > 0.5 * s.channel.tank_width)
+    fail_key(sc, "structure.start_z",
+             fmt::format("the hull (radius {:.3f} m where it meets the ice) at z = {} m reaches beyond the tank's "
+                         "side at |z| = {} m (tank.width / 2)",
+                         r, s.structure.start_z, 0.5 * s.channel.tank_width));
+}
+
 Scene make_scene(const Scenario& sc) {
   Scene s;
   s.source_path = sc.path;
@@ -291,6 +312,7 @@ Scene make_scene(const Scenario& sc) {
   s.stats.window_start_travel = real(sc, "stats.window_start_travel");
   s.stats.window_end_travel = real(sc, "stats.window_end_travel");
   s.stats.lowpass_hz = real(sc, "stats.lowpass_hz");
+  s.stats.include_squeeze = get<bool>(sc, "stats.include_squeeze");
 
   if (s.validation.kind != ValidationKind::kNone && s.fracture.mode != FractureMode::kOn)
     fail_key(sc, "fracture.mode", fmt::format("the {} case needs ice elements: set fracture.mode = \"on\"",
@@ -304,6 +326,7 @@ Scene make_scene(const Scenario& sc) {
     fail_key(sc, "stats.lowpass_hz", fmt::format("must be below the Nyquist frequency 1/(2 dt) = {} Hz", 0.5 / s.time.dt));
   if (s.stats.window_end_travel > 0 && s.stats.window_end_travel <= s.stats.window_start_travel)
     fail_key(sc, "stats.window_end_travel", "must be beyond stats.window_start_travel (or 0 for the end of the run)");
+  if (s.validation.kind == ValidationKind::kNone) check_structure_in_tank(sc, s);
   check_limits(sc, s);
   return s;
 }

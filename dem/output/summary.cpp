@@ -96,6 +96,12 @@ std::string summary_table(const RunSummary& s) {
                        "/diagnostics/max_angular_speed has the history; docs/model/physics.md, \"Breakable ice\"\n",
                        s.health.max.max_angular_speed, s.health.max_time[0]);
   out += solver_line(s.solver);
+  if (s.squeeze_start_s >= 0)
+    out += fmt::format("  the structure squeezes the ice against the channel's end wall (x = {} m) from t = {:.1f} s: "
+                       "max {:.2f} N from then on, the rig's load, not the ice's; {}\n",
+                       s.squeeze_wall_x, s.squeeze_start_s, s.squeeze_max_fx_N,
+                       s.squeeze_excluded ? "left out of the statistics (stats.include_squeeze = true keeps it)"
+                                          : "kept in the statistics (stats.include_squeeze)");
   if (!s.has_statistics) {
     out += fmt::format("  no load statistics: {}\n", s.statistics_note);
     return out;
@@ -250,6 +256,16 @@ const std::vector<SummaryField>& summary_fields() {
        "locked_window_fraction (share of the window's steps where they carry half the surge load or more)",
        [](S s) {
          return json{{"share_of_surge", s.boundary_share}, {"locked_window_fraction", s.locked_window_fraction}};
+       }},
+      {"squeeze", "", false, false,
+       "the structure squeezing the ice against the channel's end wall, null if the run did not get there: "
+       "start_s (when its widest part came within one ice thickness of the wall), wall_x_m, max_fx_N (the "
+       "largest surge load from then on: the rig's, not the ice's) and excluded_from_statistics (true unless "
+       "stats.include_squeeze)",
+       [](S s) {
+         if (s.squeeze_start_s < 0) return json(nullptr);
+         return json{{"start_s", s.squeeze_start_s}, {"wall_x_m", s.squeeze_wall_x},
+                     {"max_fx_N", s.squeeze_max_fx_N}, {"excluded_from_statistics", s.squeeze_excluded}};
        }},
       {"stage_time_s", "s", false, false,
        "wall time per stage of the step: structure, water, collision, islands, solve (the contact solve), "

@@ -67,6 +67,13 @@ struct RunSummary {
   // surge load they carry (sum of boundary load / sum of surge load) and of the steps locked
   double boundary_share = 0;
   double locked_window_fraction = 0;
+  // the structure squeezing the ice against the channel's end wall (dem/input/structure_path.hpp):
+  // from when (-1: not in this run), against the wall at x, the largest surge load from then on, and
+  // whether the statistics left those steps out (stats.include_squeeze false)
+  double squeeze_start_s = -1;
+  double squeeze_wall_x = 0;
+  double squeeze_max_fx_N = 0;
+  bool squeeze_excluded = false;
   DiagnosticExtremes health;  // extremes of the per-step diagnostics (speeds, energy, ice mass, ...)
   std::vector<std::string> warnings;  // scene warnings (step_size_warnings), printed first
   nlohmann::json validation;  // validation block of a validation case, null otherwise

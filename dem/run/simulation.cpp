@@ -15,7 +15,9 @@
 #include "dem/contact/registry.hpp"
 #include "dem/core/errors.hpp"
 #include "dem/fracture/ice_lattice.hpp"
+#include "dem/input/setting_warnings.hpp"
 #include "dem/input/step_size_advice.hpp"
+#include "dem/input/structure_path.hpp"
 #include "dem/output/checkpoint.hpp"
 #include "dem/output/progress.hpp"
 #include "dem/output/recorder.hpp"
@@ -23,6 +25,7 @@
 #include "dem/step/initial_state.hpp"
 #include "dem/step/step.hpp"
 #include "dem/validation/case.hpp"
+#include "dem/validation/plate_deflection.hpp"
 
 namespace icedem {
 namespace {
@@ -157,16 +160,41 @@ void boundary_summary(const RunHistory& h, RunSummary& s) {
 // The analysis window starts a stated travel distance after the first ice
 // contact (stats.window_start_travel; default 2 waterline breadths, cf. the
 // paper's window after the structure has advanced into the ice, Fig. 9).
+// The squeeze of the ice against the channel's end wall, if the run got there (dem/input/structure_path.hpp):
+// when it began and the largest surge load from then on
+void find_squeeze(const Scene& scene, const RunHistory& h, RunSummary& s) {
+  const auto meeting = end_wall_meeting(scene);
+  if (!meeting || h.time.empty() || h.time.back() < meeting->time) return;
+  s.squeeze_start_s = meeting->time;
+  s.squeeze_wall_x = meeting->wall_x;
+  for (std::size_t i = 0; i < h.time.size(); ++i)
+    if (h.time[i] >= meeting->time) s.squeeze_max_fx_N = std::max(s.squeeze_max_fx_N, h.surge[i]);
+}
+
 void compute_statistics(const Scene& scene, const RunHistory& h, RunSummary& s) {
+  find_squeeze(scene, h, s);
   if (s.first_contact_s < 0) {
     s.statistics_note = "the structure never touched the ice";
     return;
   }
   const double v = scene.structure.speed;
   const double t0 = v > 0 ? s.first_contact_s + scene.stats.window_start_travel / v : s.first_contact_s;
-  const double t1 = scene.stats.window_end_travel > 0 && v > 0
-                        ? s.first_contact_s + scene.stats.window_end_travel / v
-                        : 0.0;
+  double t1 = scene.stats.window_end_travel > 0 && v > 0 ? s.first_contact_s + scene.stats.window_end_travel / v
+                                                         : 0.0;  // 0: to the end of the record
+  // the window ends where the squeeze against the end wall begins: its load is the rig's
+  if (s.squeeze_start_s >= 0 && !scene.stats.include_squeeze) {
+    s.squeeze_excluded = true;
+    if (s.squeeze_start_s <= t0) {
+      s.statistics_note = fmt::format("the structure squeezes the ice against the channel's end wall from t = {:.1f} "
+                                      "s, before the analysis window begins ({:.1f} s); stats.include_squeeze = true "
+                                      "keeps those steps",
+                                      s.squeeze_start_s, t0);
+      return;
+    }
+    // the last step before the squeeze (the window's end is inclusive)
+    const double before = s.squeeze_start_s - 0.5 * scene.time.dt;
+    t1 = t1 > 0 ? std::min(t1, before) : before;
+  }
   // peaks at least half a floe passage apart (docs/model/validation_targets.md §7)
   const double separation = v > 0 ? 0.5 * scene.ice.floe_size / v : 1.0;
   try {
@@ -261,6 +289,8 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.scenario = scene.source_path;
   summary.output = options.output;
   summary.warnings = step_size_warnings(scene);
+  for (const std::string& w : setting_warnings(scene)) summary.warnings.push_back(w);
+  if (const std::string w = plate_load_warning(scene); !w.empty()) summary.warnings.push_back(w);
 
   // initial conditions, or the state of the checkpoint the run resumes from
   SetupProgress setup(options.progress);

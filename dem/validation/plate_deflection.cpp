@@ -1,6 +1,8 @@
 // The plate-deflection case (dem/validation/plate_deflection.hpp).
 #include "dem/validation/plate_deflection.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include <btBulletDynamicsCommon.h>
@@ -55,6 +57,18 @@ ValidationResult PlateDeflection::result(const Scene& scene) const {
   r.passed = std::abs(*r.rel_error) <= r.tolerance;
   r.details["elastic_modulus_MPa"] = modulus_from_compliance(scene, compliance, factor) / 1e6;
   return r;
+}
+
+std::string plate_load_warning(const Scene& scene) {
+  if (scene.validation.kind != ValidationKind::kPlateDeflection) return "";
+  const double compliance = hertz_plate_compliance(scene) * plate_finite_factor(scene);  // m/N
+  const double deflection = scene.validation.load * compliance, freeboard = scene.ice.thickness - scene.ice.draft;
+  if (deflection <= freeboard) return "";
+  return fmt::format("validation.load = {} N deflects the plate's centre by {:.1f} mm by the reference ({:.4f} mm/N), "
+                     "beyond its freeboard of {:.1f} mm: the loaded elements go under water, where the plate no "
+                     "longer floats as the theory assumes (the first steps throw them about); a load below {:.1f} N "
+                     "keeps them afloat",
+                     scene.validation.load, 1e3 * deflection, 1e3 * compliance, 1e3 * freeboard, freeboard / compliance);
 }
 
 }  // namespace icedem

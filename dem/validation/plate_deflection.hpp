@@ -26,4 +26,10 @@ class PlateDeflection : public ValidationCase {
   long samples_ = 0;
 };
 
+/// Why the scene's plate case cannot give its reference, "" if it can: a load whose reference
+/// deflection sinks the loaded elements below the water (beyond the plate's freeboard), where
+/// the plate no longer floats as the linear theory assumes and the elements under the load are
+/// thrown about in the first step.
+std::string plate_load_warning(const Scene& scene);
+
 }  // namespace icedem

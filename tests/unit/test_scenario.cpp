@@ -284,3 +284,28 @@ TEST(ScenarioLimits, ASetRepairsAnInvalidValueInTheFile) {
   EXPECT_NE(error_of(file + "concentration = 7\n", {"ice.thickness=0.033"}).find("ice.concentration = 7"),
             std::string::npos);
 }
+
+// "time.dt" = 0.5 is one key named with a dot: joined into a path it passed for [time] dt and
+// silently overrode it
+TEST(Scenario, AQuotedDottedKeyIsNotTheSectionsKey) {
+  const std::string e = error_of("\"time.dt\" = 0.5\n[time]\ndt = 0.02\n");
+  EXPECT_NE(e.find("the quoted key \"time.dt\""), std::string::npos) << e;
+  EXPECT_NE(e.find("[time] dt"), std::string::npos) << e;
+}
+
+// TOML would read the second line as a second key, and the value was cut at the first
+TEST(Scenario, AMultiLineSetValueIsRefused) {
+  const std::string e = error_of("", {"time.dt=0.01\ntime.duration=5"});
+  EXPECT_NE(e.find("more than one line"), std::string::npos) << e;
+}
+
+// 9000000000000000001 is 9e18 as a double: integers are compared as integers
+TEST(Scenario, AWholeNumberJustAboveItsRangeIsRefused) {
+  EXPECT_NE(error_of("seed = 9000000000000000001\n").find("seed"), std::string::npos);
+  EXPECT_EQ(error_of("seed = 9000000000000000000\n"), "");
+}
+
+TEST(Scenario, ANumberTooLongForTomlNamesItsKey) {
+  const std::string e = error_of("[time]\ndt = 0.02\n[ice]\nthickness = 99999999999999999999999\n");
+  EXPECT_NE(e.find(":4: ice.thickness: TOML syntax error"), std::string::npos) << e;
+}

@@ -26,7 +26,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 from scipy.spatial import ConvexHull  # noqa: E402
 
-from . import aggregate as agg, execute, results, runner, spec
+from . import aggregate as agg, execute, output_guard, results, runner, spec
 from .report_tables import FII, FIS
 from .xdmf import quat_to_matrix
 
@@ -170,6 +170,7 @@ def main(argv=None):
     name, runs = spec.load(args.sweep)
     out = os.path.abspath(args.out or os.path.join(spec.ROOT, "sweeps", name))
     figs = os.path.abspath(args.figures or os.path.join(out, "figures"))
+    output_guard.guard([("--figures", figs, output_guard.DIRECTORY)], [args.sweep])
     os.makedirs(figs, exist_ok=True)
     records = [(r, agg.load_record(r, out)) for r in runs if execute.status(r, out).state == "done"]
     for scenario in dict.fromkeys(r.scenario for r in runs):

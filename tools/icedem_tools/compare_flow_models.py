@@ -25,7 +25,7 @@ import time
 import numpy as np
 
 from .spec import ROOT
-from . import runner
+from . import output_guard, runner
 from .results import load_run
 
 
@@ -57,6 +57,7 @@ def main(argv=None):
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "coupling"))
     ap.add_argument("--icedem", default=os.path.join(ROOT, "build", "dem", "icedem"))
     a = ap.parse_args(argv)
+    output_guard.guard([("--out", a.out, output_guard.DIRECTORY)], [a.scenario])
     os.makedirs(a.out, exist_ok=True)
     work = tempfile.mkdtemp(prefix="icedem-flow-models-")
     cache = os.path.join(work, "foam_cache")

@@ -39,7 +39,7 @@ import sys
 import tomllib
 
 
-from . import aggregate as agg, execute, spec
+from . import aggregate as agg, execute, output_guard, spec
 from . import pareto as pareto_plot
 from .spec import ROOT
 
@@ -110,6 +110,7 @@ def main(argv=None):
         sys.exit(f"scripts/convergence: no icedem executable at {a.icedem} (build it: scripts/setup.sh)")
     out = a.out or os.path.join(ROOT, "bench", "results")
     runs_dir = os.path.join(a.out, "runs") if a.out else os.path.join(ROOT, "sweeps", name)
+    output_guard.guard([("--out", out, output_guard.DIRECTORY), ("the runs' directory", runs_dir, output_guard.DIRECTORY)])
     # the paper setting run by another build goes to a directory of its own
     baseline_dir = os.path.join(runs_dir, "baseline-build")
     other = [r for r in runs if a.baseline_icedem and r.variant == BASELINE]

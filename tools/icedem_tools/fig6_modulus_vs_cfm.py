@@ -19,7 +19,7 @@ import os
 import sys
 import tempfile
 
-from . import runner
+from . import output_guard, runner
 
 import matplotlib
 matplotlib.use("Agg")
@@ -47,6 +47,7 @@ def main(argv=None):
     ap.add_argument("--replot", action="store_true")
     ap.add_argument("--plate", type=float, default=2.7, help="nominal plate side, m (rounded to whole elements)")
     args = ap.parse_args(argv)
+    output_guard.guard([("--out", args.out, output_guard.DIRECTORY)])
     os.makedirs(args.out, exist_ok=True)
 
     sizes = [0.10, 0.15, 0.20]

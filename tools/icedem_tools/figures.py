@@ -35,7 +35,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
-from . import aggregate as agg, execute, results, runner, spec, xdmf
+from . import aggregate as agg, execute, output_guard, results, runner, spec, xdmf
 from .report_tables import FII, FIS, read_rows
 
 RUN_H5 = runner.RUN_FILES["h5"]
@@ -261,6 +261,7 @@ def main(argv=None):
     name, runs = spec.load(args.sweep)
     out = os.path.abspath(args.out or os.path.join(spec.ROOT, "sweeps", name))
     figs = args.figures or os.path.join(out, "figures")
+    output_guard.guard([("--figures", figs, output_guard.DIRECTORY)], [args.sweep])
     os.makedirs(figs, exist_ok=True)
     rows = read_rows(out)
     # the runs drawn from their HDF5 files (a kept record holds no time series): run again

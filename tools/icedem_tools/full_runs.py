@@ -33,7 +33,7 @@ import datetime
 import os
 import sys
 
-from . import execute, spec
+from . import execute, output_guard, spec
 from .aggregate import TOP_FLOES, ensemble, fracture_figures, window_loads
 from .aggregate import judge as aggregate_judge
 from .spec import ROOT
@@ -110,10 +110,12 @@ def main(argv=None):
     except spec.SweepError as e:
         sys.exit(f"scripts/full_runs: {e}")
     out = a.out or os.path.join(ROOT, "sweeps", name)
+    today = datetime.date.today().isoformat()
+    path = a.report or os.path.join(ROOT, "bench", "results", f"full-runs-{today}.md")
+    output_guard.guard([("--report", path, output_guard.FILE)], [STUDY_FILE])
     found = {}
     for r in runs:
         found.setdefault(r.scenario, {}).setdefault(r.variant, []).append(dict(execute.summary(r, out), seed=r.seed))
-    today = datetime.date.today().isoformat()
     lines = [f"# The contact solve on full runs, {today}", "",
              f"Runs of `{os.path.relpath(STUDY_FILE, ROOT)}` in `{out}`; the criteria: mean within 3 %, p99 within "
              "5 %, mean of maxima within 10 % of the reference, floes breaking as often as in the reference (the exact "
@@ -128,8 +130,6 @@ def main(argv=None):
         lines += table(scenario, variants, found[scenario])
     text = "\n".join(lines)
     print(text)
-    path = a.report or os.path.join(ROOT, "bench", "results", f"full-runs-{today}.md")
-    with open(path, "w") as f:
-        f.write(text + "\n")
+    output_guard.write_text(path, text + "\n")
     print(f"wrote {path}")
     return 0

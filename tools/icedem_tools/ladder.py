@@ -40,7 +40,7 @@ import tempfile
 import tomllib
 
 
-from . import aggregate as agg, execute, spec
+from . import aggregate as agg, execute, output_guard, spec
 from . import pareto as pareto_plot
 from .spec import ROOT
 
@@ -94,6 +94,7 @@ def main(argv=None):
     runs_dir = (os.path.join(a.out, "runs") if a.out else tempfile.mkdtemp(prefix="icedem-ladder-") if a.quick
                 else os.path.join(ROOT, "sweeps", name))
     float_dir = os.path.join(runs_dir, "float")
+    output_guard.guard([("--out", a.out, output_guard.DIRECTORY), ("the runs' directory", runs_dir, output_guard.DIRECTORY)])
     float_runs = [r for r in runs if r.variant == DEFAULT] if not a.quick and os.access(a.float_icedem, os.X_OK) else []
     seeds = sorted({r.seed for r in runs})
     start = datetime.datetime.now(datetime.timezone.utc)

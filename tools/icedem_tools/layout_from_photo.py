@@ -29,7 +29,7 @@ import sys
 
 import numpy as np
 
-from . import photolayout
+from . import output_guard, photolayout
 
 
 def pair(text):
@@ -59,6 +59,11 @@ def main(argv=None):
         reference = [tuple(float(v) for v in p.split(",")) for p in a.reference.split(";") if p.strip()]
         if len(reference) != 4 or any(len(r) != 4 for r in reference):
             ap.error("--reference: expected four 'u,v,x,z' points separated by ';'")
+    # before any work: the overlay defaults to OUTPUT with .png, which may be the photo itself
+    overlay = a.overlay or os.path.splitext(a.output)[0] + ".png"
+    output_guard.guard([("-o", a.output, output_guard.FILE),
+                        ("--overlay" if a.overlay else "the overlay (OUTPUT with .png)", overlay, output_guard.FILE)],
+                       [a.photo])
     try:
         image = io.imread(a.photo)
     except Exception as e:  # noqa: BLE001 (an unreadable photo is the user's input)
@@ -81,11 +86,14 @@ def main(argv=None):
         region = (xs.min(), xs.max(), zs.min(), zs.max())
     min_area = a.min_area if a.min_area is not None else 0.1 * floe_size ** 2
     floes = photolayout.floes_from_labels(labels, to_tank, min_area, region)
+    if not floes:  # nothing written: a layout of no floes is not one icedem runs
+        print(f"layout_from_photo: {a.photo}: no floes found (typical floe side {floe_size:.3f} m); check --ice "
+              f"(bright or dark ice), the scale and --floe-size", file=sys.stderr)
+        return 2
     cut = photolayout.separate(floes)
     photolayout.write_csv(floes, a.output)
     area = (region[1] - region[0]) * (region[3] - region[2])
     s = photolayout.summary(floes, area)
-    overlay = a.overlay or os.path.splitext(a.output)[0] + ".png"
     photolayout.draw_overlay(image, floes, overlay)
     how = "given" if a.floe_size else ("found from the photo: " + " -> ".join(f"{e * m_per_px:.3f}" for e in estimates)
                                        + " m")

@@ -19,7 +19,7 @@ import tempfile
 import numpy as np
 from scipy.spatial import ConvexHull, cKDTree
 
-from . import photolayout
+from . import output_guard, photolayout
 
 from .spec import ROOT
 SUPERSAMPLE = 4
@@ -186,6 +186,8 @@ def main(argv=None):
     ap.add_argument("--example", help="only render a small photo (10 x 5 floes of 0.3 m, 4 mm per pixel, JPEG) "
                                       "to this path, for scenarios/examples/floes_from_photo.toml")
     a = ap.parse_args(argv)
+    output_guard.guard([("--example", a.example, output_guard.FILE)] if a.example else
+                       [("--out", a.out, output_guard.DIRECTORY)])
     if a.example:
         from skimage import io
         rng = np.random.default_rng(a.seed)

@@ -17,6 +17,7 @@ segmentation of tank photos, Meyer 1992).
    taken at an angle).
 """
 import csv
+import io
 import math
 
 import numpy as np
@@ -24,6 +25,8 @@ from scipy import ndimage
 from scipy.spatial import ConvexHull
 from skimage import filters, measure, morphology, segmentation, transform
 from skimage.feature import peak_local_max
+
+from . import output_guard
 
 
 def to_gray(image):
@@ -118,7 +121,7 @@ def split_floes(mask, floe_px, gap_px=1.0):
     # than their peaks, while an elongated floe's two peaks are joined by a ridge nearly as
     # high (without this, 40 % fields of 0.2 m floes were split into up to 3.6 % too many)
     prominent = morphology.h_maxima(distance, 0.05 * floe_px).astype(bool)
-    peaks = np.array([p for p in peaks if prominent[tuple(p)]]).reshape(-1, 2)
+    peaks = np.array([p for p in peaks if prominent[tuple(p)]], dtype=int).reshape(-1, 2)  # none: still whole numbers
     markers = np.zeros(mask.shape, dtype=int)
     markers[tuple(peaks.T)] = np.arange(1, len(peaks) + 1)
     return segmentation.watershed(-distance, markers, mask=mask)
@@ -246,18 +249,20 @@ def simplify(hull_px, tolerance_px=0.75):
 
 
 def write_csv(floes, path):
-    """The layout file icedem reads (layout.file): x, z, yaw_deg, polygon (local vertices)."""
-    with open(path, "w", newline="") as f:
-        f.write("# floes from a photo (scripts/layout_from_photo): centroid x, z (m, tank frame),\n"
-                "# yaw 0, outline vertices relative to the centroid (m), counter-clockwise seen from above\n")
-        w = csv.writer(f)
-        w.writerow(["x", "z", "yaw_deg", "polygon"])
-        for f in floes:
-            c, poly = f["centre"], f["polygon"]
-            # icedem's outlines are counter-clockwise seen from above (+y): in (x, z) that is
-            # a negative shoelace sum
-            p = poly if signed_area_xz(poly) > 0 else poly[::-1]
-            w.writerow([f"{c[0]:.5f}", f"{c[1]:.5f}", "0", "; ".join(f"{x:.5f} {z:.5f}" for x, z in p)])
+    """The layout file icedem reads (layout.file): x, z, yaw_deg, polygon (local vertices); written
+    whole or not at all (output_guard.write_text)."""
+    out = io.StringIO()
+    out.write("# floes from a photo (scripts/layout_from_photo): centroid x, z (m, tank frame),\n"
+              "# yaw 0, outline vertices relative to the centroid (m), counter-clockwise seen from above\n")
+    w = csv.writer(out)
+    w.writerow(["x", "z", "yaw_deg", "polygon"])
+    for f in floes:
+        c, poly = f["centre"], f["polygon"]
+        # icedem's outlines are counter-clockwise seen from above (+y): in (x, z) that is
+        # a negative shoelace sum
+        p = poly if signed_area_xz(poly) > 0 else poly[::-1]
+        w.writerow([f"{c[0]:.5f}", f"{c[1]:.5f}", "0", "; ".join(f"{x:.5f} {z:.5f}" for x, z in p)])
+    output_guard.write_text(path, out.getvalue())
 
 
 def signed_area_xz(p):
@@ -290,5 +295,5 @@ def draw_overlay(image, floes, path):
     ax.set_title(f"{len(floes)} floes detected (outlines: their convex hulls)", fontsize=9)
     ax.set_axis_off()
     fig.tight_layout()
-    fig.savefig(path, dpi=80 if path.lower().endswith((".jpg", ".jpeg")) else 110)
+    output_guard.save_figure(fig, path, dpi=80 if path.lower().endswith((".jpg", ".jpeg")) else 110)
     plt.close(fig)

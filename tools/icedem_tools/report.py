@@ -15,7 +15,7 @@ import math
 import os
 import sys
 
-from . import aggregate as agg, execute, spec
+from . import aggregate as agg, execute, output_guard, spec
 from .paper_findings import changed_findings, disagreement_section, filled_causes, findings, side_by_side
 from .report_breakage import margin_section, mechanism_section
 from .report_fracture_models import fracture_models_section
@@ -164,6 +164,8 @@ def main(argv=None):
     report = os.path.abspath(args.report or os.path.join(out, "report.md"))
     figs = os.path.abspath(args.figures or os.path.join(out, "figures"))
     sweep_rel = os.path.relpath(os.path.abspath(args.sweep), spec.ROOT)
+    # before any work: the report is never the sweep file, a supplement, nor a run's HDF5 file
+    output_guard.guard([("--report", report, output_guard.FILE)], [args.sweep, *args.supplement])
     records = run_records(runs, out)
     summaries = run_summaries(records)
     done = sum(len(v) for v in summaries.values())
@@ -214,9 +216,7 @@ def main(argv=None):
         L += before_section(rows, os.path.abspath(args.before), args.before_note)
     L += configuration_table(rows) + run_time_section(summaries, out, len(runs))
     L += figure_section(runs, out, figs, report)
-    os.makedirs(os.path.dirname(report), exist_ok=True)
-    with open(report, "w") as fh:
-        fh.write("\n".join(L) + "\n")
+    output_guard.write_text(report, "\n".join(L) + "\n")
     print(f"wrote {report}")
     return 0
 

@@ -59,7 +59,7 @@ import tomllib
 
 import numpy as np
 
-from . import execute, results, runner, spec
+from . import execute, output_guard, results, runner, spec
 from .spec import ROOT
 
 STRESS_DIR = os.path.join(ROOT, "scenarios", "stress")
@@ -186,6 +186,7 @@ def main(argv=None):
     # the runs go to --out or a temporary directory; the full suite's report to bench/results
     runs_dir = a.out or tempfile.mkdtemp(prefix="icedem-stress-")
     out = a.out or (runs_dir if a.quick else os.path.join(ROOT, "bench", "results"))
+    output_guard.guard([("--out", out, output_guard.DIRECTORY), ("the runs' directory", runs_dir, output_guard.DIRECTORY)])
     os.makedirs(runs_dir, exist_ok=True)
     start = datetime.datetime.now(datetime.timezone.utc)
     # every run afresh: a stress run is judged on what this build does

@@ -17,7 +17,7 @@ import argparse
 import os
 import sys
 
-from . import execute, spec
+from . import execute, output_guard, spec
 
 
 def report(statuses):
@@ -57,6 +57,7 @@ def _main(argv):
         print(f"sweep: {e}", file=sys.stderr)
         return 2
     out = os.path.abspath(args.out or os.path.join(spec.ROOT, "sweeps", name))
+    output_guard.guard([("--out", out, output_guard.DIRECTORY)], [args.sweep])
     if args.command == "expand":
         for r in runs:
             print(f"{r.path}: {os.path.relpath(r.scenario_file, spec.ROOT)} " + " ".join(f"--set {s}" for s in r.sets))

@@ -23,7 +23,7 @@ import os
 import sys
 import tempfile
 
-from . import runner
+from . import output_guard, runner
 
 import matplotlib
 matplotlib.use("Agg")
@@ -123,6 +123,7 @@ def main(argv=None):
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "validation"))
     ap.add_argument("--replot", action="store_true")
     args = ap.parse_args(argv)
+    output_guard.guard([("--out", args.out, output_guard.DIRECTORY)])
     os.makedirs(args.out, exist_ok=True)
     store = os.path.join(args.out, "validation_summaries.json")
     if args.replot:

@@ -22,6 +22,7 @@ import sys
 import h5py
 import numpy as np
 
+from . import output_guard
 from .results import snapshot_field
 
 
@@ -75,6 +76,8 @@ def write_views(path):
     """Writes RUN.xdmf and RUN_views.h5 beside the run's HDF5 file `path`."""
     stem = os.path.splitext(path)[0]
     views = stem + "_views.h5"
+    output_guard.guard([("the views", views, output_guard.VIEWS), ("the XDMF file", stem + ".xdmf", output_guard.FILE)],
+                       [path])
     with h5py.File(path, "r") as h:
         off = h["/bodies/vertex_offset"][:]
         verts = h["/bodies/vertices"][:]
