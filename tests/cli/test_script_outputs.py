@@ -66,6 +66,8 @@ table = [
     ([("-o", "notes.csv", F)], ["scenario.toml"], None),                              # an earlier text output
     ([("-o", "new/deeper/out.csv", F)], [], None),                                    # made on the way
     ([("--out", "figures", D), ("--out", "new_dir", D)], [], None),
+    ([("--out", "figures", D), ("the runs' directory", "figures", D)], [], None),   # one directory, two uses
+    ([("--out", "figures", D), ("--report", "figures", F)], [], "the same file"),
     ([("--report", None, F)], [], None),                                              # not asked for
 ]
 for outputs, inputs, word in table:

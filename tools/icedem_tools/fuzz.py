@@ -2,8 +2,8 @@
 `icedem check`, and samples of the accepted scenarios through a short `icedem run`,
 through runs whose outputs name their inputs, and through runs stopped by a signal.
 
-    scripts/fuzz [--mutations N] [--runs K] [--guards G] [--signals S] [--seed S]
-                 [--icedem PATH] [--out DIR] [--timeout S]
+    scripts/fuzz [--mutations N] [--runs K] [--guards G] [--signals S] [--outputs O] [--tampers T]
+                 [--scenes C] [--walls W] [--seed S] [--icedem PATH] [--out DIR] [--timeout S]
 
 Each mutation takes a shipped scenario (scenarios/**/*.toml) or layout file
 (scenarios/examples/*.csv, and a JSON version of it) and changes it the way a user's
@@ -27,6 +27,20 @@ What counts:
   code if it ended first; or death by the signal if it came before icedem started and
   nothing was written), never a 0-byte output file, a file closed with a status
   (SIGINT, SIGTERM) or one `icedem info` reads (SIGKILL);
+- outputs (--outputs of the accepted scenarios): every command that writes (run, resume, stl, flow,
+  foam-case, calibrate, scripts/layout_from_photo) with an output naming the scenario, its layout file,
+  another run's output or checkpoint, a directory or an empty name: refused (exit 2), and every one of
+  those files byte for byte as before (tools/icedem_tools/fuzz_files.py);
+- tamper (--tampers): a killed run's checkpoint with a digit of its stored scenario changed, a bit of a
+  recorded row or of the state's records changed, a bit flipped anywhere or the file cut short:
+  `resume` refuses it (exit 2) or, where the change touched nothing the run reads, ends bit for bit as
+  the uninterrupted run; continuing to other loads is severe;
+- scenes (--scenes): a shipped scenario with one inconsistency (a quoted dotted key, a two-line --set,
+  a seed past its range, the structure outside the tank, above or under the ice or its keel below the
+  bottom, unreached floes kept out with sleeping off, intervals below the step, a plate loaded past its
+  freeboard): `check` refuses or warns as each class should, naming the key (fuzz_scenes.py);
+- wall (--walls): the short tow driven into its channel's end wall: `check` warns, the summary names
+  the squeeze and the statistics end before it;
 - a crash (a signal), an undocumented exit code, a hang (--timeout), a traceback-like
   message (HDF5 or JSON library text) is a finding. Findings are written to OUT
   (default a temporary directory) with the input that caused them.
@@ -47,7 +61,7 @@ import sys
 import tempfile
 
 from .spec import ROOT
-from . import results
+from . import fuzz_files, fuzz_scenes, results
 EXTREMES = ["1e308", "-1e308", "nan", "inf", "-inf", "0", "-1", "1e-300", "123456789012345678901234567890",
             "1e309", "-0", "0.0000001", "1e6"]
 DOCUMENTED_EXITS = {0, 2, 3, 4, 5, 130}
@@ -286,6 +300,11 @@ def main(argv=None):
     ap.add_argument("--runs", type=int, default=20, help="accepted scenarios run for 2 s")
     ap.add_argument("--guards", type=int, default=0, help="accepted scenarios run with outputs naming inputs")
     ap.add_argument("--signals", type=int, default=0, help="accepted scenarios run and stopped by a signal")
+    ap.add_argument("--outputs", type=int, default=0,
+                    help="accepted scenarios whose commands aim outputs at inputs and other runs' files")
+    ap.add_argument("--tampers", type=int, default=0, help="checkpoints tampered with, then resumed")
+    ap.add_argument("--scenes", type=int, default=0, help="inconsistent scenes through check")
+    ap.add_argument("--walls", type=int, default=0, help="tows driven into the channel's end wall")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--icedem", default=os.path.join(ROOT, "build", "dem", "icedem"))
     ap.add_argument("--out", help="where findings and their inputs go (default: a temporary directory)")
@@ -380,13 +399,48 @@ def main(argv=None):
         problem, bad, tail = signal_problem(a.icedem, path, sig, delay, 4 * a.timeout)
         if problem:
             keep_finding(f"signal {sig.name} after {delay:.2f} s", problem, path, tail, bad)
+    # the file classes (tools/icedem_tools/fuzz_files.py) and the scene classes (fuzz_scenes.py)
+    outputs_tried = tampered = refused_tampers = scenes_tried = walls_tried = 0
+    if a.outputs or a.tampers:
+        fx = fuzz_files.Fixture(a.icedem, os.path.join(out, "files"), a.timeout)
+        for path in rng.sample(accepted, min(a.outputs, len(accepted))):
+            outputs_tried += 1
+            for problem, bad, tail in fuzz_files.output_problems(fx, path, rng, 4):
+                keep_finding("outputs", problem, path, tail, bad)
+        for i in range(a.tampers):
+            problem, code, how = fuzz_files.tamper_problem(fx, rng, i)
+            tampered += 1
+            refused_tampers += code == 2
+            if problem:
+                text, bad, tail = problem[0], problem[1], problem[2]
+                findings.append(("tamper", text, fx.killed + ".checkpoint", tail.strip()[-300:]))
+                severe += bad
+        fuzz_files.cleanup(fx)
+    for i in range(a.scenes):
+        problem, bad, what, tail = fuzz_scenes.scene_problem(a.icedem, work, rng, scenarios, i, a.timeout)
+        scenes_tried += 1
+        if problem:
+            findings.append(("scene", problem, what, tail.strip()[-300:]))
+            severe += bad
+    for i in range(a.walls):
+        problem, bad, tail = fuzz_scenes.wall_problem(a.icedem, work, rng, i, a.timeout)
+        walls_tried += 1
+        if problem:
+            findings.append(("wall", problem, "short_tow into its end wall", tail.strip()[-300:]))
+            severe += bad
+
     for path in accepted:
         os.remove(path)
 
-    print(f"fuzz: {a.mutations} mutations (scenario {counts['scenario']}, layout CSV {counts['csv']}, "
+    cases = a.mutations + min(a.runs, len(accepted)) + len(guards) + len(signals) + outputs_tried + tampered + \
+        scenes_tried + walls_tried
+    print(f"fuzz: {cases} cases. {a.mutations} mutations (scenario {counts['scenario']}, layout CSV {counts['csv']}, "
           f"layout JSON {counts['json']}): {counts['accepted']} accepted, {counts['refused']} refused; "
           f"{min(a.runs, len(accepted))} accepted scenarios run, {len(guards)} with outputs naming inputs, "
-          f"{len(signals)} stopped by a signal; {severe} crashes or hangs, "
+          f"{len(signals)} stopped by a signal; {outputs_tried} with every command's outputs aimed at what a user "
+          f"has; {tampered} checkpoints tampered with ({refused_tampers} refused, the others changed nothing the "
+          f"run reads); {scenes_tried} inconsistent scenes; {walls_tried} tows into the end wall; "
+          f"{severe} crashes, hangs, files overwritten or tampered checkpoints continued, "
           f"{len(findings) - severe} other findings (seed {a.seed})")
     for what, problem, keep, tail in findings:
         print(f"  {what}: {problem}: {keep}\n    {tail[:300]!r}")

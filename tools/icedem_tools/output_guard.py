@@ -83,8 +83,8 @@ def guard(outputs, inputs=()):
         for source in inputs:
             if source and _same(path, source):
                 raise Refused(f"{option} {path}: it is an input of this command ({source}); it would be overwritten")
-        for other_option, other, _ in named[:i]:
-            if _same(other, path):
+        for other_option, other, other_kind in named[:i]:
+            if _same(other, path) and not (kind == other_kind == DIRECTORY):  # one directory may take both
                 raise Refused(f"{option} {path}: {other_option} writes the same file")
         if kind == DIRECTORY:
             if os.path.exists(path) and not os.path.isdir(path):
