@@ -157,9 +157,6 @@ void boundary_summary(const RunHistory& h, RunSummary& s) {
   s.locked_window_fraction = steps ? double(locked_steps) / double(steps) : 0.0;
 }
 
-// The analysis window starts a stated travel distance after the first ice
-// contact (stats.window_start_travel; default 2 waterline breadths, cf. the
-// paper's window after the structure has advanced into the ice, Fig. 9).
 // The squeeze of the ice against the channel's end wall, if the run got there (dem/input/structure_path.hpp):
 // when it began and the largest surge load from then on
 void find_squeeze(const Scene& scene, const RunHistory& h, RunSummary& s) {
@@ -171,6 +168,10 @@ void find_squeeze(const Scene& scene, const RunHistory& h, RunSummary& s) {
     if (h.time[i] >= meeting->time) s.squeeze_max_fx_N = std::max(s.squeeze_max_fx_N, h.surge[i]);
 }
 
+// The analysis window starts a stated travel distance after the first ice
+// contact (stats.window_start_travel; default 2 waterline breadths, cf. the
+// paper's window after the structure has advanced into the ice, Fig. 9), and
+// ends where a squeeze against the end wall begins unless stats.include_squeeze.
 void compute_statistics(const Scene& scene, const RunHistory& h, RunSummary& s) {
   find_squeeze(scene, h, s);
   if (s.first_contact_s < 0) {
