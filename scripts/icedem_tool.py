@@ -18,6 +18,8 @@ COMMANDS = {
     "full_runs": ("full_runs", "the contact solve judged on the paper's full runs"),
     "convergence": ("convergence", "convergence of the contact solve, error against cost"),
     "ladder": ("ladder", "run time against error, a ladder of solver settings"),
+    "budget": ("budget", "the model-error budget against the tank: what each factor does to the loads"),
+    "tank_maxima": ("tank_maxima", "the tank's largest load against the distribution of the runs' maxima"),
     "stress": ("stress", "the numerical stability stress suite"),
     "fuzz": ("fuzz", "fuzz icedem's input handling with mutated scenario and layout files"),
     "layout_from_photo": ("layout_from_photo", "a floe layout file from a top-view photo of the floes"),

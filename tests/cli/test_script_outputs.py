@@ -80,6 +80,13 @@ for outputs, inputs, word in table:
 # a write is whole or not at all: a failed one leaves the earlier file as it was
 og.write_text("notes.csv", "y\n")
 check(open("notes.csv").read() == "y\n", "write_text replaces the file whole")
+os.chmod("notes.csv", 0o640)
+og.write_text("notes.csv", "z\n")
+og.write_text("fresh.csv", "z\n")
+umask = os.umask(0)
+os.umask(umask)
+check(os.stat("notes.csv").st_mode & 0o777 == 0o640 and os.stat("fresh.csv").st_mode & 0o777 == 0o666 & ~umask,
+      "a replaced file keeps its mode, a new one has the umask's (not mkstemp's private 0600)")
 try:
     og.write_text("a_file/inside.csv", "z\n")  # its directory is a file: the write fails
     check(False, "a write that cannot be made raises WriteFailed")

@@ -120,6 +120,10 @@ def _replace(path, write):
         raise WriteFailed(f"cannot make {directory}: {e.strerror or e}") from e
     fd, tmp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".", suffix=".tmp", dir=directory)
     try:
+        # mkstemp makes it private (0600): give it the mode of the file it replaces, or a new file's
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, os.stat(path).st_mode & 0o777 if os.path.isfile(path) else 0o666 & ~umask)
         with os.fdopen(fd, "wb") as f:
             write(f)
             f.flush()

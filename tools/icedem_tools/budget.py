@@ -1,0 +1,143 @@
+"""The model-error budget against the tank: what each factor of the model does to the loads.
+
+    scripts/budget [--out DIR] [--report PATH]
+
+The runs are those of the sweep file sweeps/studies/load_budget.toml: per scenario, a "default"
+variant and variants that each move one factor from it (friction, boundaries, layout, water, the
+paper's numerics), over the same layout seeds, made by `scripts/sweep run` into DIR (default
+sweeps/load_budget); this script only reads them, so it can report while the sweep runs.
+
+Per variant, over its finished seeds: the mean surge load over the analysis window, its 99th
+percentile and the mean of the runs' maxima (each with the half-width of its 95 % interval), and
+the runs whose maximum reaches the tank's largest load ([study] tank_max_N: the tank's single largest
+load of a run), with the Clopper-Pearson 95 % interval of that share. Against the default: each
+number's change, paired seed by seed (the same seed is the same layout), with its 95 % interval and
+the project's verdict (aggregate.judge: "within" the bound, "beyond" it, "moves", "unresolved";
+bounds 5 % for the mean, 10 % for p99 and the maxima), and Fisher's exact test of the share reaching
+the tank against the default's. The variants are ranked by the change of the mean of maxima.
+Writes the tables to the report (default docs/model/load_budget.md, below its own text kept between
+the markers) and prints them.
+"""
+import argparse
+import datetime
+import os
+import sys
+import tomllib
+
+from scipy import stats
+
+from . import aggregate as agg, execute, output_guard, spec
+from .spec import ROOT
+
+STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "load_budget.toml")
+TOLERANCE = {"mean": 0.05, "p99": 0.10, "max": 0.10}
+BEGIN, END = "<!-- budget tables: scripts/budget writes below -->", "<!-- end of the budget tables -->"
+
+
+def reach_interval(k, n):
+    """The Clopper-Pearson 95 % interval of a share k/n."""
+    ci = stats.binomtest(k, n).proportion_ci(confidence_level=0.95, method="exact")
+    return ci.low, ci.high
+
+
+def ensemble(summaries, tank):
+    """A variant's finished runs over the seeds (aggregate.ensemble): the window's mean, p99, max,
+    and whether the run's max reaches the tank's largest load."""
+    def per_run(s):
+        mean, p99, peak = agg.window_loads(s)
+        return {"mean": mean, "p99": p99, "max": peak, "reach": float(peak >= tank)}
+    return agg.ensemble(summaries, per_run)
+
+
+def with_interval(value, half, scale=1.0, unit=""):
+    """A number and the half-width of its interval ("n/a" for one seed)."""
+    hw = "n/a" if half != half else f"{scale * half:.{0 if unit else 1}f}"
+    return f"{scale * value:+.0f} %" + f" ± {hw}" if unit else f"{value:.1f} ± {hw}"
+
+
+def change_cell(changes, key):
+    if key not in changes:
+        return "n/a"
+    d, hw, verdict = changes[key]
+    return f"{with_interval(d, hw, 100, '%')} ({verdict})"
+
+
+def tables(name, runs, found, tank):
+    """The budget's tables, one per scenario, as Markdown lines."""
+    lines = []
+    seeds = sorted({r.seed for r in runs})
+    study = tomllib.load(open(STUDY_FILE, "rb"))["study"]
+    for m in dict.fromkeys(r.scenario for r in runs):
+        names = list(dict.fromkeys(r.variant for r in runs if r.scenario == m))
+        ens = {n: ensemble([found[(m, n, s)] for s in seeds if (m, n, s) in found], tank) for n in names}
+        base = ens.get(study["baseline"])
+        file = os.path.relpath(next(r.scenario_file for r in runs if r.scenario == m), ROOT)
+        lines += [f"### {m} (`{file}`)", ""]
+        if base is None:
+            lines += ["The default has no finished run yet.", ""]
+            continue
+        k0 = int(round(base["runs"]["reach"].sum()))
+        rows = []
+        for n in names:
+            e = ens[n]
+            if e is None:
+                rows.append((0.0, f"| {n} | 0 | no finished run yet |||||||||"))
+                continue
+            changes, _, _, paired = agg.judge(e, base, TOLERANCE)
+            k = int(round(e["runs"]["reach"].sum()))
+            lo, hi = reach_interval(k, e["n"])
+            p = stats.fisher_exact([[k, e["n"] - k], [k0, base["n"] - k0]])[1] if n != study["baseline"] else 1.0
+            if n == study["baseline"]:
+                changes = {}
+            cells = [n, str(e["n"]), with_interval(*e["mean"]), change_cell(changes, "mean"),
+                     with_interval(*e["p99"]), change_cell(changes, "p99"),
+                     with_interval(*e["max"]), change_cell(changes, "max"),
+                     f"{k}/{e['n']} ({100 * lo:.0f}-{100 * hi:.0f} %)",
+                     "" if n == study["baseline"] else f"{p:.2f}", f"{e['cpu']:.0f}"]
+            rank = abs(changes["max"][0]) if "max" in changes and n != study["baseline"] else float("inf")
+            rows.append((rank, "| " + " | ".join(cells) + " |"))
+        lines += [f"{base['n']} seeds of the default: mean {base['mean'][0]:.1f} N, mean of maxima "
+                  f"{base['max'][0]:.1f} N; {k0} of {base['n']} runs reach the tank's {tank:.0f} N.", "",
+                  "| variant | seeds | mean N | change | p99 N | change | max N | change | runs reaching the tank "
+                  "(95 %) | Fisher p | CPU s/run |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|"]
+        lines += [row for _, row in sorted(rows, key=lambda x: -x[0])] + [""]
+    return lines
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", help="the sweep's run directory (default: sweeps/load_budget)")
+    ap.add_argument("--report", help="the Markdown page (default: docs/model/load_budget.md)")
+    a = ap.parse_args(argv)
+    try:
+        name, runs = spec.load(STUDY_FILE)
+    except spec.SweepError as e:
+        sys.exit(f"scripts/budget: {e}")
+    study = tomllib.load(open(STUDY_FILE, "rb"))["study"]
+    out = a.out or os.path.join(ROOT, "sweeps", name)
+    path = a.report or os.path.join(ROOT, "docs", "model", "load_budget.md")
+    output_guard.guard([("--report", path, output_guard.FILE)], [STUDY_FILE])
+    found = {(r.scenario, r.variant, r.seed): execute.summary(r, out) for r in runs}
+    found = {k: v for k, v in found.items() if v.get("status") != "pending"}
+    done = sum(1 for v in found.values() if agg.finished(v))
+    today = datetime.date.today().isoformat()
+    lines = [BEGIN, "", f"Made {today} by `scripts/budget` from {done} of {len(runs)} runs of "
+             f"`{os.path.relpath(STUDY_FILE, ROOT)}` in `{os.path.relpath(out, ROOT)}`. "
+             "± is the half-width of the 95 % interval over the seeds; a change is paired seed by seed with the "
+             "default's run of the same layout, judged within 5 % (mean) and 10 % (p99, maxima).", ""]
+    lines += tables(name, runs, found, study["tank_max_N"]) + [END]
+    text = "\n".join(lines)
+    print(text)
+    page = open(path).read() if os.path.isfile(path) else ""
+    if BEGIN in page and END in page:  # the page's own text stays; the tables are replaced
+        text = page[:page.index(BEGIN)] + text + page[page.index(END) + len(END):]
+    else:
+        text = page + ("\n" if page else "") + text + "\n"
+    output_guard.write_text(path, text)
+    print(f"wrote {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
