@@ -418,7 +418,7 @@ class DualProblem {
       for (std::size_t k = 0; k < groups_[g].bodies.size(); ++k) {
         const ProblemBody& body = p.bodies[groups_[g].bodies[k]];
         Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero();
-        M.topLeftCorner<3, 3>() = body.mass * Eigen::Matrix3d::Identity();
+        M.topLeftCorner<3, 3>() = (Eigen::Vector3d::Constant(body.mass) + body.added_mass).asDiagonal();
         M.bottomRightCorner<3, 3>() = body.inertia;
         Mt[g].block<6, 6>(6 * k, 6 * k) = M;
         ft[g].segment<6>(6 * k) = M * body.free_velocity;

@@ -17,7 +17,7 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 // the 6x6 mass matrix of a body: m on the linear, the inertia tensor on the angular block
 Eigen::Matrix<double, 6, 6> body_mass(const ProblemBody& body) {
   Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
-  m.topLeftCorner<3, 3>().diagonal().setConstant(body.mass);
+  m.topLeftCorner<3, 3>().diagonal() = Eigen::Vector3d::Constant(body.mass) + body.added_mass;
   m.bottomRightCorner<3, 3>() = body.inertia;
   return m;
 }
@@ -57,7 +57,7 @@ std::vector<std::vector<int>> joined_groups(const ContactProblem& p) {
 
 Eigen::Matrix<double, 6, 6> inverse_mass(const ProblemBody& body) {
   Eigen::Matrix<double, 6, 6> inv = Eigen::Matrix<double, 6, 6>::Zero();
-  inv.topLeftCorner<3, 3>().diagonal().setConstant(1.0 / body.mass);
+  inv.topLeftCorner<3, 3>().diagonal() = (Eigen::Vector3d::Constant(body.mass) + body.added_mass).cwiseInverse();
   inv.bottomRightCorner<3, 3>() = body.inertia.inverse();
   return inv;
 }

@@ -42,7 +42,9 @@ using RowJacobian = Eigen::Matrix<double, 1, 6>;
 
 struct ProblemBody {
   double mass = 0;                              // kg
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // kg m^2 about the centre of mass, tank frame
+  // kg along the tank's axes, on top of `mass`: the water's added mass (dem/water/added_mass.hpp)
+  Eigen::Vector3d added_mass = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // kg m^2 about the centre of mass, tank frame (added included)
   Vector6d free_velocity = Vector6d::Zero();    // (v, w) after the step's applied forces, before contact
   int id = -1;                                  // the body's index in World::floes(), -1 if none
 };

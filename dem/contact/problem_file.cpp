@@ -294,7 +294,8 @@ ProblemFile read_problem_file(const std::string& path) {
     for (int i = 0; i < n / 6; ++i) {
       ProblemBody b;
       const Eigen::Matrix<double, 6, 6> block = Eigen::MatrixXd(M.block(6 * i, 6 * i, 6, 6));
-      b.mass = block(0, 0);
+      b.mass = block(0, 0);  // surge: no added mass (dem/water/added_mass.hpp)
+      b.added_mass = block.topLeftCorner<3, 3>().diagonal() - Eigen::Vector3d::Constant(b.mass);
       b.inertia = block.bottomRightCorner<3, 3>();
       b.free_velocity = block.ldlt().solve(f.segment<6>(6 * i));
       b.id = body_ids[i];

@@ -21,6 +21,9 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
   const double Le = fracture.element_size;
   const ElementLattice lattice = floe_lattice(floe.shape, Le, yaw0);
   const FloeShape& element = world.shape(square(Le));
+  const double floe_area = area(floe.shape);
+  const AddedMass element_added = element_added_mass(
+      plate_added_mass(floe_area, world.settings().water.water_density), floe_area, Le * Le);
 
   const double yaw = floe.yaw + yaw0;
   const btQuaternion rotation(btVector3(0, 1, 0), yaw);
@@ -52,8 +55,9 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
     pose.setIdentity();
     pose.setOrigin(btVector3(at.x(), y, at.y()));
     pose.setRotation(rotation);
-    // one piece: its elements do not collide with each other (fragment 0)
-    const int index = world.add_body(element, pose, floe_id, friction, 0, !dormant);
+    // one piece: its elements do not collide with each other (fragment 0); the floe's added mass
+    // shared among its elements (dem/water/added_mass.hpp)
+    const int index = world.add_body(element, pose, floe_id, friction, 0, !dormant, element_added);
     if (dormant) {
       DormantLattice& d = world.lattices().back();
       world.floes()[index].lattice = static_cast<int>(world.lattices().size()) - 1;

@@ -206,6 +206,10 @@ std::vector<KeySpec> make_keys() {
                    "heave damping as a fraction of critical (radiation damping; assumption)"));
   k.push_back(real("water.roll_pitch_damping_ratio", "-", 0.5, 0.0, 10.0,
                    "roll and pitch damping as a fraction of critical (assumption)"));
+  k.push_back(boolean("water.added_mass", false,
+                      "give each floe the water's added mass in heave, roll and pitch: a disc of equal area, "
+                      "impulsive limit (dem/water/added_mass.hpp; a 0.6 m floe's heave added mass is 4.7 times "
+                      "its mass)"));
 
   // flow
   k.push_back(choice("flow.model", "potential", {"still", "uniform", "potential", "coupled"},

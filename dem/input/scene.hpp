@@ -118,6 +118,7 @@ struct WaterSettings {
   double skin_friction_coefficient;  // -
   double heave_damping_ratio;        // -
   double roll_pitch_damping_ratio;   // -
+  bool added_mass;                   // the water's added mass in heave, roll and pitch (dem/water/added_mass.hpp)
 };
 
 enum class FlowModel { kStill, kUniform, kPotential, kCoupled };

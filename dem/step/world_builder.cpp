@@ -27,6 +27,7 @@ WorldSettings world_settings(const Scene& scene) {
   s.ice_thickness = scene.ice.thickness;
   s.ice_density = scene.ice.density;
   s.water = water_params(scene.water);
+  s.added_mass = scene.water.added_mass;
   return s;
 }
 

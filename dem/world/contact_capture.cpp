@@ -73,17 +73,29 @@ ContactProblem ContactSolver::capture_problem(const btContactSolverInfo& info) c
     const btSolverBody& body = m_tmpSolverBodyPool[s];
     const btRigidBody* rb = body.m_originalBody;
     if (!rb || rb->getInvMass() <= 0) continue;
-    if (rb->getLinearFactor() != btVector3(1, 1, 1) || rb->getAngularFactor() != btVector3(1, 1, 1))
-      throw std::logic_error("capture_problem: a body with restricted motion (linear or angular factor) has no "
-                             "place in the problem");
+    // a body's linear and angular factors scale its response along the world's axes: the water's
+    // added mass (dem/water/added_mass.hpp), a larger mass along those axes. A factor of 0 (motion
+    // locked along an axis) has no mass to stand for it
+    const btVector3 lf = rb->getLinearFactor(), af = rb->getAngularFactor();
+    if (lf.x() <= 0 || lf.y() <= 0 || lf.z() <= 0 || af.x() <= 0 || af.y() <= 0 || af.z() <= 0)
+      throw std::logic_error("capture_problem: a body with motion locked along an axis has no place in the problem");
     index_of[s] = static_cast<int>(p.bodies.size());
     ProblemBody b;
     b.mass = 1.0 / rb->getInvMass();
+    b.added_mass = Eigen::Vector3d(b.mass / lf.x() - b.mass, b.mass / lf.y() - b.mass, b.mass / lf.z() - b.mass);
     const btMatrix3x3& inv = rb->getInvInertiaTensorWorld();
     Eigen::Matrix3d inv_inertia;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) inv_inertia(i, j) = inv[i][j];
-    b.inertia = inv_inertia.inverse();
+    // Bullet's solver scales I^-1 tau by the angular factor, axis by axis; the problem's inertia is
+    // that map's inverse, symmetrised (it is symmetric already for a flat floe with equal roll and
+    // pitch factors, whose yaw leaves them alone)
+    if (af == btVector3(1, 1, 1)) {
+      b.inertia = inv_inertia.inverse();  // as it was: symmetrising would move the last bits of every run
+    } else {
+      const Eigen::Matrix3d scaled = Eigen::Vector3d(af.x(), af.y(), af.z()).asDiagonal() * inv_inertia;
+      b.inertia = (0.5 * (scaled + scaled.transpose())).inverse();
+    }
     b.free_velocity << to_eigen(body.m_linearVelocity + body.m_externalForceImpulse),
         to_eigen(body.m_angularVelocity + body.m_externalTorqueImpulse);
     b.id = rb->getUserIndex2();

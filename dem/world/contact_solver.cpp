@@ -441,6 +441,20 @@ SolverAnswer ContactSolver::row_impulses() const {
   return a;
 }
 
+void ContactSolver::convertBodies(btCollisionObject** bodies, int numBodies, const btContactSolverInfo& info) {
+  btSequentialImpulseConstraintSolver::convertBodies(bodies, numBodies, info);
+  // A row's linear part is its direction times the solver body's inverse mass, which Bullet scales
+  // by the linear factor, and its angular part I^-1 tau scaled by the angular factor; applying an
+  // impulse then scales both by the factors again. Factors of 0 and 1 (all Bullet's users set) do
+  // not mind; the water's added mass (dem/water/added_mass.hpp) sets others, so the solver bodies'
+  // own factors are made 1 and each factor acts once, as it does on forces
+  for (int b = 0; b < m_tmpSolverBodyPool.size(); ++b) {
+    btSolverBody& body = m_tmpSolverBodyPool[b];
+    body.m_linearFactor = btVector3(1, 1, 1);
+    body.m_angularFactor = btVector3(1, 1, 1);
+  }
+}
+
 btScalar ContactSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies,
                                                       const btContactSolverInfo& info) {
   // remember each point's friction impulse as a world vector for the next step

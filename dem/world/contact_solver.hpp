@@ -182,6 +182,10 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
                                              btPersistentManifold** manifolds, int numManifolds,
                                              btTypedConstraint** constraints, int numConstraints,
                                              const btContactSolverInfo& info, btIDebugDraw* debug) override;
+  // Bullet's solver bodies carry a body's linear and angular factors twice (in their inverse mass
+  // and angular components, and again when an impulse is applied): a factor of 1/6 would scale the
+  // contacts' response by 1/36 while forces get 1/6. Each is applied once (convert_bodies)
+  void convertBodies(btCollisionObject** bodies, int numBodies, const btContactSolverInfo& info) override;
   btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies,
                                          const btContactSolverInfo& info) override;
 

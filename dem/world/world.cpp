@@ -202,7 +202,7 @@ btRigidBody* World::add_static_box(const Eigen::Vector3d& centre, const Eigen::V
 }
 
 int World::add_body(const FloeShape& shape, const btTransform& pose, int floe_id, double friction, int fragment,
-                    bool in_world) {
+                    bool in_world, const std::optional<AddedMass>& added) {
   auto motion = std::make_unique<btDefaultMotionState>(pose);
   btRigidBody::btRigidBodyConstructionInfo ci(shape.mass, motion.get(), shape.collision.get(),
                                               to_bt(shape.inertia));
@@ -214,6 +214,14 @@ int World::add_body(const FloeShape& shape, const btTransform& pose, int floe_id
   body->setUserIndex3(static_cast<int>(bodies_.size()));  // its index in bodies() (enter_world)
   const ActivationSettings& a = settings_.activation;
   body->setSleepingThresholds(a.linear_threshold, a.angular_threshold);
+  if (settings_.added_mass) {
+    // heave, roll and pitch with the water's added mass (dem/water/added_mass.hpp), in the world's
+    // axes: a floe stays nearly flat, so its body y stays the vertical
+    const AddedMass water = added ? *added : plate_added_mass(area(shape.outline), settings_.water.water_density);
+    const MotionFactors f = added_mass_factors(shape.mass, 0.5 * (shape.inertia.x() + shape.inertia.z()), water);
+    body->setLinearFactor(btVector3(1, f.vertical, 1));
+    body->setAngularFactor(btVector3(f.roll_pitch, 1, f.roll_pitch));
+  }
 
   // registered before it enters the broadphase, which asks the fragment filter at once
   const int index = static_cast<int>(floes_.size());

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -27,6 +28,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "dem/input/scene.hpp"
+#include "dem/water/added_mass.hpp"
 #include "dem/world/bullet_eigen.hpp"
 #include "dem/world/contact_islands.hpp"
 #include "dem/world/contact_solver.hpp"
@@ -111,6 +113,7 @@ struct WorldSettings {
   double ice_thickness;        // m, of every floe shape
   double ice_density;          // kg/m^3
   WaterParams water;           // for the shapes' damping
+  bool added_mass = false;     // ice bodies respond with the water's added mass (dem/water/added_mass.hpp)
 };
 
 /// The Bullet world and everything in it. Not copyable; one per run.
@@ -132,9 +135,11 @@ class World {
 
   /// Add an ice body of `shape` at `pose`, with `friction` against ice; `fragment` >= 0 for an
   /// element of a breakable floe; out of the world (not simulated) unless `in_world`. At rest,
-  /// asleep if sleeping is on. Returns its index in floes().
+  /// asleep if sleeping is on. With the water's added mass on (WorldSettings::added_mass) it
+  /// responds with `added`, by default its own outline's (plate_added_mass). Returns its index in
+  /// floes().
   int add_body(const FloeShape& shape, const btTransform& pose, int floe_id, double friction, int fragment = -1,
-               bool in_world = true);
+               bool in_world = true, const std::optional<AddedMass>& added = std::nullopt);
 
   /// Add a joint; its constraint enters the solver if `in_world`. Returns its index in joints().
   int add_joint(IceJoint joint, bool in_world);

@@ -118,7 +118,8 @@ def main(argv=None):
     out = a.out or os.path.join(ROOT, "sweeps", name)
     path = a.report or os.path.join(ROOT, "docs", "model", "load_budget.md")
     output_guard.guard([("--report", path, output_guard.FILE)], [STUDY_FILE])
-    found = {(r.scenario, r.variant, r.seed): execute.summary(r, out) for r in runs}
+    # each with its seed: the changes are paired seed by seed (aggregate.judge)
+    found = {(r.scenario, r.variant, r.seed): dict(execute.summary(r, out), seed=r.seed) for r in runs}
     found = {k: v for k, v in found.items() if v.get("status") != "pending"}
     done = sum(1 for v in found.values() if agg.finished(v))
     today = datetime.date.today().isoformat()
