@@ -9,8 +9,8 @@ sweeps/load_budget); this script only reads them, so it can report while the swe
 
 Per variant, over its finished seeds: the mean surge load over the analysis window, its 99th
 percentile and the mean of the runs' maxima (each with the half-width of its 95 % interval), and
-the runs whose maximum reaches the tank's largest load ([study] tank_max_N: the tank's single largest
-load of a run), with the Clopper-Pearson 95 % interval of that share. Against the default: each
+the runs whose maximum reaches the tank's largest load ([study.tank_max_N], per scenario: the tank's
+single largest load of a run), with the Clopper-Pearson 95 % interval of that share. Against the default: each
 number's change, paired seed by seed (the same seed is the same layout), with its 95 % interval and
 the project's verdict (aggregate.judge: "within" the bound, "beyond" it, "moves", "unresolved";
 bounds 5 % for the mean, 10 % for p99 and the maxima), and Fisher's exact test of the share reaching
@@ -62,17 +62,19 @@ def change_cell(changes, key):
     return f"{with_interval(d, hw, 100, '%')} ({verdict})"
 
 
-def tables(name, runs, found, tank):
+def tables(name, runs, found, tanks):
     """The budget's tables, one per scenario, as Markdown lines."""
     lines = []
     seeds = sorted({r.seed for r in runs})
     study = tomllib.load(open(STUDY_FILE, "rb"))["study"]
     for m in dict.fromkeys(r.scenario for r in runs):
         names = list(dict.fromkeys(r.variant for r in runs if r.scenario == m))
+        tank = tanks[m]
         ens = {n: ensemble([found[(m, n, s)] for s in seeds if (m, n, s) in found], tank) for n in names}
         base = ens.get(study["baseline"])
         file = os.path.relpath(next(r.scenario_file for r in runs if r.scenario == m), ROOT)
-        lines += [f"### {m} (`{file}`)", ""]
+        lines += [f"### {m} (`{file}`): the tank's {tank:.0f} N" + (" (an inference: 150 N / 2)" if tank < 150 else ""),
+                  ""]
         if base is None:
             lines += ["The default has no finished run yet.", ""]
             continue
@@ -127,7 +129,7 @@ def main(argv=None):
              f"`{os.path.relpath(STUDY_FILE, ROOT)}` in `{os.path.relpath(out, ROOT)}`. "
              "± is the half-width of the 95 % interval over the seeds; a change is paired seed by seed with the "
              "default's run of the same layout, judged within 5 % (mean) and 10 % (p99, maxima).", ""]
-    lines += tables(name, runs, found, study["tank_max_N"]) + [END]
+    lines += tables(name, runs, found, study["tank_max_N"]) + [END]  # per scenario
     text = "\n".join(lines)
     print(text)
     page = open(path).read() if os.path.isfile(path) else ""
