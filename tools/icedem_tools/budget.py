@@ -5,7 +5,9 @@
 The runs are those of the sweep file sweeps/studies/load_budget.toml: per scenario, a "default"
 variant and variants that each move one factor from it (friction, boundaries, layout, water, the
 paper's numerics), over the same layout seeds, made by `scripts/sweep run` into DIR (default
-sweeps/load_budget); this script only reads them, so it can report while the sweep runs.
+sweeps/load_budget); this script only reads them, from their records (the sweep's committed
+docs/model/load_budget_records, or made from a finished run's directory), so it can report while the
+sweep runs and on a machine that has only the records.
 
 Per variant, over its finished seeds: the mean surge load over the analysis window, its 99th
 percentile and the mean of the runs' maxima (each with the half-width of its 95 % interval), and
@@ -40,13 +42,15 @@ def reach_interval(k, n):
     return ci.low, ci.high
 
 
-def ensemble(summaries, tank):
-    """A variant's finished runs over the seeds (aggregate.ensemble): the window's mean, p99, max,
+def ensemble(records, tank):
+    """A variant's finished runs over the seeds (aggregate.ensemble), from their records (kept with
+    the sweep, so a fresh machine reports from the committed ones): the window's mean, p99 and max,
     and whether the run's max reaches the tank's largest load."""
-    def per_run(s):
-        mean, p99, peak = agg.window_loads(s)
-        return {"mean": mean, "p99": p99, "max": peak, "reach": float(peak >= tank)}
-    return agg.ensemble(summaries, per_run)
+    def per_run(r):
+        s, peak = r["summary"], r["summary"].get("max_fx_N")
+        return {"mean": s.get("mean_fx_N"), "p99": r.get("window", {}).get("p99_fx_N"), "max": peak,
+                "reach": None if peak is None else float(peak >= tank)}
+    return agg.ensemble(records, per_run, summary=lambda r: r["summary"], counts=lambda r: agg.finished(r["summary"]))
 
 
 def with_interval(value, half, scale=1.0, unit=""):
@@ -120,10 +124,14 @@ def main(argv=None):
     out = a.out or os.path.join(ROOT, "sweeps", name)
     path = a.report or os.path.join(ROOT, "docs", "model", "load_budget.md")
     output_guard.guard([("--report", path, output_guard.FILE)], [STUDY_FILE])
-    # each with its seed: the changes are paired seed by seed (aggregate.judge)
-    found = {(r.scenario, r.variant, r.seed): dict(execute.summary(r, out), seed=r.seed) for r in runs}
-    found = {k: v for k, v in found.items() if v.get("status") != "pending"}
-    done = sum(1 for v in found.values() if agg.finished(v))
+    # each run's record (made from its directory, or the kept one), its summary with its seed: the
+    # changes are paired seed by seed (aggregate.judge)
+    found = {}
+    for r in runs:
+        if execute.status(r, out).state == "done":
+            record = agg.load_record(r, out)
+            found[(r.scenario, r.variant, r.seed)] = dict(record, summary=dict(record["summary"], seed=r.seed))
+    done = sum(1 for v in found.values() if agg.finished(v["summary"]))
     today = datetime.date.today().isoformat()
     lines = [BEGIN, "", f"Made {today} by `scripts/budget` from {done} of {len(runs)} runs of "
              f"`{os.path.relpath(STUDY_FILE, ROOT)}` in `{os.path.relpath(out, ROOT)}`. "
