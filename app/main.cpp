@@ -33,8 +33,6 @@
 #include "dem/core/errors.hpp"
 #include "dem/input/scenario.hpp"
 #include "dem/input/scene_builder.hpp"
-#include "dem/input/setting_warnings.hpp"
-#include "dem/input/step_size_advice.hpp"
 #include "dem/output/checkpoint.hpp"
 #include "dem/output/lock.hpp"
 #include "dem/output/output_guard.hpp"
@@ -44,7 +42,6 @@
 #include "dem/step/initial_state.hpp"
 #include "dem/validation/calibration.hpp"
 #include "dem/validation/iso19906.hpp"
-#include "dem/validation/plate_deflection.hpp"
 #include "dem/world/cone_geometry.hpp"
 
 using namespace icedem;
@@ -197,10 +194,7 @@ int check_command(const std::string& scenario_path, const std::vector<std::strin
   std::cout << fmt::format("{}: ok ({} floes, concentration {:.2f} %, {:.0f} s at dt {} s)\n", scenario_path,
                            layout.floes.size(), 100 * layout.achieved_concentration, scene.time.duration,
                            scene.time.dt);
-  for (const std::string& w : step_size_warnings(scene)) std::cout << "warning: " << w << "\n";
-  for (const std::string& w : setting_warnings(scene)) std::cout << "warning: " << w << "\n";
-  if (const std::string w = plate_load_warning(scene); !w.empty()) std::cout << "warning: " << w << "\n";
-  for (const std::string& w : layout_warnings(scene, layout)) std::cout << "warning: " << w << "\n";
+  for (const std::string& w : scene_warnings(scene, layout)) std::cout << "warning: " << w << "\n";
   return kExitOk;
 }
 

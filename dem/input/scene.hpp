@@ -255,4 +255,9 @@ inline double hull_radius_over(const std::vector<ProfileStation>& hull, double y
   return r;
 }
 
+/// The hull's largest radius where it meets the floating ice (from y = -draft to thickness - draft).
+inline double hull_radius_in_ice(const Scene& s) {
+  return hull_radius_over(s.structure.profile, -s.ice.draft, s.ice.thickness - s.ice.draft);
+}
+
 }  // namespace icedem

@@ -100,7 +100,7 @@ void check_structure_in_tank(const Scenario& sc, const Scene& s) {
              fmt::format("the hull spans y = {} to {} m and the ice floats from y = {:.4f} to {:.4f} m: the structure "
                          "would pass {} the ice without meeting it",
                          keel, deck, ice_bottom, ice_top, keel >= ice_top ? "above" : "under"));
-  const double r = hull_radius_over(hull, ice_bottom, ice_top);
+  const double r = hull_radius_in_ice(s);
   if (std::abs(s.structure.start_z) + r > 0.5 * s.channel.tank_width)
     fail_key(sc, "structure.start_z",
              fmt::format("the hull (radius {:.3f} m where it meets the ice) at z = {} m reaches beyond the tank's "

@@ -26,8 +26,7 @@ std::optional<EndWallMeeting> end_wall_meeting_in_run(const Scene& scene) {
 
 bool hull_through_side_edges(const Scene& scene) {
   if (scene.validation.kind != ValidationKind::kNone) return false;
-  const double r = hull_radius_over(scene.structure.profile, -scene.ice.draft, scene.ice.thickness - scene.ice.draft);
-  return std::abs(scene.structure.start_z) + r > 0.5 * scene.channel.width;
+  return std::abs(scene.structure.start_z) + hull_radius_in_ice(scene) > 0.5 * scene.channel.width;
 }
 
 }  // namespace icedem

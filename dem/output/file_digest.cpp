@@ -80,7 +80,8 @@ void add_shape(Sha256& sha, hid_t space) {
 }
 
 // Values of an attribute or dataset. A variable-length string is read as text; any other type of
-// fixed size as its bytes in the file's own type (no conversion, so every bit counts)
+// fixed size as its bytes in the file's own type (no conversion, so every bit counts).
+// read(memory type, buffer) reads every value
 template <typename Read>
 void add_values(Sha256& sha, hid_t type, hid_t space, Read&& read) {
   const hssize_t count = H5Sget_simple_extent_npoints(space);
@@ -91,7 +92,7 @@ void add_values(Sha256& sha, hid_t type, hid_t space, Read&& read) {
     check(H5Tset_size(text.id, H5T_VARIABLE), "make a string type");
     check(H5Tset_cset(text.id, H5Tget_cset(type)), "make a string type");  // HDF5 converts no character set
     std::vector<char*> values(static_cast<std::size_t>(count), nullptr);
-    check(read(text.id, H5S_ALL, values.data()), "read strings");
+    check(read(text.id, values.data()), "read strings");
     for (char* v : values) sha.add_text(v ? std::string(v) : std::string());
     H5Dvlen_reclaim(text.id, space, H5P_DEFAULT, values.data());
     return;
@@ -102,7 +103,7 @@ void add_values(Sha256& sha, hid_t type, hid_t space, Read&& read) {
   }
   const std::size_t size = H5Tget_size(type);
   std::vector<unsigned char> buffer(static_cast<std::size_t>(count) * size);
-  if (!buffer.empty()) check(read(type, H5S_ALL, buffer.data()), "read values");
+  if (!buffer.empty()) check(read(type, buffer.data()), "read values");
   sha.add(buffer.data(), buffer.size());
 }
 
@@ -145,7 +146,7 @@ struct Walk {
                           add_type(sha, type.id);
                           add_shape(sha, space.id);
                           add_values(sha, type.id, space.id,
-                                     [&](hid_t mem, hid_t, void* buffer) { return H5Aread(attr.id, mem, buffer); });
+                                     [&](hid_t mem, void* buffer) { return H5Aread(attr.id, mem, buffer); });
                         } catch (const std::exception& e) {
                           c.walk->error = e.what() + (" (attribute " + std::string(name) + ")");
                           return -1;
@@ -166,7 +167,7 @@ struct Walk {
     const int rank = H5Sget_simple_extent_ndims(space.id);
     if (rank < 1 || H5Tis_variable_str(type.id) > 0 || H5Tdetect_class(type.id, H5T_VLEN) > 0) {
       add_values(sha, type.id, space.id,
-                 [&](hid_t mem, hid_t, void* buffer) { return H5Dread(set, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer); });
+                 [&](hid_t mem, void* buffer) { return H5Dread(set, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer); });
       return;
     }
     // by blocks of rows, so that a large dataset needs no more than a few MB at a time

@@ -13,6 +13,7 @@
 
 #include "dem/core/errors.hpp"
 #include "dem/core/hdf5_io.hpp"
+#include "dem/core/isolated_read.hpp"
 #include "dem/output/checkpoint.hpp"
 
 namespace icedem {
@@ -26,16 +27,20 @@ bool is_hdf5(const std::string& path) {
   return in.read(head.data(), head.size()) && std::memcmp(head.data(), "\x89HDF\r\n\x1a\n", 8) == 0;
 }
 
-// an HDF5 file holding a run's resumable state (dem/output/checkpoint.hpp)
+// an HDF5 file holding a run's resumable state (dem/output/checkpoint.hpp); one HDF5 cannot read
+// counts by its name. Read in a child process, as every file a command did not write
+// (dem/core/isolated_read.hpp): HDF5 may crash on a damaged one
 bool is_checkpoint(const std::string& path) {
   if (!is_hdf5(path)) return false;
-  QuietHdf5 quiet;
-  try {
-    const H5::H5File file(path, H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT, unlocked_access());
-    return file.nameExists("/checkpoint");
-  } catch (const H5::Exception&) {
-    return path.size() > 11 && path.compare(path.size() - 11, 11, ".checkpoint") == 0;
-  }
+  const IsolatedResult found = read_isolated(
+      [&] {
+        QuietHdf5 quiet;
+        const H5::H5File file(path, H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT, unlocked_access());
+        return std::string(file.nameExists("/checkpoint") ? "yes" : "no");
+      },
+      60.0);
+  if (found.ok) return found.value == "yes";
+  return path.size() > 11 && path.compare(path.size() - 11, 11, ".checkpoint") == 0;
 }
 
 // the files the command writes, each with how the user named it: the outputs, and the

@@ -281,6 +281,14 @@ long checkpoint_steps(const Scene& scene, const RunOptions& options) {
 
 }  // namespace
 
+std::vector<std::string> scene_warnings(const Scene& scene, const Layout& layout) {
+  std::vector<std::string> out = step_size_warnings(scene);
+  for (const std::string& w : setting_warnings(scene)) out.push_back(w);
+  if (const std::string w = plate_load_warning(scene); !w.empty()) out.push_back(w);
+  for (const std::string& w : layout_warnings(scene, layout)) out.push_back(w);
+  return out;
+}
+
 RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
@@ -289,9 +297,6 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   RunSummary summary;
   summary.scenario = scene.source_path;
   summary.output = options.output;
-  summary.warnings = step_size_warnings(scene);
-  for (const std::string& w : setting_warnings(scene)) summary.warnings.push_back(w);
-  if (const std::string w = plate_load_warning(scene); !w.empty()) summary.warnings.push_back(w);
 
   // initial conditions, or the state of the checkpoint the run resumes from
   SetupProgress setup(options.progress);
@@ -309,7 +314,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
     state.world->set_problem_observer(problems.get());
   }
   summary.floes = static_cast<int>(layout.floes.size());
-  for (const std::string& w : layout_warnings(scene, layout)) summary.warnings.push_back(w);
+  summary.warnings = scene_warnings(scene, layout);
   summary.achieved_concentration = layout.achieved_concentration;
 
   // From here on a signal stops the run at the loop's next check, with the file closed and

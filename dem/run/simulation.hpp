@@ -4,8 +4,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "dem/input/scene.hpp"
+#include "dem/layout/floe_layout.hpp"
 #include "dem/output/checkpoint.hpp"
 #include "dem/output/problem_export.hpp"
 #include "dem/output/summary.hpp"
@@ -26,5 +28,9 @@ struct RunOptions {
 /// Run the scene to the end (or until interrupted). Throws NumericalError after
 /// marking the file "failed"; returns status "interrupted" after Ctrl-C.
 RunSummary run_simulation(const Scene& scene, const RunOptions& options);
+
+/// Every warning about a scene, in the order `icedem check` prints them and a run's summary keeps
+/// them: its step size, settings that cannot be meant, a validation plate's load, its layout.
+std::vector<std::string> scene_warnings(const Scene& scene, const Layout& layout);
 
 }  // namespace icedem
