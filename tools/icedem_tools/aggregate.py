@@ -220,6 +220,14 @@ def ensemble_spectrum(spectra):
     return same[0][0], np.mean([p for _, p in same], axis=0)
 
 
+def share_text(k, n):
+    """A share k/n with its Clopper-Pearson (exact) 95 % interval, as "k/n (lo-hi %)": the runs of a
+    setting that reach a value (the tank's largest load), which few seeds cannot give Student's
+    interval for."""
+    ci = stats.binomtest(k, n).proportion_ci(confidence_level=0.95, method="exact")
+    return f"{k}/{n} ({100 * ci.low:.0f}-{100 * ci.high:.0f} %)"
+
+
 def gumbel_fit(maxima):
     """Moment fit of a Gumbel type I distribution to sample maxima (docs/model/validation_targets.md §7):
     beta = sqrt(6) s / pi, u = mean - 0.5772 beta. (nan, nan) for fewer than 2."""

@@ -36,12 +36,6 @@ TOLERANCE = {"mean": 0.05, "p99": 0.10, "max": 0.10}
 BEGIN, END = "<!-- budget tables: scripts/budget writes below -->", "<!-- end of the budget tables -->"
 
 
-def reach_interval(k, n):
-    """The Clopper-Pearson 95 % interval of a share k/n."""
-    ci = stats.binomtest(k, n).proportion_ci(confidence_level=0.95, method="exact")
-    return ci.low, ci.high
-
-
 def ensemble(records, tank):
     """A variant's finished runs over the seeds (aggregate.ensemble), from their records (kept with
     the sweep, so a fresh machine reports from the committed ones): the window's mean, p99 and max,
@@ -89,16 +83,15 @@ def tables(name, runs, found, tanks):
             if e is None:
                 rows.append((0.0, f"| {n} | 0 | no finished run yet |||||||||"))
                 continue
-            changes, _, _, paired = agg.judge(e, base, TOLERANCE)
+            changes, _, _, _ = agg.judge(e, base, TOLERANCE)
             k = int(round(e["runs"]["reach"].sum()))
-            lo, hi = reach_interval(k, e["n"])
             p = stats.fisher_exact([[k, e["n"] - k], [k0, base["n"] - k0]])[1] if n != study["baseline"] else 1.0
             if n == study["baseline"]:
                 changes = {}
             cells = [n, str(e["n"]), with_interval(*e["mean"]), change_cell(changes, "mean"),
                      with_interval(*e["p99"]), change_cell(changes, "p99"),
                      with_interval(*e["max"]), change_cell(changes, "max"),
-                     f"{k}/{e['n']} ({100 * lo:.0f}-{100 * hi:.0f} %)",
+                     agg.share_text(k, e["n"]),
                      "" if n == study["baseline"] else f"{p:.2f}", f"{e['cpu']:.0f}"]
             rank = abs(changes["max"][0]) if "max" in changes and n != study["baseline"] else float("inf")
             rows.append((rank, "| " + " | ".join(cells) + " |"))

@@ -49,7 +49,6 @@ Exit code: 0 with no crash and no hang, 1 otherwise (other findings are reported
 """
 import argparse
 import glob
-import hashlib
 import json
 import os
 import random
@@ -62,9 +61,9 @@ import tempfile
 
 from .spec import ROOT
 from . import fuzz_files, fuzz_scenes, results
+from .fuzz_files import digest, run
 EXTREMES = ["1e308", "-1e308", "nan", "inf", "-inf", "0", "-1", "1e-300", "123456789012345678901234567890",
             "1e309", "-0", "0.0000001", "1e6"]
-DOCUMENTED_EXITS = {0, 2, 3, 4, 5, 130}
 NAMED_INPUT = re.compile(r"\S+\.(toml|csv|json)(:\d+)?: |--set ")
 LIBRARY_TEXT = re.compile(r"HDF5-DIAG|json\.exception|terminate called|std::|basic_string|Segmentation")
 
@@ -192,15 +191,6 @@ def csv_to_json(text):
     return json.dumps({"floes": floes})
 
 
-def run(cmd, timeout):
-    """(exit code or None for a hang, output text)"""
-    try:
-        p = subprocess.run(cmd, capture_output=True, timeout=timeout, text=True, errors="replace")
-        return p.returncode, p.stdout + p.stderr
-    except subprocess.TimeoutExpired as e:
-        return None, (e.stdout or b"").decode(errors="replace") if isinstance(e.stdout, bytes) else (e.stdout or "")
-
-
 def judge_check(code, out, names):
     """(problem or None, is a crash or hang)"""
     if code is None:
@@ -225,11 +215,6 @@ def remove_run(h5):
     for p in (h5, h5 + ".checkpoint"):
         if os.path.exists(p):
             os.remove(p)
-
-
-def digest(path):
-    with open(path, "rb") as f:
-        return hashlib.sha256(f.read()).hexdigest()
 
 
 def guard_problems(icedem, scenario, timeout):

@@ -27,19 +27,21 @@ import numpy as np
 
 from .spec import ROOT
 
+# the exit codes docs/user/commands.md lists (dem/core/errors.hpp); any other is a finding
 DOCUMENTED_EXITS = {0, 2, 3, 4, 5, 130, 143}
 
 
-def run(cmd, timeout, cwd=None):
-    """(exit code or None for a hang, output text)"""
+def run(cmd, timeout):
+    """(exit code or None for a hang, output text): the fuzzer's one way of running a command"""
     try:
-        p = subprocess.run(cmd, capture_output=True, timeout=timeout, text=True, errors="replace", cwd=cwd)
+        p = subprocess.run(cmd, capture_output=True, timeout=timeout, text=True, errors="replace")
         return p.returncode, p.stdout + p.stderr
-    except subprocess.TimeoutExpired:
-        return None, ""
+    except subprocess.TimeoutExpired as e:
+        return None, (e.stdout or b"").decode(errors="replace") if isinstance(e.stdout, bytes) else (e.stdout or "")
 
 
 def digest(path):
+    """A file's SHA-256, or what stands in its place (a directory's listing, "missing")."""
     if os.path.isdir(path):
         return "directory " + ",".join(sorted(os.listdir(path)))
     if not os.path.exists(path):

@@ -11,20 +11,12 @@ run as meant, and structures driven into the channel's end wall.
 """
 import json
 import os
-import subprocess
 
+from .fuzz_files import run
 from .spec import ROOT
 
 TOW = os.path.join(ROOT, "scenarios", "examples", "short_tow.toml")
 PLATE = os.path.join(ROOT, "scenarios", "validation", "plate_deflection_27_015.toml")
-
-
-def run(cmd, timeout):
-    try:
-        p = subprocess.run(cmd, capture_output=True, timeout=timeout, text=True, errors="replace")
-        return p.returncode, p.stdout + p.stderr
-    except subprocess.TimeoutExpired:
-        return None, ""
 
 
 def scene_cases(rng, scenarios):

@@ -26,7 +26,6 @@ import re
 import sys
 
 import numpy as np
-from scipy import stats
 
 from . import aggregate as agg, output_guard
 from .spec import ROOT
@@ -56,11 +55,6 @@ def read_maxima(records):
     return out
 
 
-def share(k, n):
-    ci = stats.binomtest(k, n).proportion_ci(confidence_level=0.95, method="exact")
-    return f"{k}/{n} ({100 * ci.low:.0f}-{100 * ci.high:.0f} %)"
-
-
 def gumbel_exceedance(u, beta, x):
     """P(X >= x) for a Gumbel type I of location u and scale beta."""
     return 1.0 - math.exp(-math.exp(-(x - u) / beta)) if beta > 0 else float(x <= u)
@@ -74,13 +68,14 @@ def model_table(model, configs):
     for (fii, fis), maxima in sorted(configs.items()):
         x = np.array(maxima)
         u, beta = agg.gumbel_fit(x)
-        lines.append(f"| {fii} | {fis} | {len(x)} | {x.mean():.1f}, {x.max():.1f} | {share(int((x >= tank).sum()), len(x))} "
+        reach = agg.share_text(int((x >= tank).sum()), len(x))
+        lines.append(f"| {fii} | {fis} | {len(x)} | {x.mean():.1f}, {x.max():.1f} | {reach} "
                      f"| {u:.1f}, {beta:.1f} | {100 * gumbel_exceedance(u, beta, tank):.1f} % |")
     pooled = np.array([v for k in REFERENCE for v in configs.get(k, [])])
     if len(pooled):
         u, beta = agg.gumbel_fit(pooled)
         lines += ["", f"At the reference friction (f_ii 0.5, f_is 0.2 and 0.3 pooled, {len(pooled)} runs): "
-                  f"{share(int((pooled >= tank).sum()), len(pooled))} of the runs reach the tank's {tank:.0f} N; the "
+                  f"{agg.share_text(int((pooled >= tank).sum()), len(pooled))} of the runs reach the tank's {tank:.0f} N; the "
                   f"Gumbel fit of their maxima (u {u:.1f} N, β {beta:.1f} N) gives {100 * gumbel_exceedance(u, beta, tank):.1f} % "
                   f"for one run, as the tank's one run per condition; the largest of them is {pooled.max():.1f} N. "
                   "Pooled over two frictions, the maxima are a mixture of two distributions (the steps in the "
