@@ -143,6 +143,9 @@ std::vector<KeySpec> make_keys() {
   }
   k.push_back(integer("structure.segments", 48, 8, 720,
                       "polygon sides approximating each circular station of the hull"));
+  k.push_back(positive("structure.collision_margin", "m", 0.001, 0.1,
+                       "Bullet's collision margin of the hull's pieces, which rounds them and grows them by "
+                       "it (Bullet's own default: 0.04 m)"));
 
   // channel and tank
   k.push_back(real("channel.start_x", "m", 6.0, -1.0e4, 1.0e4,
@@ -193,6 +196,14 @@ std::vector<KeySpec> make_keys() {
                    "ice-ice friction f_ii, also floe against mother ice (paper: 0.3/0.5/0.7)"));
   k.push_back(real("friction.ice_structure", "-", 0.2, 0.0, 5.0,
                    "ice-structure friction f_is (paper: 0.1/0.2/0.3)"));
+  k.push_back(real("friction.ice_ice_static", "-", 0.0, 0.0, 5.0,
+                   "static ice-ice friction of contacts that stick (slip slower than friction.stick_speed), "
+                   "at least friction.ice_ice; 0: none, friction.ice_ice throughout"));
+  k.push_back(real("friction.ice_structure_static", "-", 0.0, 0.0, 5.0,
+                   "static ice-structure friction of contacts that stick, at least friction.ice_structure; "
+                   "0: none"));
+  k.push_back(positive("friction.stick_speed", "m/s", 1.0e-3, 1.0,
+                       "slip speed below which a contact sticks (takes the static coefficient)"));
 
   // water
   k.push_back(positive("water.density", "kg/m^3", 1000.0, 1.0e4, "water density (Table 3)"));

@@ -65,6 +65,7 @@ struct StructureSettings {
   double start_z;                       // m
   std::vector<ProfileStation> profile;  // keel to deck, y increasing
   int segments;                         // polygon sides per station
+  double collision_margin;              // m, Bullet's margin on the hull's pieces (grows them by it)
 };
 
 struct ChannelSettings {
@@ -106,9 +107,13 @@ struct LayoutSettings {
   int layers;        // generated floe layers stacked at t = 0 (1: one floating layer)
 };
 
+// Coulomb coefficients: kinetic, and static for contacts that stick (dem/world/static_friction.hpp)
 struct FrictionSettings {
   double ice_ice;        // -, also floe against mother ice
   double ice_structure;  // -
+  double ice_ice_static;        // -, 0: none (ice_ice throughout)
+  double ice_structure_static;  // -, 0: none
+  double stick_speed;           // m/s, slip speed below which a contact sticks
 };
 
 struct WaterSettings {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include <fmt/format.h>
@@ -144,6 +145,7 @@ Scene make_scene(const Scenario& sc) {
   s.structure.start_x = real(sc, "structure.start_x");
   s.structure.start_z = real(sc, "structure.start_z");
   s.structure.segments = integer(sc, "structure.segments");
+  s.structure.collision_margin = real(sc, "structure.collision_margin");
   const PairList& profile = get<PairList>(sc, "structure.profile");
   bool any_radius = false;
   for (std::size_t i = 0; i < profile.size(); ++i) {
@@ -214,6 +216,17 @@ Scene make_scene(const Scenario& sc) {
 
   s.friction.ice_ice = real(sc, "friction.ice_ice");
   s.friction.ice_structure = real(sc, "friction.ice_structure");
+  s.friction.ice_ice_static = real(sc, "friction.ice_ice_static");
+  s.friction.ice_structure_static = real(sc, "friction.ice_structure_static");
+  s.friction.stick_speed = real(sc, "friction.stick_speed");
+  // a static coefficient below the kinetic one would make a sticking contact easier to move
+  // than a sliding one
+  for (const auto& [key, stat, kinetic] : {std::tuple{"friction.ice_ice_static", s.friction.ice_ice_static, s.friction.ice_ice},
+                                            std::tuple{"friction.ice_structure_static", s.friction.ice_structure_static,
+                                                       s.friction.ice_structure}})
+    if (stat > 0 && stat < kinetic)
+      fail_key(sc, key, fmt::format("0 (none) or at least the kinetic coefficient {} (static friction is never "
+                                    "below kinetic)", kinetic));
 
   s.flow.model = choice<FlowModel>(sc, "flow.model",
                                    {{"still", FlowModel::kStill}, {"uniform", FlowModel::kUniform},

@@ -28,6 +28,7 @@ WorldSettings world_settings(const Scene& scene) {
   s.ice_density = scene.ice.density;
   s.water = water_params(scene.water);
   s.added_mass = scene.water.added_mass;
+  s.static_friction = {scene.friction.ice_ice_static, scene.friction.ice_structure_static, scene.friction.stick_speed};
   return s;
 }
 
@@ -68,7 +69,7 @@ void add_profile_structure(World& world, const Scene& scene) {
     auto hull = std::make_unique<btConvexHullShape>();
     for (const Eigen::Vector3d& p : piece) hull->addPoint(to_bt(p), false);
     hull->recalcLocalAabb();
-    hull->setMargin(kDefaultCollisionMargin);
+    hull->setMargin(scene.structure.collision_margin);
     compound->addChildShape(identity, hull.get());
     pieces.push_back(std::move(hull));
   }

@@ -94,12 +94,14 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
     const int first = m_tmpSolverContactConstraintPool.size();
     convertContact(&manifold, info);  // Bullet's own set-up of the rows, normal impulses warm-started
     const int end = m_tmpSolverContactConstraintPool.size();
+    const bool on_structure = structure_ && (manifold.getBody0() == structure_ || manifold.getBody1() == structure_);
+    if (settings_.static_friction.any()) stick_or_slip(manifold, first, on_structure);
     if (settings_.friction_warm_start) warm_start_friction(first, info);
     // crushing: the pair's normal force is at most crushing_force, shared by its points
     if (settings_.crushing_force > 0 && end > first)
       for (int r = first; r < end; ++r)
         m_tmpSolverContactConstraintPool[r].m_upperLimit = settings_.crushing_force * info.m_timeStep / (end - first);
-    if (structure_ && (manifold.getBody0() == structure_ || manifold.getBody1() == structure_)) {
+    if (on_structure) {
       const double sign = manifold.getBody0() == structure_ ? 1.0 : -1.0;
       for (int r = first; r < end; ++r) structure_rows_.push_back({r, sign});
     }
@@ -142,6 +144,22 @@ void ContactSolver::convertJoints(btTypedConstraint** constraints, int numConstr
     const double error_rate = (row.m_rhs / row.m_jacDiagABInv + jv_free) / joint->erp();  // e / h
     row.m_rhs = (error_rate - jv_free) * row.m_jacDiagABInv;
     row.m_cfm = row.m_jacDiagABInv / (h * h * K);
+  }
+}
+
+// Static friction: each contact row of the manifold (from `first_row`) and its friction rows
+// get the static coefficient if the contact sticks (dem/world/static_friction.hpp). Bullet set
+// them all to the point's combined (kinetic) coefficient; the friction warm start, the sweeps,
+// the crushing limit and the captured problem all read the rows.
+void ContactSolver::stick_or_slip(const btPersistentManifold& manifold, int first_row, bool on_structure) {
+  const int per_contact = two_directions_ ? 2 : 1;
+  for (int r = first_row; r < m_tmpSolverContactConstraintPool.size(); ++r) {
+    btSolverConstraint& contact = m_tmpSolverContactConstraintPool[r];
+    const auto& point = *static_cast<const btManifoldPoint*>(contact.m_originalContactPoint);
+    const double slip = slip_speed(*manifold.getBody0(), *manifold.getBody1(), point);
+    const btScalar mu = contact_friction(settings_.static_friction, contact.m_friction, on_structure, slip);
+    contact.m_friction = mu;
+    for (int k = 0; k < per_contact; ++k) m_tmpSolverContactFrictionConstraintPool[contact.m_frictionIndex + k].m_friction = mu;
   }
 }
 

@@ -17,6 +17,8 @@
 //  - optionally orders the contact rows by distance from the structure,
 //    alternating outward and inward sweeps (symmetric Gauss-Seidel along the
 //    load path);
+//  - optionally gives a contact that is not slipping its static friction coefficient
+//    (dem/world/static_friction.hpp);
 //  - optionally limits the normal force of each contact to the ice's crushing
 //    force (ice.contact_crushing): a pair of floes, or a floe and the structure,
 //    cannot press on each other harder than the ice can bear;
@@ -59,6 +61,7 @@
 #include "dem/contact/problem.hpp"
 #include "dem/contact/registry.hpp"
 #include "dem/input/scene.hpp"
+#include "dem/world/static_friction.hpp"
 
 namespace icedem {
 
@@ -82,6 +85,7 @@ struct ContactSolverSettings {
   bool friction_warm_start = false;  // carry friction impulses over from the previous step
   SweepOrder order = SweepOrder::kBullet;
   double crushing_force = 0.0;     // N, largest normal force of one contact (pair); 0: none
+  StaticFriction static_friction;  // static coefficients of sticking contacts (none by default)
   // the method that solves an island with contacts: "pgs" (the sweeps above) or another
   // of dem/contact/registry.hpp, which solves the island's whole problem (joints included)
   // to merit_tolerance in at most method_iterations of its iterations
@@ -211,6 +215,7 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   void remember_velocities();
   double largest_body_impulse_change() const;
   void warm_start_friction(int first_row, const btContactSolverInfo& info);
+  void stick_or_slip(const btPersistentManifold& manifold, int first_row, bool on_structure);
   void build_order(bool from_structure);
   // one sweep over the joint rows (those with sweeps left) and, if `contacts`, the contact rows
   // in the given direction of the order; returns the largest change of a contact impulse, N s

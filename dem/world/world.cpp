@@ -78,6 +78,7 @@ World::World(const WorldSettings& settings)
   contact.friction_warm_start = solver.friction_warm_start;
   contact.order = solver.order;
   contact.crushing_force = settings.crushing_force;
+  contact.static_friction = settings.static_friction;
   contact.method = solver.method;
   contact.merit_tolerance = solver.merit_tolerance;
   contact.merit = solver.merit;

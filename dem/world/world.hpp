@@ -30,6 +30,7 @@
 #include "dem/input/scene.hpp"
 #include "dem/water/added_mass.hpp"
 #include "dem/world/bullet_eigen.hpp"
+#include "dem/world/static_friction.hpp"
 #include "dem/world/contact_islands.hpp"
 #include "dem/world/contact_solver.hpp"
 #include "dem/world/dynamics_world.hpp"
@@ -114,6 +115,7 @@ struct WorldSettings {
   double ice_density;          // kg/m^3
   WaterParams water;           // for the shapes' damping
   bool added_mass = false;     // ice bodies respond with the water's added mass (dem/water/added_mass.hpp)
+  StaticFriction static_friction;  // static coefficients of sticking contacts (dem/world/static_friction.hpp)
 };
 
 /// The Bullet world and everything in it. Not copyable; one per run.

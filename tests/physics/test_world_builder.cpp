@@ -2,6 +2,10 @@
 // body each, breakable floes as lattices of elements and joints that share the floe's id and mass.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
 #include "dem/step/world_builder.hpp"
 #include "dem/world/world.hpp"
 #include "tests/support/scenes.hpp"
@@ -33,6 +37,32 @@ TEST(WorldBuilder, RigidFloesAreOneBodyEachAndBreakableOnesLatticesOfElementsAnd
   for (const FloeBody& f : world.floes())
     if (f.floe_id == 0) mass += f.shape->mass;
   EXPECT_NEAR(mass, breakable.ice.density * 0.6 * 0.6 * breakable.ice.thickness, 1e-12);
+}
+
+TEST(WorldBuilder, TheHullsMarginGrowsTheConeByIt) {
+  // structure.collision_margin: Bullet rounds a convex hull and grows it by its margin, so the
+  // cone's widest station (radius 0.736 m, Table 2) reaches out by the margin: 1 mm by default,
+  // 40 mm at Bullet's default margin. Measured by the pieces' support along the tank's width, the
+  // point of the shape contacts are found against
+  auto widest = [](double margin) {
+    const Scene scene = bench_scene({"structure.collision_margin=" + std::to_string(margin)});
+    World world(world_settings(scene));
+    add_profile_structure(world, scene);
+    const auto* hull = static_cast<const btCompoundShape*>(world.structure()->getCollisionShape());
+    double reach = 0;
+    for (int i = 0; i < hull->getNumChildShapes(); ++i) {
+      const auto* piece = static_cast<const btConvexShape*>(hull->getChildShape(i));
+      reach = std::max(reach, double(piece->localGetSupportingVertex(btVector3(0, 0, 1)).z()));
+    }
+    return reach;
+  };
+  const double thin = widest(0.001), thick = widest(0.04);
+  std::printf("the hull's half-width: %.4f m at 1 mm margin, %.4f m at 40 mm\n", thin, thick);
+  // exact to round-off: the support is a vertex plus the margin along the direction
+  EXPECT_NEAR(thick - thin, 0.039, 1e-9);
+  // the polygon keeps each station's area (its vertices 0.14 % outside the circle at 48 sides),
+  // plus the 1 mm margin: 0.7381 m
+  EXPECT_NEAR(thin, 0.736 + 0.001, 2e-3);
 }
 
 // A field made row by row (10,000 floes) settles into the broadphase's tree of resting boxes

@@ -202,6 +202,20 @@ TEST(Scenario, LayersStackGeneratedFieldsOnly) {
   EXPECT_NE(msg.find("layout.file"), std::string::npos) << msg;
 }
 
+TEST(Scenario, StaticFrictionIsNoneOrAtLeastTheKinetic) {
+  // below the kinetic, a sticking contact would give way before a sliding one: refused, naming the
+  // key, its line and the kinetic coefficient it must reach
+  const std::string msg = error_of("[friction]\nice_structure = 0.3\nice_structure_static = 0.25\n");
+  EXPECT_NE(msg.find(":3: friction.ice_structure_static"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("at least the kinetic coefficient 0.3"), std::string::npos) << msg;
+  EXPECT_NE(error_of("[friction]\nice_ice_static = 0.4\n").find("friction.ice_ice_static"), std::string::npos);
+  // 0 is none, and a static coefficient equal to the kinetic is allowed (it changes nothing)
+  const Scene s = scene_from("[friction]\nice_structure_static = 0.2\n");
+  EXPECT_DOUBLE_EQ(s.friction.ice_structure_static, 0.2);
+  EXPECT_DOUBLE_EQ(s.friction.ice_ice_static, 0.0);
+  EXPECT_DOUBLE_EQ(s.friction.stick_speed, 1e-3);
+}
+
 // Malformed input found by fuzzing: refused with a message, never a crash or a hang.
 
 TEST(ScenarioLimits, DeeplyNestedKeysHeadersAndArraysAreRefusedBeforeParsing) {
