@@ -3,16 +3,21 @@
 machine: scripts/tank_maxima (docs/paper_reproduction/records) and scripts/budget
 (docs/model/load_budget_records, with an empty run directory). Their counts are the records' own:
 the paper grid's rigid 0.6 m floes at f_ii 0.5, f_is 0.2 and 0.3 pooled, reach the tank's 150 N in 5
-of 20 runs; the budget's default in 1 of 10 and with added mass in 10 of 10.
+of 20 runs; the budget's default in 1 of 10 and with added mass in 10 of 10. The filtered maxima
+(scripts/tank_maxima --filter-runs) filter a run's load as icedem's own stats.lowpass_hz does: the
+short tow's maximum after the 5 Hz filter is the one icedem reports with that key, to round-off.
 
-Usage: test_load_tools.py SOURCE_DIR WORK_DIR
+Usage: test_load_tools.py SOURCE_DIR WORK_DIR ICEDEM
 """
+import json
 import os
 import shutil
 import subprocess
 import sys
 
-src, work = sys.argv[1:3]
+src, work, icedem = sys.argv[1:4]
+sys.path.insert(0, os.path.join(src, "tools"))
+from icedem_tools import tank_maxima  # noqa: E402
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(os.path.join(work, "no_runs"))
 failures = []
@@ -44,6 +49,33 @@ check(p.returncode == 0 and "| 1/10 (0-45 %) |" in rows.get("default", "")
       and "| 10/10 (69-100 %) |" in rows.get("added mass", ""),
       f"budget from its records alone: the default 1 of 10 runs at the tank's value, added mass 10 of 10 "
       f"(exit {p.returncode}) {p.stderr[-200:]}")
+
+# the filter: the short tow run as it is and with icedem's own 5 Hz low-pass of its statistics
+run_dir = os.path.join(work, "sweep", "large_rigid", "default", "base", "seed1")
+os.makedirs(run_dir)
+tow = os.path.join(src, "scenarios", "examples", "short_tow.toml")
+for name, extra in (("run", []), ("filtered", ["--set", "stats.lowpass_hz=5"])):
+    subprocess.run([icedem, "run", tow, "-q", "-o", os.path.join(run_dir, name + ".h5"), "--summary-json",
+                    os.path.join(run_dir, "summary.json" if name == "run" else "filtered.json"),
+                    "--set", "output.snapshot_interval=0"] + extra, check=True)
+os.remove(os.path.join(run_dir, "filtered.h5"))
+with open(os.path.join(run_dir, "summary.json")) as f:
+    plain = json.load(f)
+with open(os.path.join(run_dir, "filtered.json")) as f:
+    by_icedem = json.load(f)["max_fx_N"]
+ours = tank_maxima.filtered_maxima(os.path.join(run_dir, "run.h5"), plain)
+# 1e-9: the same filter, the same padding, the same window; only the order of round-off differs
+check(abs(ours["5"] - by_icedem) <= 1e-9 * abs(by_icedem) and ours["0"] == plain["max_fx_N"],
+      f"the 5 Hz maximum is icedem's: {ours['5']!r} N against {by_icedem!r} N (unfiltered {ours['0']} N)")
+records = os.path.join(work, "filtered.json")
+page = os.path.join(work, "tank_maxima_filtered.md")
+p = subprocess.run([os.path.join(src, "scripts", "tank_maxima"), "--filter-runs", os.path.join(work, "sweep"),
+                    "--filtered", records, "--report", page], capture_output=True, text=True)
+with open(records) as f:
+    kept = json.load(f) if p.returncode == 0 else {}
+check(p.returncode == 0 and kept.get("large_rigid", {}).get("default", {}).get("seed1") == ours
+      and "| large_rigid, reference | 1 | 5 Hz |" in open(page).read(),
+      f"--filter-runs keeps each run's filtered maxima and the report shows them (exit {p.returncode}) {p.stderr[-300:]}")
 
 print(f"{len(failures)} failed")
 sys.exit(1 if failures else 0)

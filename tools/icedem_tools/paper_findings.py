@@ -145,8 +145,9 @@ def side_by_side(now, before=None, before_label="", now_label="icedem"):
     """The table of the paper's findings against one or two grids (findings() of each; before
     first, in its own columns) and the rows of `now` that disagree: (lines, [(finding, paper,
     icedem, cause key)])."""
-    def agree(ok):
-        return "n/a" if ok is None else ("yes" if ok else "**no**")
+    def agree(ok, link=False):
+        no = "**no** ([why](#where-icedem-disagrees-with-the-paper))" if link else "**no**"
+        return "n/a" if ok is None else ("yes" if ok else no)
     L = ["## Side by side with the paper", "",
          "At the paper's reference friction f_ii = 0.5, f_is = 0.2 unless the row says otherwise. "
          "\"Agrees\" uses the tolerance given in the row.", ""]
@@ -158,11 +159,11 @@ def side_by_side(now, before=None, before_label="", now_label="icedem"):
     disagreements = []
     for finding, paper, ours, ok, cause in now:
         if before is None:
-            L.append(f"| {finding} | {paper} | {ours} | {agree(ok)} |")
+            L.append(f"| {finding} | {paper} | {ours} | {agree(ok, link=True)} |")
         else:
             b = old.get(finding)
             L.append(f"| {finding} | {paper} | {b[2] if b else 'n/a'} | {agree(b[3]) if b else 'n/a'} | "
-                     f"{ours} | {agree(ok)} |")
+                     f"{ours} | {agree(ok, link=True)} |")
         if ok is False:
             disagreements.append((finding, paper, ours, cause))
     return L, disagreements
@@ -239,13 +240,20 @@ def numerics(summaries):
     return (f"Every run of this grid solved its contacts with {how}: {sum(sweeps) / len(sweeps):.1f} sweeps "
             "per step on average over the runs.")
 
+# where the report (docs/paper_reproduction/report.md) finds the model's measured budget against the tank
+BUDGET_LINK = ("What each part of the model does to the loads, one factor at a time over seeds: "
+               "[the load budget](../model/load_budget.md); the tank's one largest load against the runs' maxima: "
+               "[tank_maxima.md](../model/tank_maxima.md).")
+
+
 def disagreement_section(disagreements, causes, summaries):
     L = ["## Where icedem disagrees with the paper", ""]
     if not disagreements:
         L.append("Nowhere among the rows above.")
     for finding, paper, ours, cause in disagreements:
         why = causes.get(cause)
-        L.append(f"- **{finding}**: paper {paper}, icedem {ours}." + (f" Why: {why}." if why else ""))
+        L.append(f"- **{finding}**: paper {paper}, icedem {ours}." + (f" Why: {why}." if why else "")
+                 + f" {BUDGET_LINK}")
     return L + ["", numerics(summaries), ""]
 
 def supplement_ratios(rows):
