@@ -155,6 +155,9 @@ std::vector<KeySpec> make_keys() {
   k.push_back(positive("channel.width", "m", 4.8, 1.0e3,
                        "width between the mother-ice edges, centred on z = 0 (paper: 4.8 m)"));
   k.push_back(boolean("channel.end_wall", true, "mother ice closes the far end of the channel"));
+  k.push_back(real("channel.edge_friction_factor", "-", 1.0, 0.0, 10.0,
+                   "friction of the floes on the mother ice (the channel's edges and end wall) as a multiple of "
+                   "friction.ice_ice (1: ice on ice; the tank's edges may be cut smoother or rougher)"));
   k.push_back(positive("tank.width", "m", 6.0, 1.0e3, "tank breadth (Table 1: 6 m)"));
   k.push_back(real("tank.depth", "m", 1.8, 0.05, 1.0e3, "water depth (Table 1: 1.8 m)"));
 

@@ -73,6 +73,7 @@ struct ChannelSettings {
   double length;     // m
   double width;      // m, centred on z = 0
   bool end_wall;     // mother ice at x = start_x + length
+  double edge_friction_factor;  // -, the mother ice's friction against floes over friction.ice_ice
   double tank_width; // m
   double tank_depth; // m, water depth
 };

@@ -163,6 +163,7 @@ Scene make_scene(const Scenario& sc) {
   s.channel.length = real(sc, "channel.length");
   s.channel.width = real(sc, "channel.width");
   s.channel.end_wall = get<bool>(sc, "channel.end_wall");
+  s.channel.edge_friction_factor = real(sc, "channel.edge_friction_factor");
   s.channel.tank_width = real(sc, "tank.width");
   s.channel.tank_depth = real(sc, "tank.depth");
   if (s.channel.width > s.channel.tank_width)

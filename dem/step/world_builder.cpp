@@ -85,15 +85,16 @@ void add_boundaries(World& world, const Scene& scene) {
   const double x0 = tank.min().x(), x1 = tank.max().x();
   const double x_end = c.start_x + c.length;
   const double side = (c.tank_width - c.width) / 2;  // mother ice left along each wall
-  const double f = scene.friction.ice_ice;           // mother ice is ice
+  const double f = scene.friction.ice_ice;           // the tank's walls and floor
+  const double f_edge = f * c.edge_friction_factor;  // mother ice: ice, its edges as cut
 
   // mother ice along both sides of the channel: fixed sheets at the waterline
   if (side > 0)
     for (double sign : {-1.0, 1.0})
       world.add_static_box({(x0 + x1) / 2, y_ice, sign * (c.width / 2 + side / 2)}, {(x1 - x0) / 2, h / 2, side / 2},
-                           kBoundary, f);
+                           kBoundary, f_edge);
   // mother ice closing the far end of the channel
-  if (c.end_wall) world.add_static_box({x_end + 0.5, y_ice, 0.0}, {0.5, h / 2, c.width / 2}, kBoundary, f);
+  if (c.end_wall) world.add_static_box({x_end + 0.5, y_ice, 0.0}, {0.5, h / 2, c.width / 2}, kBoundary, f_edge);
 
   // tank walls, ends and floor (floes pushed under the ice must not fall out)
   const double wall = 0.1, top = kTankWallTop;

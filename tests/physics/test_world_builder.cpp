@@ -65,6 +65,22 @@ TEST(WorldBuilder, TheHullsMarginGrowsTheConeByIt) {
   EXPECT_NEAR(thin, 0.736 + 0.001, 2e-3);
 }
 
+TEST(WorldBuilder, TheMotherIceEdgesCarryTheirOwnFriction) {
+  // channel.edge_friction_factor scales the mother ice's friction (both edges and the end wall)
+  // from friction.ice_ice; the tank's walls and floor keep friction.ice_ice
+  const Scene scene = bench_scene({"friction.ice_ice=0.4", "channel.edge_friction_factor=0.25"});
+  World world(world_settings(scene));
+  add_boundaries(world, scene);
+  std::vector<double> found;
+  const btCollisionObjectArray& objects = world.dynamics().getCollisionObjectArray();
+  for (int i = 0; i < objects.size(); ++i) found.push_back(objects[i]->getFriction());
+  const auto edges = std::count(found.begin(), found.end(), btScalar(0.4 * 0.25));
+  const auto walls = std::count(found.begin(), found.end(), btScalar(0.4));
+  EXPECT_EQ(edges, scene.channel.end_wall ? 3 : 2);  // two edges and the end wall
+  EXPECT_EQ(edges + walls, static_cast<long>(found.size())) << "every boundary is mother ice or the tank";
+  EXPECT_GE(walls, 3);  // two side walls and the floor at least
+}
+
 // A field made row by row (10,000 floes) settles into the broadphase's tree of resting boxes
 // built balanced (World::settle_broadphase): its depth is of order log2 of the bodies, where
 // Bullet's own one-at-a-time move into that tree two steps later had made a chain (the first
