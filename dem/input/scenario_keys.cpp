@@ -187,6 +187,9 @@ std::vector<KeySpec> make_keys() {
   k.push_back(integer("layout.sweeps", 30, 0, 100000,
                       "Monte-Carlo relaxation sweeps that randomise a generated layout (30 suffice; at most "
                       "5e7 moves, sweeps x floes, about 25 s of set-up)"));
+  k.push_back(real("layout.size_spread", "-", 0.0, 0.0, 0.9,
+                   "generated floes' sides drawn uniformly from ice.floe_size (1 +- spread), as many as fill "
+                   "ice.concentration (rigid floes only); 0: all alike"));
   k.push_back(real("layout.min_gap", "m", 0.002, 0.0, 1.0,
                    "smallest clearance between generated floes (keeps them out of contact at t = 0)"));
   k.push_back(integer("layout.layers", 1, 1, 10,

@@ -105,6 +105,7 @@ struct LayoutSettings {
   double max_yaw;    // rad
   int sweeps;        // Monte-Carlo sweeps
   double min_gap;    // m
+  double size_spread;  // -, generated floes' sides uniform in ice.floe_size (1 +- size_spread)
   int layers;        // generated floe layers stacked at t = 0 (1: one floating layer)
 };
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 
@@ -106,9 +107,27 @@ void check_params(const LayoutParams& p) {
   if (p.sweeps < 0) {
     throw InputError(fmt::format("{}: sweeps = {}: expected a count >= 0", ctx, p.sweeps));
   }
+  if (!std::isfinite(p.size_spread) || p.size_spread < 0.0 || p.size_spread >= 1.0) {
+    throw InputError(fmt::format("{}: size_spread = {}: expected a fraction in [0, 1)", ctx, p.size_spread));
+  }
   if (!std::isfinite(p.min_gap) || p.min_gap < 0.0) {
     throw InputError(
         fmt::format("{}: min_gap = {} m: expected a finite gap >= 0", ctx, p.min_gap));
+  }
+}
+
+// The sides of a field with a size spread: drawn uniformly from L (1 +- spread) from a stream of
+// their own (they do not depend on the arrangement's draws), one by one while the floes' area
+// comes nearer `target` by another floe
+std::vector<double> spread_sides(const LayoutParams& p, double target) {
+  Rng rng(p.seed ^ 0x9e3779b97f4a7c15ULL);
+  std::vector<double> sides;
+  double area = 0.0;
+  for (;;) {
+    const double s = p.floe_size * (1.0 + p.size_spread * rng.symmetric());
+    if (std::abs(area + s * s - target) >= std::abs(area - target)) return sides;
+    sides.push_back(s);
+    area += s * s;
   }
 }
 
@@ -118,30 +137,41 @@ Layout generate_square_layout(const LayoutParams& params) {
   check_params(params);
   const Channel& ch = params.channel;
   const double lx = ch.x_max - ch.x_min, lz = ch.z_max - ch.z_min;
-  const double side = params.floe_size, gap = params.min_gap;
+  // the largest side: every floe must fit across the channel (and in a cell of the grid below)
+  const double side = params.floe_size * (1.0 + params.size_spread), gap = params.min_gap;
   const std::string ctx = "floe layout";
 
   Layout layout;
   layout.channel_area = channel_area(ch);
+  // the floes' size in messages; with a spread, the largest side is what has to fit
+  const std::string size =
+      params.size_spread > 0.0
+          ? fmt::format("ice.floe_size = {} m with layout.size_spread = {} (largest side {} m)", params.floe_size,
+                        params.size_spread, side)
+          : fmt::format("ice.floe_size = {} m", side);
+  // the mean area of a floe: L^2 (1 + s^2 / 3) for sides uniform in L (1 +- s)
+  const double mean_area = params.floe_size * params.floe_size * (1.0 + params.size_spread * params.size_spread / 3.0);
 
   // the floe itself must fit across the channel
   if (side + gap > std::min(lx, lz)) {
     throw InputError(fmt::format(
-        "{}: ice.floe_size = {} m (with min gap {} m) is larger than the {} m x {} m channel; "
+        "{}: {} (with min gap {} m) is larger than the {} m x {} m channel; "
         "expected floes smaller than the channel width",
-        ctx, side, gap, lx, lz));
+        ctx, size, gap, lx, lz));
   }
 
-  // number of floes for the target concentration
-  const double exact_n = params.concentration * layout.channel_area / (side * side);
-  const long n = std::lround(exact_n);
+  // number of floes for the target concentration, and their sides
+  const double target = params.concentration * layout.channel_area;
+  const double exact_n = target / (params.floe_size * params.floe_size);
+  const std::vector<double> sides = params.size_spread > 0.0 ? spread_sides(params, target) : std::vector<double>{};
+  const long n = params.size_spread > 0.0 ? static_cast<long>(sides.size()) : std::lround(exact_n);
   if (params.concentration == 0.0) return layout;  // open water
   if (n == 0) {
     throw InputError(fmt::format(
-        "{}: ice.concentration = {} with ice.floe_size = {} m gives round({}) = 0 floes in the "
+        "{}: ice.concentration = {} with {} gives round({}) = 0 floes in the "
         "{} m x {} m channel; expected a concentration giving at least one floe (or 0 for open "
         "water)",
-        ctx, params.concentration, side, exact_n, lx, lz));
+        ctx, params.concentration, size, exact_n, lx, lz));
   }
   // the relaxation costs a trial move per floe per sweep, about 0.5 us each (measured: 100000
   // sweeps of 990 floes, 51 s): refuse what would take minutes rather than hang in set-up
@@ -154,45 +184,93 @@ Layout generate_square_layout(const LayoutParams& params) {
         ctx, params.sweeps, n, moves, moves * 0.5e-6, kMaxLayoutMoves,
         static_cast<long>(kMaxLayoutMoves / static_cast<double>(n))));
 
-  // start: the most regular grid that holds n floes; cells need a small margin
-  // so floes in neighbouring cells keep the gap despite rounding
-  const double need = (side + gap) * (1.0 + 1e-9);
-  const Grid grid = choose_grid(n, lx, lz, need);
-  if (grid.nx == 0) {
-    const long max_n = static_cast<long>(std::floor(lx / need)) *
-                       static_cast<long>(std::floor(lz / need));
-    throw InputError(fmt::format(
-        "{}: ice.concentration = {} with ice.floe_size = {} m needs {} floes, but at most {} fit "
-        "on a grid in the {} m x {} m channel with min gap {} m; expected ice.concentration <= "
-        "{:.4f} for this ice.floe_size (or smaller floes)",
-        ctx, params.concentration, side, n, max_n, lx, lz, gap,
-        static_cast<double>(max_n) * side * side / layout.channel_area));
-  }
-
   Rng rng(params.seed);
-
-  // leave the surplus cells empty, chosen at random (partial Fisher-Yates)
-  const long cells = static_cast<long>(grid.nx) * grid.nz;
-  std::vector<long> order(cells);
-  for (long c = 0; c < cells; ++c) order[c] = c;
-  for (long c = 0; c < cells - n; ++c) {
-    const long pick = c + static_cast<long>(rng.below(static_cast<uint64_t>(cells - c)));
-    std::swap(order[c], order[pick]);
-  }
-  std::vector<long> occupied(order.begin() + (cells - n), order.end());
-  std::sort(occupied.begin(), occupied.end());  // floes numbered along x, then z
-
-  // floes at the cell centres, with a random yaw small enough to stay in the cell
-  const Polygon shape = square(side);
-  const double radius = bounding_radius(shape);
-  const double yaw0 =
-      std::min(params.max_yaw, 0.999 * fitting_yaw(side, std::min(grid.dx, grid.dz) - gap));
+  const double radius = bounding_radius(square(side));  // the largest floe's
+  // the relaxation's first step: half the room a floe has in its cell (columns: a hundredth of a side)
+  double step = 0.01 * side;
   layout.floes.reserve(n);
-  for (long c : occupied) {
-    const long i = c / grid.nz, k = c % grid.nz;
-    const Eigen::Vector2d centre(ch.x_min + (static_cast<double>(i) + 0.5) * grid.dx,
-                                 ch.z_min + (static_cast<double>(k) + 0.5) * grid.dz);
-    layout.floes.push_back({centre, yaw0 * rng.symmetric(), shape});
+  if (params.size_spread == 0.0) {
+    // start: the most regular grid that holds n floes; cells need a small margin
+    // so floes in neighbouring cells keep the gap despite rounding
+    const double need = (side + gap) * (1.0 + 1e-9);
+    const Grid grid = choose_grid(n, lx, lz, need);
+    if (grid.nx == 0) {
+      const long max_n = static_cast<long>(std::floor(lx / need)) *
+                         static_cast<long>(std::floor(lz / need));
+      throw InputError(fmt::format(
+          "{}: ice.concentration = {} with {} needs {} floes, but at most {} fit "
+          "on a grid in the {} m x {} m channel with min gap {} m; expected ice.concentration <= "
+          "{:.4f} for this ice.floe_size (or smaller floes)",
+          ctx, params.concentration, size, n, max_n, lx, lz, gap,
+          static_cast<double>(max_n) * mean_area / layout.channel_area));
+    }
+
+    // leave the surplus cells empty, chosen at random (partial Fisher-Yates)
+    const long cells = static_cast<long>(grid.nx) * grid.nz;
+    std::vector<long> order(cells);
+    for (long c = 0; c < cells; ++c) order[c] = c;
+    for (long c = 0; c < cells - n; ++c) {
+      const long pick = c + static_cast<long>(rng.below(static_cast<uint64_t>(cells - c)));
+      std::swap(order[c], order[pick]);
+    }
+    std::vector<long> occupied(order.begin() + (cells - n), order.end());
+    std::sort(occupied.begin(), occupied.end());  // floes numbered along x, then z
+
+    // floes at the cell centres, with a random yaw small enough to stay in the cell
+    const double yaw0 =
+        std::min(params.max_yaw, 0.999 * fitting_yaw(side, std::min(grid.dx, grid.dz) - gap));
+    for (long c : occupied) {
+      const long i = c / grid.nz, k = c % grid.nz;
+      const Eigen::Vector2d centre(ch.x_min + (static_cast<double>(i) + 0.5) * grid.dx,
+                                   ch.z_min + (static_cast<double>(k) + 0.5) * grid.dz);
+      layout.floes.push_back({centre, yaw0 * rng.symmetric(), square(side)});
+    }
+    step = std::max(0.5 * (std::min(grid.dx, grid.dz) - side - gap), 0.01 * side);
+  } else {
+    // floes of many sizes do not fill a grid of cells for the largest: start from columns
+    // across the channel instead, the floes taken largest first (each column as wide as its
+    // first floe, filled down the channel's width while they fit), the columns then shuffled
+    // along the channel and the room left spread evenly. Within a column the sizes are alike;
+    // the relaxation then moves and turns every floe
+    std::vector<double> sorted = sides;
+    std::sort(sorted.begin(), sorted.end(), std::greater<>());
+    std::vector<std::vector<double>> columns;
+    double used_z = lz;  // of the last column
+    for (double a : sorted) {
+      if (columns.empty() || used_z + a + gap > lz) {
+        columns.push_back({});
+        used_z = 0.0;
+      }
+      columns.back().push_back(a);
+      used_z += a + gap;
+    }
+    double used_x = 0.0;
+    for (const auto& c : columns) used_x += c.front() + gap;
+    if (used_x > lx)
+      throw InputError(fmt::format(
+          "{}: ice.concentration = {} with {} needs {} floes, which fill {:.3g} m of columns across the "
+          "{} m x {} m channel with min gap {} m; expected a lower ice.concentration or a smaller spread",
+          ctx, params.concentration, size, n, used_x, lx, lz, gap));
+    for (std::size_t c = columns.size(); c > 1; --c) std::swap(columns[c - 1], columns[rng.below(c)]);
+    const double room_x = (lx - used_x) / static_cast<double>(columns.size());
+    double x = ch.x_min;
+    for (const auto& c : columns) {
+      const double width = c.front();
+      double z_used = 0.0;
+      for (double a : c) z_used += a + gap;
+      const double room_z = (lz - z_used) / static_cast<double>(c.size());
+      double z = ch.z_min;
+      for (double a : c) {
+        layout.floes.push_back({Eigen::Vector2d(x + 0.5 * (room_x + gap + width), z + 0.5 * (room_z + gap + a)), 0.0,
+                                square(a)});
+        z += a + gap + room_z;
+      }
+      x += width + gap + room_x;
+    }
+    // floes numbered along x, then z, as on the grid
+    std::sort(layout.floes.begin(), layout.floes.end(), [](const Floe& a, const Floe& b) {
+      return a.centre.x() < b.centre.x() || (a.centre.x() == b.centre.x() && a.centre.y() < b.centre.y());
+    });
   }
 
   // world outlines and the cell list for the relaxation
@@ -201,14 +279,13 @@ Layout generate_square_layout(const LayoutParams& params) {
   std::vector<int> cell_of(n);
   for (long i = 0; i < n; ++i) {
     const Floe& f = layout.floes[i];
-    world[i] = transformed(shape, f.centre, f.yaw);
+    world[i] = transformed(f.shape, f.centre, f.yaw);
     cell_of[i] = cell_list.cell_of(f.centre);
     cell_list.insert(static_cast<int>(i), cell_of[i]);
   }
 
   // Monte-Carlo relaxation of hard polygons: a move is accepted only if the
   // floe stays inside, within the yaw limit and clear of all neighbours
-  double step = std::max(0.5 * (std::min(grid.dx, grid.dz) - side - gap), 0.01 * side);
   const double min_step = 1e-6 * side, max_step = side;
   long accepted_total = 0, tried_total = 0;
   for (int sweep = 0; sweep < params.sweeps; ++sweep) {
@@ -223,7 +300,7 @@ Layout generate_square_layout(const LayoutParams& params) {
       const Eigen::Vector2d centre = f.centre + step * Eigen::Vector2d(ux, uz);
       const double yaw = f.yaw + yaw_step * uyaw;
       if (std::abs(yaw) > params.max_yaw) continue;
-      Polygon trial = transformed(shape, centre, yaw);
+      Polygon trial = transformed(f.shape, centre, yaw);
       if (!inside(trial, ch, 0.0)) continue;
       const double reach = 2.0 * radius + gap;
       const bool blocked = cell_list.any_near(centre, [&](int j) {

@@ -3,7 +3,8 @@
 // a file of convex polygons (CSV or JSON).
 //
 // Generation (generate_square_layout): N = round(C A / L^2) squares of side L
-// start on the most regular grid that holds N of them (cell aspect closest to 1,
+// (with a size spread s > 0: sides drawn uniformly from L (1 +- s), as many as
+// bring the floes' area nearest C A) start on the most regular grid that holds N of them (cell aspect closest to 1,
 // surplus cells left empty at random) and are then relaxed by a seeded
 // Monte-Carlo "hard polygon" procedure: in each sweep every floe in turn tries a
 // random translation plus a random yaw change, accepted only if the floe stays
@@ -71,6 +72,7 @@ struct LayoutParams {
   double max_yaw = 0.2617993877991494;   // rad, largest |yaw| of a floe (15 degrees)
   int sweeps = 30;                       // Monte-Carlo passes over all floes (0 = grid only)
   double min_gap = 0.002;                // m, minimum clearance between floes
+  double size_spread = 0.0;              // -, sides uniform in floe_size (1 +- size_spread); 0: all alike
   std::function<void(double)> on_sweep;  // told the share of the sweeps done, before each (optional)
 };
 

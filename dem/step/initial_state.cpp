@@ -38,6 +38,7 @@ Layout generated_layout(const Scene& scene, const std::function<void(double)>& o
   LayoutParams p;
   p.channel = scene_channel(scene);
   p.floe_size = scene.ice.floe_size;
+  p.size_spread = scene.layout.size_spread;
   p.concentration = scene.ice.concentration;
   p.seed = scene.seed;
   p.max_yaw = scene.layout.max_yaw;

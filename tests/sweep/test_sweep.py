@@ -480,7 +480,9 @@ class Execution(unittest.TestCase):
         expected = float(rows[("large_rigid", "0.2")]["mean_fx_N"]) / float(rows[("small_rigid", "0.2")]["mean_fx_N"])
         self.assertEqual(ratio.split("|")[3].strip(), f"{expected:.2f}")
         # every row judged "no" is listed again under the disagreements, with its numbers
-        table = [l for l in text.splitlines() if l.startswith("| ") and l.endswith("| **no** |")]
+        # (each such row links to that section)
+        table = [l for l in text.splitlines()
+                 if l.startswith("| ") and l.endswith("| **no** ([why](#where-icedem-disagrees-with-the-paper)) |")]
         section = text.split("## Where icedem disagrees with the paper")[1].split("## Every configuration")[0]
         # the short tow's larger floes stay far below the paper's 300 N: judged "no" and listed
         self.assertLess(float(rows[("large_rigid", "0.2")]["max_fx_N"]), 300)

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -179,6 +180,37 @@ TEST(SquareLayout, ZeroSweepsGivesTheValidStartingGrid) {
   EXPECT_EQ(first_overlap(layout.floes, p.min_gap), "");
   EXPECT_EQ(first_outside(layout.floes, kChannel), -1);
   EXPECT_EQ(layout.acceptance_rate, 0.0);
+}
+
+TEST(SquareLayout, ASizeSpreadDrawsSidesUniformlyAndFillsTheConcentration) {
+  // the paper's 0.6 m floes at 75 %, sides uniform in 0.6 (1 +- 0.5) m: 0.3 to 0.9 m
+  LayoutParams p = params(0.6, 0.75, 3);
+  p.size_spread = 0.5;
+  const Layout layout = generate_square_layout(p);
+  std::vector<double> sides;
+  for (const auto& f : layout.floes) {
+    ASSERT_EQ(f.shape.size(), 4u);
+    sides.push_back(std::sqrt(area(f.shape)));
+    EXPECT_NEAR(centroid(f.shape).norm(), 0.0, 1e-14);
+  }
+  const auto [lo, hi] = std::minmax_element(sides.begin(), sides.end());
+  EXPECT_GE(*lo, 0.3 - 1e-12);
+  EXPECT_LE(*hi, 0.9 + 1e-12);
+  double mean = 0, var = 0;
+  for (double x : sides) mean += x / sides.size();
+  for (double x : sides) var += (x - mean) * (x - mean) / (sides.size() - 1);
+  // n of about 240: the mean within 3 standard errors (0.6 / sqrt(3) * 0.5 / sqrt(n) = 0.011 m);
+  // the standard deviation of a uniform, 0.5 * 0.6 / sqrt(3) = 0.173 m, within 15 %
+  EXPECT_NEAR(mean, 0.6, 0.035) << sides.size() << " floes";
+  EXPECT_NEAR(std::sqrt(var), 0.5 * 0.6 / std::sqrt(3.0), 0.15 * 0.173);
+  // the floes' area is the target's within half the largest floe's
+  EXPECT_NEAR(layout.achieved_concentration * layout.channel_area, 0.75 * layout.channel_area, 0.5 * 0.81);
+  EXPECT_EQ(first_overlap(layout.floes, p.min_gap), "");
+  EXPECT_EQ(first_outside(layout.floes, kChannel), -1);
+  // the same seed, the same field
+  const Layout again = generate_square_layout(p);
+  ASSERT_EQ(again.floes.size(), layout.floes.size());
+  for (size_t i = 0; i < layout.floes.size(); ++i) EXPECT_EQ(again.floes[i].centre, layout.floes[i].centre);
 }
 
 TEST(SquareLayout, OpenWaterHasNoFloes) {

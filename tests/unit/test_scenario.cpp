@@ -216,6 +216,20 @@ TEST(Scenario, StaticFrictionIsNoneOrAtLeastTheKinetic) {
   EXPECT_DOUBLE_EQ(s.friction.stick_speed, 1e-3);
 }
 
+TEST(Scenario, ASizeSpreadIsForGeneratedRigidFloes) {
+  // a lattice needs whole elements across; a layout file gives each floe's own size
+  std::string msg = error_of("[layout]\nsize_spread = 0.3\n[fracture]\nmode = \"on\"\n");
+  EXPECT_NE(msg.find(":2: layout.size_spread"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("rigid floes"), std::string::npos) << msg;
+  // "auto" with floes that reach the characteristic length (0.6 m floes: l_c is about 0.5 m)
+  msg = error_of("[ice]\nfloe_size = 0.6\n[layout]\nsize_spread = 0.3\n[fracture]\nmode = \"auto\"\n");
+  EXPECT_NE(msg.find("layout.size_spread"), std::string::npos) << msg;
+  msg = error_of("[layout]\nsize_spread = 0.3\nfile = \"scenarios/examples/floes_small.csv\"\n");
+  EXPECT_NE(msg.find("layout.size_spread"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("layout.file"), std::string::npos) << msg;
+  EXPECT_DOUBLE_EQ(scene_from("[layout]\nsize_spread = 0.3\n").layout.size_spread, 0.3);
+}
+
 // Malformed input found by fuzzing: refused with a message, never a crash or a hang.
 
 TEST(ScenarioLimits, DeeplyNestedKeysHeadersAndArraysAreRefusedBeforeParsing) {

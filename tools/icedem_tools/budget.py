@@ -12,7 +12,8 @@ sweep runs and on a machine that has only the records.
 Per variant, over its finished seeds: the mean surge load over the analysis window, its 99th
 percentile and the mean of the runs' maxima (each with the half-width of its 95 % interval), and
 the runs whose maximum reaches the tank's largest load ([study.tank_max_N], per scenario: the tank's
-single largest load of a run), with the Clopper-Pearson 95 % interval of that share. Against the default: each
+single largest load of a run), with the Clopper-Pearson 95 % interval of that share. Against the default
+(or the variant [study.paired_with] names for it, such as a factor's own run at half the step): each
 number's change, paired seed by seed (the same seed is the same layout), with its 95 % interval and
 the project's verdict (aggregate.judge: "within" the bound, "beyond" it, "moves", "unresolved";
 bounds 5 % for the mean, 10 % for p99 and the maxima), and Fisher's exact test of the share reaching
@@ -83,16 +84,23 @@ def tables(name, runs, found, tanks):
             if e is None:
                 rows.append((0.0, f"| {n} | 0 | no finished run yet |||||||||"))
                 continue
-            changes, _, _, _ = agg.judge(e, base, TOLERANCE)
+            # a variant is paired with the default, or with the variant [study.paired_with] names (a
+            # check of that variant's convergence: the same factor at half the step)
+            against = study.get("paired_with", {}).get(n, study["baseline"])
+            ref = ens.get(against)
             k = int(round(e["runs"]["reach"].sum()))
-            p = stats.fisher_exact([[k, e["n"] - k], [k0, base["n"] - k0]])[1] if n != study["baseline"] else 1.0
-            if n == study["baseline"]:
-                changes = {}
-            cells = [n, str(e["n"]), with_interval(*e["mean"]), change_cell(changes, "mean"),
+            if n == study["baseline"] or ref is None:
+                changes, p = {}, None
+            else:
+                changes, _, _, _ = agg.judge(e, ref, TOLERANCE)
+                k_ref = int(round(ref["runs"]["reach"].sum()))
+                p = stats.fisher_exact([[k, e["n"] - k], [k_ref, ref["n"] - k_ref]])[1]
+            label = n if against == study["baseline"] else f"{n} (against {against})"
+            cells = [label, str(e["n"]), with_interval(*e["mean"]), change_cell(changes, "mean"),
                      with_interval(*e["p99"]), change_cell(changes, "p99"),
                      with_interval(*e["max"]), change_cell(changes, "max"),
                      agg.share_text(k, e["n"]),
-                     "" if n == study["baseline"] else f"{p:.2f}", f"{e['cpu']:.0f}"]
+                     "" if p is None else f"{p:.2f}", f"{e['cpu']:.0f}"]
             rank = abs(changes["max"][0]) if "max" in changes and n != study["baseline"] else float("inf")
             rows.append((rank, "| " + " | ".join(cells) + " |"))
         lines += [f"{base['n']} seeds of the default: mean {base['mean'][0]:.1f} N, mean of maxima "

@@ -49,8 +49,13 @@ TANK = {
 REFERENCE = [(0.5, 0.2), (0.5, 0.3)]  # the paper's reference friction, and its neighbour pooled
 CUTOFFS_HZ = [10.0, 5.0]  # the filters tried (0: the record as it is, band-limited at 25 Hz)
 # the budget's variants whose runs are filtered: the reference friction (default and f_is 0.3,
-# pooled as above) and added mass
-FILTERED_VARIANTS = {"default": "reference", "f_is_0.3": "reference", "added_mass": "added mass"}
+# pooled as above) and added mass; and, for whether a filtered maximum is converged, the default and
+# added mass at half the step and with the solve tightened tenfold (the 0.6 m rigid floes)
+FILTERED_VARIANTS = {"default": "reference", "f_is_0.3": "reference", "added_mass": "added mass",
+                     "dt_half": "f_is 0.2, dt/2", "solve_tenfold": "f_is 0.2, solve tenfold",
+                     "added_mass_dt_half": "added mass, dt/2", "added_mass_solve_tenfold": "added mass, solve tenfold"}
+GROUPS = ["reference", "added mass", "f_is 0.2, dt/2", "f_is 0.2, solve tenfold", "added mass, dt/2",
+          "added mass, solve tenfold"]
 FILTERED_RECORDS = os.path.join(ROOT, "docs", "model", "tank_maxima_records", "filtered_maxima.json")
 
 
@@ -112,16 +117,19 @@ def filtered_table(filtered):
              "theirs, which the paper does not give. The runs' maxima after the filter `stats.lowpass_hz` applies "
              "(2nd-order Butterworth, zero phase) at 10 and 5 Hz, on the load budget's runs "
              "(docs/model/load_budget.md), which keep their series: at the reference friction (f_ii 0.5, f_is "
-             "0.2 and 0.3 pooled, as above) and with the water's added mass (`water.added_mass`, f_is 0.2). The "
-             "record is the load over each 0.02 s step, so nothing above its 25 Hz Nyquist frequency is in it: "
-             "the unfiltered maximum stands for 25 Hz.", "",
+             "0.2 and 0.3 pooled, as above) and with the water's added mass (`water.added_mass`, f_is 0.2); for "
+             "the 0.6 m rigid floes also at f_is 0.2 with the step halved (2 substeps) and the solve tightened "
+             "tenfold, with and without added mass: the rows to read a maximum's convergence from (the reference "
+             "rows pool two frictions; compare those with the added-mass rows and with each other). The record "
+             "is the load over each 0.02 s step (0.01 s at dt/2), so nothing above its 25 Hz Nyquist frequency is "
+             "in it: the unfiltered maximum stands for 25 Hz.", "",
              "| model | runs | filter | maxima: mean, largest N | runs reaching the tank (95 %) |", "|---|---|---|---|---|"]
     for model in TANK:
         groups = {}
         for variant, seeds in filtered.get(model, {}).items():
             groups.setdefault(FILTERED_VARIANTS[variant], []).extend(seeds.values())
         tank, _ = TANK[model]
-        for group in ("reference", "added mass"):
+        for group in GROUPS:
             runs = groups.get(group, [])
             if not runs:
                 continue
