@@ -5,7 +5,8 @@ machine: scripts/tank_maxima (docs/paper_reproduction/records) and scripts/budge
 the paper grid's rigid 0.6 m floes at f_ii 0.5, f_is 0.2 and 0.3 pooled, reach the tank's 150 N in 5
 of 20 runs; the budget's default in 1 of 10 and with added mass in 10 of 10. The filtered maxima
 (scripts/tank_maxima --filter-runs) filter a run's load as icedem's own stats.lowpass_hz does: the
-short tow's maximum after the 5 Hz filter is the one icedem reports with that key, to round-off.
+short tow's maximum after the 5 Hz filter is the one icedem reports with that key, to round-off, and
+so is the one a sweep's record keeps (aggregate.make_record) for the budget's "max at 5 Hz".
 
 Usage: test_load_tools.py SOURCE_DIR WORK_DIR ICEDEM
 """
@@ -46,7 +47,7 @@ rigid = text[text.find("### large_rigid"):]
 rigid = rigid[:rigid.find("\n### ", 1)] if "\n### " in rigid[1:] else rigid  # its own section only
 rows = {line.split("|")[1].strip(): line for line in rigid.splitlines() if line.startswith("|")}
 check(p.returncode == 0 and "| 1/10 (0-45 %) |" in rows.get("default", "")
-      and "| 10/10 (69-100 %) |" in rows.get("added mass", ""),
+      and "| 10/10 (69-100 %) |" in rows.get("added mass", "") and "| max at 5 Hz N |" in rigid,
       f"budget from its records alone: the default 1 of 10 runs at the tank's value, added mass 10 of 10 "
       f"(exit {p.returncode}) {p.stderr[-200:]}")
 
@@ -67,6 +68,11 @@ ours = tank_maxima.filtered_maxima(os.path.join(run_dir, "run.h5"), plain)
 # 1e-9: the same filter, the same padding, the same window; only the order of round-off differs
 check(abs(ours["5"] - by_icedem) <= 1e-9 * abs(by_icedem) and ours["0"] == plain["max_fx_N"],
       f"the 5 Hz maximum is icedem's: {ours['5']!r} N against {by_icedem!r} N (unfiltered {ours['0']} N)")
+# a sweep's record keeps the same filtered maximum (what scripts/budget's "max at 5 Hz" column reads)
+from icedem_tools import aggregate  # noqa: E402
+kept = aggregate.make_record(run_dir)["window"]["max_lowpass_fx_N"]
+check(abs(kept["5"] - by_icedem) <= 1e-9 * abs(by_icedem),
+      f"the record's 5 Hz maximum is icedem's: {kept['5']!r} N against {by_icedem!r} N")
 records = os.path.join(work, "filtered.json")
 page = os.path.join(work, "tank_maxima_filtered.md")
 p = subprocess.run([os.path.join(src, "scripts", "tank_maxima"), "--filter-runs", os.path.join(work, "sweep"),

@@ -251,6 +251,24 @@ def break_names(summaries, key):
     return sorted({mode_key(k) for x in summaries for k in (x.get(key) or {})})
 
 
+# the low-pass cut-offs a record keeps its window's maximum at (a load cell and carriage have a
+# bandwidth the runs' record has not: docs/model/tank_maxima.md)
+LOWPASS_HZ = [10.0, 5.0]
+
+
+def lowpass(x, dt, cutoff_hz):
+    """The load filtered as icedem's stats.lowpass_hz filters it (dem/output/statistics.cpp): a 2nd-order
+    Butterworth (scipy.signal.butter's design), run forward then backward from rest over the record padded
+    at both ends by odd reflection over about 3/fc."""
+    n = len(x)
+    b, a = signal.butter(2, cutoff_hz / (0.5 / dt))
+    pad = min(n - 1, int(max(9.0, math.ceil(3.0 / (cutoff_hz * dt)))))
+    ext = np.concatenate([2 * x[0] - x[pad:0:-1], x, 2 * x[-1] - x[-2:-pad - 2:-1]])
+    y = signal.lfilter(b, a, ext)
+    y = signal.lfilter(b, a, y[::-1])[::-1]
+    return y[pad:pad + n]
+
+
 def make_record(run_dir):
     """The record of a finished run, from its directory: its summary, the Welch spectrum of its
     surge load over the analysis window (up to RECORD_MAX_HZ) and its breaks (every field of
@@ -267,6 +285,9 @@ def make_record(run_dir):
         freq, power = f[keep].tolist(), [float(f"{v:.6g}") for v in p[keep]]
         if sel.any():  # the load a run exceeds 1 % of its window, less driven by one event than the max
             window["p99_fx_N"] = float(np.quantile(x[sel], 0.99))
+            # the window's maximum after each low-pass filter, the whole record filtered first
+            dt = (t[-1] - t[0]) / (len(t) - 1)
+            window["max_lowpass_fx_N"] = {f"{fc:g}": float(lowpass(x, dt, fc)[sel].max()) for fc in LOWPASS_HZ}
     ev = run.events
     fields = [k for k in (ev.dtype.names or ()) if k not in ("mode_name", "mechanism_name")]
     for row in ev:
@@ -281,8 +302,8 @@ def make_record(run_dir):
 
 def load_record(run, out):
     """The record of a finished run: the kept file when the sweep keeps records and it is at
-    least as new as the run's summary (and has the window's quantiles, kept since 2026-11-26);
-    else made from the run's directory (reading its HDF5 file) and kept."""
+    least as new as the run's summary (and has the window's quantiles and filtered maxima, kept since
+    2026-11-26); else made from the run's directory (reading its HDF5 file) and kept."""
     from . import execute
     run_dir = os.path.join(out, run.path)
     summary = os.path.join(run_dir, RUN_FILES["summary"])
@@ -292,7 +313,7 @@ def load_record(run, out):
         with open(run.record_file) as f:
             kept = json.load(f)
     finished_here = execute.finished_here(run, out)
-    if finished_here and (kept is None or "window" not in kept):
+    if finished_here and (kept is None or "max_lowpass_fx_N" not in kept.get("window", {})):
         record = make_record(run_dir)
         if run.record_file:
             os.makedirs(os.path.dirname(run.record_file), exist_ok=True)

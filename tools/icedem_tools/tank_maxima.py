@@ -47,7 +47,7 @@ TANK = {
     "large_breakable_020": (150.0, "the tank's 0.6 m floes (the paper's Fig. 12)"),
 }
 REFERENCE = [(0.5, 0.2), (0.5, 0.3)]  # the paper's reference friction, and its neighbour pooled
-CUTOFFS_HZ = [10.0, 5.0]  # the filters tried (0: the record as it is, band-limited at 25 Hz)
+CUTOFFS_HZ = agg.LOWPASS_HZ  # the filters tried (0: the record as it is, band-limited at 25 Hz)
 # the budget's variants whose runs are filtered: the reference friction (default and f_is 0.3,
 # pooled as above) and added mass; and, for whether a filtered maximum is converged, the default and
 # added mass at half the step and with the solve tightened tenfold (the 0.6 m rigid floes)
@@ -57,20 +57,6 @@ FILTERED_VARIANTS = {"default": "reference", "f_is_0.3": "reference", "added_mas
 GROUPS = ["reference", "added mass", "f_is 0.2, dt/2", "f_is 0.2, solve tenfold", "added mass, dt/2",
           "added mass, solve tenfold"]
 FILTERED_RECORDS = os.path.join(ROOT, "docs", "model", "tank_maxima_records", "filtered_maxima.json")
-
-
-def lowpass(x, dt, cutoff_hz):
-    """The load filtered as icedem's stats.lowpass_hz filters it (dem/output/statistics.cpp): a 2nd-order
-    Butterworth (scipy.signal.butter's design), run forward then backward from rest over the record padded
-    at both ends by odd reflection over about 3/fc."""
-    from scipy import signal
-    n = len(x)
-    b, a = signal.butter(2, cutoff_hz / (0.5 / dt))
-    pad = min(n - 1, int(max(9.0, math.ceil(3.0 / (cutoff_hz * dt)))))
-    ext = np.concatenate([2 * x[0] - x[pad:0:-1], x, 2 * x[-1] - x[-2:-pad - 2:-1]])
-    y = signal.lfilter(b, a, ext)
-    y = signal.lfilter(b, a, y[::-1])[::-1]
-    return y[pad:pad + n]
 
 
 def filtered_maxima(run_h5, summary):
@@ -84,7 +70,7 @@ def filtered_maxima(run_h5, summary):
     inside = (t >= summary["window_start_s"] - slack) & (t <= summary["window_end_s"] + slack)
     out = {"0": float(x[inside].max())}
     for fc in CUTOFFS_HZ:
-        out[f"{fc:g}"] = float(lowpass(x, dt, fc)[inside].max())
+        out[f"{fc:g}"] = float(agg.lowpass(x, dt, fc)[inside].max())
     return out
 
 
