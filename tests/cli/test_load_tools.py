@@ -47,7 +47,8 @@ rigid = text[text.find("### large_rigid"):]
 rigid = rigid[:rigid.find("\n### ", 1)] if "\n### " in rigid[1:] else rigid  # its own section only
 rows = {line.split("|")[1].strip(): line for line in rigid.splitlines() if line.startswith("|")}
 check(p.returncode == 0 and "| 1/10 (0-45 %) |" in rows.get("default", "")
-      and "| 10/10 (69-100 %) |" in rows.get("added mass", "") and "| max at 5 Hz N |" in rigid,
+      and "| 10/10 (69-100 %) |" in rows.get("added mass", "") and "| max at 5 Hz N |" in rigid
+      and os.path.getsize(os.path.join(work, "load_budget.png")) > 0,
       f"budget from its records alone: the default 1 of 10 runs at the tank's value, added mass 10 of 10 "
       f"(exit {p.returncode}) {p.stderr[-200:]}")
 

@@ -29,6 +29,7 @@ import os
 import sys
 import tomllib
 
+import numpy as np
 from scipy import stats
 
 from . import aggregate as agg, execute, output_guard, spec
@@ -36,6 +37,7 @@ from .spec import ROOT
 
 STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "load_budget.toml")
 TOLERANCE = {"mean": 0.05, "p99": 0.10, "max": 0.10, "max5": 0.10}
+XMAX = 300  # %, the figure's scale; larger changes are named at its edge
 BEGIN, END = "<!-- budget tables: scripts/budget writes below -->", "<!-- end of the budget tables -->"
 
 
@@ -65,8 +67,9 @@ def change_cell(changes, key):
 
 
 def tables(name, runs, found, tanks):
-    """The budget's tables, one per scenario, as Markdown lines."""
-    lines = []
+    """The budget's tables, one per scenario, as Markdown lines, and what the figure draws:
+    {scenario: [(variant label, change of the maxima, of the 5 Hz maxima: (change, half-width) or None)]}."""
+    lines, ranked = [], {}
     seeds = sorted({r.seed for r in runs})
     study = tomllib.load(open(STUDY_FILE, "rb"))["study"]
     for m in dict.fromkeys(r.scenario for r in runs):
@@ -107,19 +110,58 @@ def tables(name, runs, found, tanks):
                      "" if p is None else f"{p:.2f}", f"{e['cpu']:.0f}"]
             rank = abs(changes["max"][0]) if "max" in changes and n != study["baseline"] else float("inf")
             rows.append((rank, "| " + " | ".join(cells) + " |"))
+            if "max" in changes:
+                ranked.setdefault(m, []).append((label, changes["max"][:2], changes["max5"][:2] if "max5" in changes else None))
         lines += [f"{base['n']} seeds of the default: mean {base['mean'][0]:.1f} N, mean of maxima "
                   f"{base['max'][0]:.1f} N; {k0} of {base['n']} runs reach the tank's {tank:.0f} N.", "",
                   "| variant | seeds | mean N | change | p99 N | change | max N | change | max at 5 Hz N | change | "
                   "runs reaching the tank (95 %) | Fisher p | CPU s/run |",
                   "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         lines += [row for _, row in sorted(rows, key=lambda x: -x[0])] + [""]
-    return lines
+    return lines, ranked
+
+
+def figure(ranked, path):
+    """Per scenario, each variant's change of the mean of the runs' maxima against the default (or the
+    variant it is paired with), unfiltered and after the 5 Hz low-pass, with their 95 % intervals,
+    ranked by the unfiltered change; the band is the bound a change is judged "within"."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt  # noqa: E402
+    models = [m for m in ranked if ranked[m]]
+    heights = [0.8 + 0.28 * len(ranked[m]) for m in models]
+    fig, axes = plt.subplots(len(models), 1, figsize=(8.5, sum(heights) + 0.4), squeeze=False,
+                             gridspec_kw={"height_ratios": heights})
+    for ax, m in zip(axes[:, 0], models):
+        rows = sorted(ranked[m], key=lambda r: r[1][0])
+        y = np.arange(len(rows))
+        def bars(values, offset, colour, label):
+            d = np.array([100 * v[0] if v else np.nan for v in values])
+            hw = np.array([100 * v[1] if v and v[1] == v[1] else 0.0 for v in values])
+            ax.errorbar(d, y + offset, xerr=hw, fmt="o", ms=3.5, color=colour, lw=1, capsize=2, label=label)
+            for k in np.flatnonzero(d > XMAX):  # off the scale: named at its edge
+                ax.annotate(f"{d[k]:+.0f} % →", (XMAX, y[k] + offset), fontsize=6, color=colour, ha="right",
+                            va="center")
+        bars([r[1] for r in rows], 0.12, "C0", "mean of the runs' maxima")
+        bars([r[2] for r in rows], -0.12, "C1", "the same after a 5 Hz low-pass")
+        ax.axvspan(-100 * TOLERANCE["max"], 100 * TOLERANCE["max"], color="0.9", zorder=0)
+        ax.axvline(0, color="0.5", lw=0.8)
+        ax.set_yticks(y)
+        ax.set_yticklabels([r[0] for r in rows], fontsize=7)
+        ax.set_title(m, fontsize=9)
+        ax.set_xlabel("change against the default, % (95 % interval over the seeds)", fontsize=8)
+        ax.set_xlim(-100, XMAX)
+        ax.tick_params(axis="x", labelsize=7)
+    axes[0, 0].legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    output_guard.save_figure(fig, path, dpi=100)
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", help="the sweep's run directory (default: sweeps/load_budget)")
     ap.add_argument("--report", help="the Markdown page (default: docs/model/load_budget.md)")
+    ap.add_argument("--figure", help="the ranked changes (default: beside the report, load_budget.png)")
     a = ap.parse_args(argv)
     try:
         name, runs = spec.load(STUDY_FILE)
@@ -128,7 +170,9 @@ def main(argv=None):
     study = tomllib.load(open(STUDY_FILE, "rb"))["study"]
     out = a.out or os.path.join(ROOT, "sweeps", name)
     path = a.report or os.path.join(ROOT, "docs", "model", "load_budget.md")
-    output_guard.guard([("--report", path, output_guard.FILE)], [STUDY_FILE])
+    figure_path = a.figure or os.path.splitext(path)[0] + ".png"
+    output_guard.guard([("--report", path, output_guard.FILE), ("--figure", figure_path, output_guard.FILE)],
+                       [STUDY_FILE])
     # each run's record (made from its directory, or the kept one), its summary with its seed: the
     # changes are paired seed by seed (aggregate.judge)
     found = {}
@@ -143,7 +187,10 @@ def main(argv=None):
              "± is the half-width of the 95 % interval over the seeds; a change is paired seed by seed with the "
              "default's run of the same layout, judged within 5 % (mean) and 10 % (p99, maxima). \"max at 5 Hz\" is "
              "the mean of the runs' maxima after the 5 Hz low-pass `stats.lowpass_hz` applies.", ""]
-    lines += tables(name, runs, found, study["tank_max_N"]) + [END]  # per scenario
+    table_lines, ranked = tables(name, runs, found, study["tank_max_N"])  # per scenario
+    figure(ranked, figure_path)
+    lines += [f"![each variant's change of the maxima, ranked]({os.path.basename(figure_path)})", ""]
+    lines += table_lines + [END]
     text = "\n".join(lines)
     print(text)
     page = open(path).read() if os.path.isfile(path) else ""
