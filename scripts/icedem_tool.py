@@ -34,6 +34,7 @@ COMMANDS = {
     "compare_flow_models.py": ("compare_flow_models",
                                "the flow models compared on one scenario: still water, analytic and OpenFOAM"),
     "xdmf_snapshots.py": ("xdmf", "a run's snapshots as an XDMF view for ParaView"),
+    "movie": ("movie", "a movie of a run: the floes from above and the side, the cracks, the load beside them"),
 }
 
 

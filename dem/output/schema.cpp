@@ -201,7 +201,9 @@ std::string output_markdown() {
       "written in the HDF5 1.8 format and flushed every few seconds of wall time, so it stays\n"
       "readable after a crash or a kill. `scripts/xdmf_snapshots.py OUT.h5` makes a view of the\n"
       "snapshots for ParaView, with the joints' faces, broken or not, beside the floes\n"
-      "(docs/user/sweeps.md).\n\n"
+      "(docs/user/sweeps.md); `scripts/movie OUT.h5` makes a movie of them without ParaView (an\n"
+      "animated GIF, or an MP4 with `-o NAME.mp4` where ffmpeg is installed): the floes from above and\n"
+      "from the side around the structure, the broken joints in red, the surge load beside them.\n\n"
       "### Per-step series\n\n"
       "| path | shape | type | unit | meaning |\n|---|---|---|---|---|\n";
   for (const SeriesColumn& c : series_columns())

@@ -137,6 +137,32 @@ def _replace(path, write):
         raise WriteFailed(f"cannot write {path}: {e.strerror or e}") from e
 
 
+def write_with(path, write_to):
+    """`write_to(name)` writes the whole file itself (a writer that takes a file name, such as a
+    movie's): it writes a temporary file beside `path`, with the same extension, renamed over
+    `path` once whole; raise WriteFailed (exit 5) and leave an earlier file as it was."""
+    directory = os.path.dirname(os.path.abspath(path))
+    try:
+        os.makedirs(directory, exist_ok=True)
+    except OSError as e:
+        raise WriteFailed(f"cannot make {directory}: {e.strerror or e}") from e
+    fd, tmp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".",
+                               suffix=".tmp" + os.path.splitext(path)[1], dir=directory)
+    os.close(fd)
+    try:
+        umask = os.umask(0)
+        os.umask(umask)
+        mode = os.stat(path).st_mode & 0o777 if os.path.isfile(path) else 0o666 & ~umask
+        write_to(tmp)
+        os.chmod(tmp, mode)
+        os.replace(tmp, path)
+    except OSError as e:
+        raise WriteFailed(f"cannot write {path}: {e.strerror or e}") from e
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
+
 def write_text(path, text):
     """Write `text` to `path` whole, or raise WriteFailed (exit 5) and leave an earlier file as it was."""
     _replace(path, lambda f: f.write(text.encode("utf-8")))
