@@ -130,6 +130,10 @@ def draw(run, frames, path, fps, span):
     r0 = radius_at(profile, 0.0)
     circle = np.column_stack([r0 * np.cos(np.linspace(0, 2 * np.pi, 64)), r0 * np.sin(np.linspace(0, 2 * np.pi, 64))])
     joints = run["joints"]
+    # across the channel: the floes' extent at the first frame, and the structure's
+    first_top, _, _ = body_shapes(run, frames[0])
+    z_all = np.concatenate([o[:, 1] for o in first_top] + [[-r0, r0]])
+    z_lim = (z_all.min() - 0.1, z_all.max() + 0.1)
 
     def frame(i):
         k = frames[i]
@@ -160,7 +164,8 @@ def draw(run, frames, path, fps, span):
         side_ax.fill(hull_side[:, 0] + s[0], hull_side[:, 1], color="0.4", alpha=0.45, zorder=3)
         side_ax.axhline(0.0, color="C0", lw=0.8, zorder=0)
         top_ax.set_xlim(s[0] - span, s[0] + span)
-        top_ax.set_aspect("equal", adjustable="datalim")
+        top_ax.set_ylim(*z_lim)
+        top_ax.set_aspect("equal", adjustable="box")
         top_ax.set_title(f"t = {t:.1f} s, from above", fontsize=9)
         top_ax.set_ylabel("z, m")
         side_ax.set_xlim(s[0] - span, s[0] + span)
