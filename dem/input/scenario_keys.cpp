@@ -227,6 +227,11 @@ std::vector<KeySpec> make_keys() {
                       "give each floe the water's added mass in heave, roll and pitch: a disc of equal area, "
                       "impulsive limit (dem/water/added_mass.hpp; a 0.6 m floe's heave added mass is 4.7 times "
                       "its mass)"));
+  k.push_back(choice("water.buoyancy", "exact", {"exact", "linear"},
+                     "exact: Archimedes on the clipped body (the reaction stops growing once the ice is "
+                     "under); linear: an ablation, the water under the ice pushing up in proportion to its "
+                     "depth however deep, as a floating beam's Winkler foundation assumes (the water on top "
+                     "of a submerged face presses on nothing)"));
 
   // flow
   k.push_back(choice("flow.model", "potential", {"still", "uniform", "potential", "coupled"},

@@ -126,6 +126,7 @@ struct WaterSettings {
   double heave_damping_ratio;        // -
   double roll_pitch_damping_ratio;   // -
   bool added_mass;                   // the water's added mass in heave, roll and pitch (dem/water/added_mass.hpp)
+  bool linear_buoyancy;              // water.buoyancy = "linear": an ablation (dem/water/water_forces.hpp)
 };
 
 enum class FlowModel { kStill, kUniform, kPotential, kCoupled };

@@ -190,6 +190,7 @@ Scene make_scene(const Scenario& sc) {
   s.water.skin_friction_coefficient = real(sc, "water.skin_friction_coefficient");
   s.water.heave_damping_ratio = real(sc, "water.heave_damping_ratio");
   s.water.added_mass = get<bool>(sc, "water.added_mass");
+  s.water.linear_buoyancy = choice<bool>(sc, "water.buoyancy", {{"exact", false}, {"linear", true}});
   s.water.roll_pitch_damping_ratio = real(sc, "water.roll_pitch_damping_ratio");
   if (s.ice.density >= s.water.density)
     fail_key(sc, "ice.density", fmt::format("ice must be lighter than water (water.density = {} kg/m^3)",

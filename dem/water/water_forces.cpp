@@ -9,7 +9,7 @@ namespace icedem {
 
 WaterParams water_params(const WaterSettings& w) {
   return WaterParams{w.density, w.gravity, w.drag_coefficient, w.skin_friction_coefficient,
-                     w.heave_damping_ratio, w.roll_pitch_damping_ratio};
+                     w.heave_damping_ratio, w.roll_pitch_damping_ratio, w.linear_buoyancy};
 }
 
 DampingCoefficients damping_coefficients(const ConvexPolyhedron& body, double mass,
@@ -45,6 +45,14 @@ Wrench water_wrench(const ConvexPolyhedron& body, const BodyMotion& motion, cons
   const Eigen::Vector3d buoyancy(0.0, p.water_density * p.gravity * sub.volume, 0.0);
   w.force += buoyancy;
   w.torque += (sub.centroid - com).cross(buoyancy);
+  if (p.linear_buoyancy)  // the ablation: the column above each upward-facing wetted face pushes up too
+    for (const WettedFace& face : sub.faces)
+      if (face.normal.y() > 0.0 && face.centroid.y() < 0.0) {
+        const Eigen::Vector3d up(0.0, p.water_density * p.gravity * (-face.centroid.y()) * face.area * face.normal.y(),
+                                 0.0);
+        w.force += up;
+        w.torque += (face.centroid - com).cross(up);
+      }
 
   // form drag and skin friction per wetted face, lumped at its centroid
   const double half_rho = 0.5 * p.water_density;

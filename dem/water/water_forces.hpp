@@ -42,6 +42,12 @@ struct WaterParams {
   double heave_damping_ratio = 0.5;
   // -, fraction of critical damping in roll and pitch; same argument and assumption as heave
   double roll_pitch_damping_ratio = 0.5;
+  // water.buoyancy = "linear", an ablation, not water: every upward-facing wetted face also
+  // carries the water column above it, rho g (depth at its centroid) (its horizontal
+  // projection), at its centroid. The support then grows with depth past full submergence, as
+  // the Winkler foundation of a floating beam's formulas does (docs/model/breakage.md); the
+  // exact buoyancy stops at the reserve buoyancy once the top floods
+  bool linear_buoyancy = false;
 };
 
 /// The scene's water properties and hydrodynamic coefficients.

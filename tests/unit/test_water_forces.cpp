@@ -53,6 +53,23 @@ TEST(WaterForces, HoldingAFloeUnderwaterTakesItsReserveBuoyancy) {
   EXPECT_NEAR(w.torque.norm(), 0.0, 1e-12);  // buoyancy acts through the COM
 }
 
+TEST(WaterForces, LinearWaterKeepsPushingUpPastFullSubmergence) {
+  // water.buoyancy = "linear" (an ablation): held 0.2 m under, the floe also carries the column of
+  // water above its top face, rho g L^2 (depth of the top) = 162 N on top of its 2.04 N of reserve
+  // buoyancy, through the COM; floating at its draft (top dry) it is the exact buoyancy
+  const Floe floe;
+  WaterParams p;
+  p.linear_buoyancy = true;
+  const DampingCoefficients d = damping_coefficients(floe.body, floe.mass, floe.inertia, p);
+  const Wrench under = water_wrench(floe.body, at_rest({4, -0.2, 1}), StillWater(), p, d);
+  const double top_depth = 0.2 - kH / 2;
+  EXPECT_NEAR(under.force.y() - floe.mass * p.gravity,
+              (1000.0 - kRhoIce) * p.gravity * kL * kL * kH + 1000.0 * p.gravity * kL * kL * top_depth, 1e-9);
+  EXPECT_NEAR(under.torque.norm(), 0.0, 1e-9);
+  const Wrench afloat = water_wrench(floe.body, at_rest(floe.floating_com(7, -1)), StillWater(), p, d);
+  EXPECT_NEAR(afloat.force.y(), floe.mass * p.gravity, 1e-12 * floe.mass * p.gravity);
+}
+
 TEST(WaterForces, FloeAtItsDraftIsInEquilibrium) {
   const Floe floe;
   const WaterParams p;
