@@ -101,7 +101,12 @@ def run_time_section(summaries, out, total_runs):
                  f"{total_cpu * total_runs / done / 2 / 3600:.1f} h of wall time (its CPU time over 2 cores"
                  + ("" if done == total_runs else f", scaled from the {done} runs finished") + ").")
     span = joblog_span(out)
-    if span and done:
+    if span and done and span[2] < done:
+        # a later, partial run of the sweep (a rerun of a few of its runs) replaced the log: it says
+        # nothing of how these runs shared the machine
+        L.append(f"GNU parallel's job log holds {span[2]} jobs, fewer than the {done} runs finished: it is "
+                 "of a later partial run of the sweep, so how many of these ran at once is not known here.")
+    elif span and done:
         busy, summed, n = span
         # the log also holds jobs that were stopped or whose runs were deleted and rerun:
         # they ran beside the others, so they count for how many ran at once
