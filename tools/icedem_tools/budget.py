@@ -137,6 +137,11 @@ def figure(ranked, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt  # noqa: E402
     models = [m for m in ranked if ranked[m]]
+    if not models:  # nothing paired yet: a figure that says so, not a stale one
+        fig = plt.figure(figsize=(6, 1))
+        fig.text(0.5, 0.5, "no variant has a finished run paired with the default yet", ha="center", va="center")
+        output_guard.save_figure(fig, path, dpi=100)
+        return
     heights = [0.8 + 0.28 * len(ranked[m]) for m in models]
     fig, axes = plt.subplots(len(models), 1, figsize=(8.5, sum(heights) + 0.4), squeeze=False,
                              gridspec_kw={"height_ratios": heights})
