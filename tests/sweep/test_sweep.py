@@ -492,6 +492,16 @@ class Execution(unittest.TestCase):
         self.assertIn("![loads_vs_fis_small_rigid.png](figures/loads_vs_fis_small_rigid.png)", text)
         self.assertEqual(text.count("| small_rigid/"), 2)
         self.assertIn("4 of 4 runs finished", text)
+        self.assertIn("GNU parallel's job log holds 4 jobs (stopped and rerun ones included)", text)
+        # a later partial run (two jobs) replaces the job log: the report does not take it for the grid's
+        log = os.path.join(out, "joblog.txt")
+        lines = read(log).splitlines(keepends=True)
+        write(log, "".join(lines[:2]))
+        p = subprocess.run([os.path.join(ROOT, "scripts", "report"), path, "--out", out, "--report",
+                            os.path.join(out, "partial_log.md")], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        self.assertIn("job log holds 2 jobs, fewer than the 4 runs finished", read(os.path.join(out, "partial_log.md")))
+        write(log, "".join(lines))
         # against an earlier build: the sweep against itself changes by a ratio of 1, within scatter
         p = subprocess.run([os.path.join(ROOT, "scripts", "report"), path, "--out", out, "--report",
                             os.path.join(out, "before.md"), "--before", out, "--before-note", "itself"],
