@@ -230,11 +230,14 @@ struct Scene {
 /// Time steps of a run (each of scene.time.dt).
 inline long step_count(const Scene& s) { return std::lround(s.time.duration / s.time.dt); }
 
-/// Whether generated (square, ice.floe_size) floes are made of breakable elements:
-/// fracture.mode "on", or "auto" with floes at least the characteristic length.
+/// The largest generated floe's side, m: ice.floe_size, or its (1 + layout.size_spread) with a spread.
+inline double largest_generated_floe(const Scene& s) { return s.ice.floe_size * (1 + s.layout.size_spread); }
+
+/// Whether generated (square) floes are made of breakable elements: fracture.mode "on", or
+/// "auto" with the largest of them at least the characteristic length.
 inline bool generated_floes_breakable(const Scene& s) {
   return s.fracture.mode == FractureMode::kOn ||
-         (s.fracture.mode == FractureMode::kAuto && s.ice.floe_size >= s.fracture.characteristic_length);
+         (s.fracture.mode == FractureMode::kAuto && largest_generated_floe(s) >= s.fracture.characteristic_length);
 }
 
 /// Whether rigid floes split under the structure's load (fracture.mode "analytic").

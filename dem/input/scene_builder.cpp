@@ -297,15 +297,12 @@ Scene make_scene(const Scenario& sc) {
   s.validation.tip_speed = real(sc, "validation.tip_speed");
 
   // a lattice is a whole number of elements across; floes of any size stay rigid
-  if (s.layout.size_spread > 0 &&
-      (s.fracture.mode == FractureMode::kOn ||
-       (s.fracture.mode == FractureMode::kAuto &&
-        s.ice.floe_size * (1 + s.layout.size_spread) >= s.fracture.characteristic_length)))
+  if (s.layout.size_spread > 0 && generated_floes_breakable(s))
     fail_key(sc, "layout.size_spread",
              fmt::format("0 with breakable floes (fracture.mode = \"on\", or \"auto\" with floes up to {:.3g} m against "
                          "the characteristic length {:.3g} m): a lattice needs a whole number of elements across; "
                          "a spread of sizes is for rigid floes (fracture.mode \"off\" or \"analytic\")",
-                         s.ice.floe_size * (1 + s.layout.size_spread), s.fracture.characteristic_length));
+                         largest_generated_floe(s), s.fracture.characteristic_length));
   if (generated_floes_breakable(s) && s.layout.file.empty() && s.validation.kind == ValidationKind::kNone) {
     // generated square floes must be a whole number of elements across
     if (const double n = s.ice.floe_size / s.fracture.element_size; !whole(n))

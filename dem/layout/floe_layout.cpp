@@ -149,8 +149,6 @@ Layout generate_square_layout(const LayoutParams& params) {
           ? fmt::format("ice.floe_size = {} m with layout.size_spread = {} (largest side {} m)", params.floe_size,
                         params.size_spread, side)
           : fmt::format("ice.floe_size = {} m", side);
-  // the mean area of a floe: L^2 (1 + s^2 / 3) for sides uniform in L (1 +- s)
-  const double mean_area = params.floe_size * params.floe_size * (1.0 + params.size_spread * params.size_spread / 3.0);
 
   // the floe itself must fit across the channel
   if (side + gap > std::min(lx, lz)) {
@@ -202,7 +200,7 @@ Layout generate_square_layout(const LayoutParams& params) {
           "on a grid in the {} m x {} m channel with min gap {} m; expected ice.concentration <= "
           "{:.4f} for this ice.floe_size (or smaller floes)",
           ctx, params.concentration, size, n, max_n, lx, lz, gap,
-          static_cast<double>(max_n) * mean_area / layout.channel_area));
+          static_cast<double>(max_n) * side * side / layout.channel_area));
     }
 
     // leave the surplus cells empty, chosen at random (partial Fisher-Yates)
@@ -217,13 +215,14 @@ Layout generate_square_layout(const LayoutParams& params) {
     std::sort(occupied.begin(), occupied.end());  // floes numbered along x, then z
 
     // floes at the cell centres, with a random yaw small enough to stay in the cell
+    const Polygon shape = square(side);
     const double yaw0 =
         std::min(params.max_yaw, 0.999 * fitting_yaw(side, std::min(grid.dx, grid.dz) - gap));
     for (long c : occupied) {
       const long i = c / grid.nz, k = c % grid.nz;
       const Eigen::Vector2d centre(ch.x_min + (static_cast<double>(i) + 0.5) * grid.dx,
                                    ch.z_min + (static_cast<double>(k) + 0.5) * grid.dz);
-      layout.floes.push_back({centre, yaw0 * rng.symmetric(), square(side)});
+      layout.floes.push_back({centre, yaw0 * rng.symmetric(), shape});
     }
     step = std::max(0.5 * (std::min(grid.dx, grid.dz) - side - gap), 0.01 * side);
   } else {

@@ -269,6 +269,13 @@ def lowpass(x, dt, cutoff_hz):
     return y[pad:pad + n]
 
 
+def lowpass_maxima(t, x, inside):
+    """{cut-off Hz as text: the load's maximum over the samples `inside` after that low-pass} for each of
+    LOWPASS_HZ, the whole record filtered first (so the window's edges see no filter start-up)."""
+    dt = (t[-1] - t[0]) / (len(t) - 1)
+    return {f"{fc:g}": float(lowpass(x, dt, fc)[inside].max()) for fc in LOWPASS_HZ}
+
+
 def make_record(run_dir):
     """The record of a finished run, from its directory: its summary, the Welch spectrum of its
     surge load over the analysis window (up to RECORD_MAX_HZ) and its breaks (every field of
@@ -285,9 +292,7 @@ def make_record(run_dir):
         freq, power = f[keep].tolist(), [float(f"{v:.6g}") for v in p[keep]]
         if sel.any():  # the load a run exceeds 1 % of its window, less driven by one event than the max
             window["p99_fx_N"] = float(np.quantile(x[sel], 0.99))
-            # the window's maximum after each low-pass filter, the whole record filtered first
-            dt = (t[-1] - t[0]) / (len(t) - 1)
-            window["max_lowpass_fx_N"] = {f"{fc:g}": float(lowpass(x, dt, fc)[sel].max()) for fc in LOWPASS_HZ}
+            window["max_lowpass_fx_N"] = lowpass_maxima(t, x, sel)
     ev = run.events
     fields = [k for k in (ev.dtype.names or ()) if k not in ("mode_name", "mechanism_name")]
     for row in ev:

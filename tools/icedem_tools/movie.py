@@ -46,18 +46,18 @@ def read(path):
         if "/snapshots/time" not in h or len(h["/snapshots/time"]) == 0:
             raise output_guard.Refused(f"{path}: the run kept no snapshots (set output.snapshot_interval > 0 "
                                        "and run it again)")
-        off = h["/bodies/vertex_offset"][:]
+        off, vertices, thickness = h["/bodies/vertex_offset"][:], h["/bodies/vertices"][:], h["/bodies/thickness"][:]
         run = {
             "times": h["/snapshots/time"][:],
             "field": snapshot_field(h),
-            "outlines": [h["/bodies/vertices"][off[b]:off[b + 1]] for b in range(len(off) - 1)],
-            "thickness": h["/bodies/thickness"][:],
+            "outlines": [vertices[off[b]:off[b + 1]] for b in range(len(off) - 1)],
+            "thickness": thickness,
             "floe": h["/bodies/floe_id"][:],
             "load_time": h["/load/time"][:],
             "surge": h["/load/surge"][:],
             "structure": h["/structure/position"][:],
             "profile": structure_profile(h),
-            "joints": joint_faces(h, off, h["/bodies/vertices"][:], h["/bodies/thickness"][:]),
+            "joints": joint_faces(h, off, vertices, thickness),
         }
     return run
 
@@ -81,23 +81,9 @@ def body_shapes(run, k):
 
 
 def hull_2d(points):
-    """The convex hull of points in the plane, counter-clockwise (Andrew's monotone chain)."""
-    p = sorted(map(tuple, np.round(points, 12)))
-    if len(p) < 3:
-        return np.array(p)
-
-    def cross(o, a, b):
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-    lower, upper = [], []
-    for q in p:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], q) <= 0:
-            lower.pop()
-        lower.append(q)
-    for q in reversed(p):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], q) <= 0:
-            upper.pop()
-        upper.append(q)
-    return np.array(lower[:-1] + upper[:-1])
+    """The convex hull of points in the plane, counter-clockwise."""
+    from scipy.spatial import ConvexHull
+    return points[ConvexHull(points).vertices]
 
 
 def structure_at(run, t):

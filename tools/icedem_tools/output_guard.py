@@ -112,29 +112,14 @@ def guard(outputs, inputs=()):
 
 
 def _replace(path, write):
-    """Write through a temporary file beside `path`, renamed over it once whole."""
-    directory = os.path.dirname(os.path.abspath(path))
-    try:
-        os.makedirs(directory, exist_ok=True)
-    except OSError as e:
-        raise WriteFailed(f"cannot make {directory}: {e.strerror or e}") from e
-    fd, tmp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".", suffix=".tmp", dir=directory)
-    try:
-        # mkstemp makes it private (0600): give it the mode of the file it replaces, or a new file's
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, os.stat(path).st_mode & 0o777 if os.path.isfile(path) else 0o666 & ~umask)
-        with os.fdopen(fd, "wb") as f:
+    """`write(f)` writes the whole file to an open binary file, made whole and synced through a
+    temporary file beside `path` (write_with)."""
+    def write_to(tmp):
+        with open(tmp, "wb") as f:
             write(f)
             f.flush()
             os.fsync(f.fileno())
-        os.replace(tmp, path)
-    except OSError as e:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise WriteFailed(f"cannot write {path}: {e.strerror or e}") from e
+    write_with(path, write_to)
 
 
 def write_with(path, write_to):

@@ -68,10 +68,7 @@ def filtered_maxima(run_h5, summary):
     dt = (t[-1] - t[0]) / (len(t) - 1)
     slack = 1e-6 * dt
     inside = (t >= summary["window_start_s"] - slack) & (t <= summary["window_end_s"] + slack)
-    out = {"0": float(x[inside].max())}
-    for fc in CUTOFFS_HZ:
-        out[f"{fc:g}"] = float(agg.lowpass(x, dt, fc)[inside].max())
-    return out
+    return {"0": float(x[inside].max()), **agg.lowpass_maxima(t, x, inside)}
 
 
 def filter_runs(sweep_dir, records):
