@@ -1,0 +1,225 @@
+#include "dem/fracture/outline_lattice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace icedem {
+namespace {
+
+// a cell of the tiling: its convex outline (ccw) and centre
+struct Cell {
+  Polygon outline;
+  Eigen::Vector2d centre;
+};
+
+// the hexagon of the tiling centred at c: neighbouring centres w apart, flat faces towards
+// +-z (vertices at 0, 60, ..., 300 degrees from +x, circumradius w / sqrt(3))
+Polygon hexagon(const Eigen::Vector2d& c, double w) {
+  const double R = w / std::sqrt(3.0);
+  Polygon h;
+  for (int k = 0; k < 6; ++k) {
+    const double a = k * M_PI / 3.0;
+    h.emplace_back(c.x() + R * std::cos(a), c.y() + R * std::sin(a));
+  }
+  return make_ccw(h);
+}
+
+// the cells covering the box [lo, hi], anchored at lo
+std::vector<Cell> cells_over(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double w, ElementShape shape) {
+  std::vector<Cell> cells;
+  if (shape == ElementShape::kSquare) {
+    const int nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / w - 1e-9));
+    const int nz = static_cast<int>(std::ceil((hi.y() - lo.y()) / w - 1e-9));
+    for (int i = 0; i < nx; ++i)
+      for (int j = 0; j < nz; ++j) {
+        const Eigen::Vector2d c = lo + Eigen::Vector2d((i + 0.5) * w, (j + 0.5) * w);
+        Polygon s = square(w);
+        for (Eigen::Vector2d& v : s) v += c;
+        cells.push_back({s, c});
+      }
+    return cells;
+  }
+  // hexagons in columns 1.5 R apart along x, w apart along z, every other column shifted
+  // by w / 2; the first column's centres on the box's lower corner
+  const double R = w / std::sqrt(3.0), dx = 1.5 * R;
+  const int nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / dx)) + 1;
+  const int nz = static_cast<int>(std::ceil((hi.y() - lo.y()) / w)) + 2;
+  for (int i = 0; i < nx; ++i)
+    for (int j = -1; j < nz; ++j) {
+      const Eigen::Vector2d c = lo + Eigen::Vector2d(i * dx, j * w + (i % 2 ? 0.5 * w : 0.0));
+      cells.push_back({hexagon(c, w), c});
+    }
+  return cells;
+}
+
+// the part of `subject` inside the convex, ccw `cell` (Sutherland-Hodgman: the subject may be
+// concave; a cell holding two parts of it gets one polygon with a bridge of no area between)
+Polygon clip(Polygon subject, const Polygon& cell) {
+  for (std::size_t i = 0; i < cell.size() && subject.size() >= 3; ++i) {
+    const Eigen::Vector2d& a = cell[i];
+    const Eigen::Vector2d& b = cell[(i + 1) % cell.size()];
+    // outward normal of a ccw edge (seen from above, +y: ccw turns +x towards -z)
+    const Eigen::Vector2d edge = b - a;
+    const Eigen::Vector2d outward(-edge.y(), edge.x());
+    subject = cut(subject, a, outward).behind;
+  }
+  return subject;
+}
+
+// the interval (along the unit `dir` from `a`) that `part`'s boundary covers on the line
+// through a: the extent of its vertices within eps of the line (empty: lo > hi)
+std::pair<double, double> on_line(const Polygon& part, const Eigen::Vector2d& a, const Eigen::Vector2d& dir,
+                                  double eps) {
+  const Eigen::Vector2d normal(-dir.y(), dir.x());
+  double lo = 1e300, hi = -1e300;
+  for (const Eigen::Vector2d& v : part)
+    if (std::abs((v - a).dot(normal)) <= eps) {
+      const double s = (v - a).dot(dir);
+      lo = std::min(lo, s), hi = std::max(hi, s);
+    }
+  return {lo, hi};
+}
+
+// the moments of two parts together (areas add; second moments moved to the common centroid)
+CentroidalMoments combined(const CentroidalMoments& p, const CentroidalMoments& q) {
+  CentroidalMoments m;
+  m.area = p.area + q.area;
+  m.centroid = (p.area * p.centroid + q.area * q.centroid) / m.area;
+  for (const CentroidalMoments* s : {&p, &q}) {
+    const Eigen::Vector2d d = s->centroid - m.centroid;
+    m.ixx += s->ixx + s->area * d.x() * d.x();
+    m.izz += s->izz + s->area * d.y() * d.y();
+    m.ixz += s->ixz + s->area * d.x() * d.y();
+  }
+  return m;
+}
+
+}  // namespace
+
+ElementShape element_shape(const std::string& name) {
+  if (name == "square") return ElementShape::kSquare;
+  if (name == "hexagon") return ElementShape::kHexagon;
+  throw std::invalid_argument("element shape \"" + name + "\": expected \"square\" or \"hexagon\"");
+}
+
+const char* element_shape_name(ElementShape shape) { return shape == ElementShape::kSquare ? "square" : "hexagon"; }
+
+double cell_area(double element_size, ElementShape shape) {
+  return (shape == ElementShape::kSquare ? 1.0 : std::sqrt(3.0) / 2.0) * element_size * element_size;
+}
+
+OutlineLattice fill_outline(const Polygon& outline_in, double element_size, ElementShape shape, double min_fraction) {
+  if (!(element_size > 0)) throw std::invalid_argument("fill_outline: the element size must be positive");
+  if (outline_in.size() < 3 || !(area(outline_in) > 0))
+    throw std::invalid_argument("fill_outline: the outline has no area");
+  const Polygon outline = make_ccw(outline_in);
+  Eigen::Vector2d lo = outline[0], hi = outline[0];
+  for (const Eigen::Vector2d& v : outline) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double w = element_size, eps = 1e-9 * std::max(w, (hi - lo).maxCoeff());
+
+  // each cell's part of the outline
+  const std::vector<Cell> cells = cells_over(lo, hi, w, shape);
+  std::vector<int> part_cell;  // the cell of each part
+  std::vector<Polygon> parts;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    Polygon part = clip(outline, cells[c].outline);
+    if (part.size() >= 3 && area(part) > eps * eps) parts.push_back(std::move(part)), part_cell.push_back(int(c));
+  }
+
+  // the faces two parts share on their cells' common edge
+  struct Face {
+    int a, b;
+    Eigen::Vector2d midpoint, axis;
+    double length;
+  };
+  std::vector<Face> faces;
+  const double reach = 1.01 * w;  // neighbouring centres are w apart (squares: the diagonal, sqrt(2) w, is not)
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    for (std::size_t q = p + 1; q < parts.size(); ++q) {
+      const Cell& A = cells[part_cell[p]];
+      const Cell& B = cells[part_cell[q]];
+      if ((B.centre - A.centre).norm() > reach) continue;
+      // the common edge: A's edge through the centres' midpoint
+      const Eigen::Vector2d mid = 0.5 * (A.centre + B.centre);
+      for (std::size_t e = 0; e < A.outline.size(); ++e) {
+        const Eigen::Vector2d& a = A.outline[e];
+        const Eigen::Vector2d& b = A.outline[(e + 1) % A.outline.size()];
+        if (((a + b) / 2 - mid).norm() > 1e-6 * w) continue;
+        const double len = (b - a).norm();
+        const Eigen::Vector2d dir = (b - a) / len;
+        const auto [lp, hp] = on_line(parts[p], a, dir, eps);
+        const auto [lq, hq] = on_line(parts[q], a, dir, eps);
+        const double from = std::max({lp, lq, 0.0}), to = std::min({hp, hq, len});
+        if (to - from > eps)
+          faces.push_back({int(p), int(q), a + dir * (0.5 * (from + to)), (B.centre - A.centre).normalized(), to - from});
+      }
+    }
+
+  // parts below min_fraction of a cell go into the neighbour they share the longest face with
+  const double small = min_fraction * cell_area(w, shape);
+  std::vector<int> host(parts.size());
+  for (std::size_t p = 0; p < parts.size(); ++p) host[p] = int(p);
+  std::vector<CentroidalMoments> moments(parts.size());
+  for (std::size_t p = 0; p < parts.size(); ++p) moments[p] = centroidal_moments(parts[p]);
+  OutlineLattice lattice;
+  lattice.element_size = w;
+  lattice.shape = shape;
+  std::vector<char> dropped(parts.size(), 0);
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    if (moments[p].area >= small) continue;
+    int best = -1;
+    double longest = 0;
+    for (const Face& f : faces) {
+      const int other = f.a == int(p) ? f.b : f.b == int(p) ? f.a : -1;
+      if (other >= 0 && moments[other].area >= small && f.length > longest) best = other, longest = f.length;
+    }
+    if (best < 0) {
+      dropped[p] = 1;
+      lattice.dropped_area += moments[p].area;
+    } else {
+      host[p] = best;
+    }
+  }
+
+  // the elements: each kept part with the small parts it hosts
+  std::vector<int> element_of(parts.size(), -1);
+  std::vector<std::vector<Eigen::Vector2d>> points;
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    if (host[p] == int(p) && !dropped[p]) {
+      element_of[p] = int(lattice.elements.size());
+      lattice.elements.push_back({{}, moments[p]});
+      points.emplace_back(parts[p].begin(), parts[p].end());
+    }
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    if (host[p] != int(p)) {
+      const int e = element_of[host[p]];
+      element_of[p] = e;
+      lattice.elements[e].moments = combined(lattice.elements[e].moments, moments[p]);
+      points[e].insert(points[e].end(), parts[p].begin(), parts[p].end());
+    }
+  for (std::size_t e = 0; e < lattice.elements.size(); ++e) lattice.elements[e].hull = make_ccw(convex_hull(points[e]));
+
+  // the joints: faces between two elements, those between the same two summed (a merged
+  // part's face continues its host's)
+  std::map<std::pair<int, int>, OutlineJoint> joints;
+  for (const Face& f : faces) {
+    int a = element_of[f.a], b = element_of[f.b];
+    if (a < 0 || b < 0 || a == b) continue;
+    Eigen::Vector2d axis = f.axis;
+    if (a > b) std::swap(a, b), axis = -axis;
+    auto [it, fresh] = joints.try_emplace({a, b}, OutlineJoint{a, b, f.midpoint, axis, f.length});
+    if (!fresh) {
+      OutlineJoint& j = it->second;
+      const double total = j.face_length + f.length;
+      j.midpoint = (j.face_length * j.midpoint + f.length * f.midpoint) / total;
+      j.axis = (j.face_length * j.axis + f.length * axis).normalized();
+      j.face_length = total;
+    }
+  }
+  for (const auto& [key, j] : joints) lattice.joints.push_back(j);
+  return lattice;
+}
+
+}  // namespace icedem

@@ -1,0 +1,69 @@
+// Breakable ice of any outline: a floe's outline (convex or not: a photo's, a layout file's)
+// filled with square or hexagonal elements, each cut at the outline.
+//
+// The seed paper's elements are squares, so a floe breaks only into squares and rectangles;
+// its closing remark expects hexagons to let "ice failure be represented in a form close to
+// a shape having a curved surface". Here the plane is tiled with cells (squares of side
+// element_size, or hexagons whose neighbouring centres are element_size apart, flat faces
+// towards +-z), the grid anchored at the outline's lower corner (x, z least), and each cell is
+// cut to the part of the outline inside it. An element keeps the true area, centroid and
+// second moments of its part (its mass and inertia follow), and two elements are joined
+// where their parts share a stretch of their cells' common face, with that stretch's length
+// (a joint's capacities scale with it, eqs. 1-3). A part smaller than `min_fraction` of a
+// cell is merged into the neighbour it shares the longest face with (a sliver of a few
+// percent of a cell would be a body of a few grams beside ones of a kilogram: a stiff, badly
+// conditioned row for the contact solve), or dropped if it shares none; the area dropped is
+// reported. A rectangle of whole elements gives make_element_lattice's lattice exactly.
+//
+// Pure geometry in the floe's frame, as make_element_lattice; not yet wired into the
+// world (elements with outlines other than squares need convex-hull shapes and per-joint
+// face lengths there).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "dem/fracture/element_lattice.hpp"
+#include "dem/layout/polygon.hpp"
+
+namespace icedem {
+
+enum class ElementShape { kSquare, kHexagon };
+
+/// "square" or "hexagon"; throws std::invalid_argument otherwise.
+ElementShape element_shape(const std::string& name);
+const char* element_shape_name(ElementShape shape);
+
+/// One element of an outline lattice.
+struct OutlineElement {
+  Polygon hull;               // m, ccw, floe frame: the convex hull of its part, its collision shape
+  CentroidalMoments moments;  // of its true part (or parts, merged): area, centroid, second moments
+};
+
+/// One joint: the elements' indices, the face's middle, the unit axis from a's cell centre
+/// towards b's, and the face's length (m).
+struct OutlineJoint {
+  int a, b;
+  Eigen::Vector2d midpoint, axis;
+  double face_length;
+};
+
+struct OutlineLattice {
+  double element_size = 0;  // m: a square's side, or a hexagon's distance between neighbouring centres
+  ElementShape shape = ElementShape::kSquare;
+  std::vector<OutlineElement> elements;
+  std::vector<OutlineJoint> joints;
+  double dropped_area = 0;  // m^2: parts below min_fraction of a cell sharing no face
+};
+
+/// The area of one cell: element_size^2 for a square, sqrt(3)/2 element_size^2 for a hexagon.
+double cell_area(double element_size, ElementShape shape);
+
+/// Fill `outline` (either orientation, at least three vertices, simple) with elements.
+/// Throws std::invalid_argument for a degenerate outline or a non-positive element size.
+OutlineLattice fill_outline(const Polygon& outline, double element_size, ElementShape shape,
+                            double min_fraction = 0.25);
+
+}  // namespace icedem

@@ -1,0 +1,174 @@
+// Lattices of any outline (dem/fracture/outline_lattice.hpp): square and hexagonal elements
+// cut at a floe's outline keep the floe's area, mass moments and shape, are joined only
+// across faces inside the ice, and a rectangle of whole elements is the paper's lattice.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "dem/fracture/element_lattice.hpp"
+#include "dem/fracture/outline_lattice.hpp"
+
+using namespace icedem;
+
+namespace {
+
+// the outline's polar moment about its centroid against the elements' (each about its own
+// centroid, moved to the outline's): the floe's yaw inertia, which the elements must keep
+double polar(const CentroidalMoments& m) { return m.ixx + m.izz; }
+double elements_polar(const OutlineLattice& l, const Eigen::Vector2d& about) {
+  double j = 0;
+  for (const OutlineElement& e : l.elements) j += polar(e.moments) + e.moments.area * (e.moments.centroid - about).squaredNorm();
+  return j;
+}
+double elements_area(const OutlineLattice& l) {
+  double a = 0;
+  for (const OutlineElement& e : l.elements) a += e.moments.area;
+  return a;
+}
+
+// even-odd point in polygon, or within tol of its boundary
+bool inside_or_on(const Polygon& p, const Eigen::Vector2d& q, double tol) {
+  bool in = false;
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
+    const Eigen::Vector2d a = p[j], b = p[i];
+    const Eigen::Vector2d ab = b - a;
+    const double t = std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    if ((a + t * ab - q).norm() <= tol) return true;
+    if ((b.y() > q.y()) != (a.y() > q.y()) && q.x() < (a.x() - b.x()) * (q.y() - b.y()) / (a.y() - b.y()) + b.x())
+      in = !in;
+  }
+  return in;
+}
+
+Polygon regular(int n, double radius, const Eigen::Vector2d& centre, double turn) {
+  Polygon p;
+  for (int k = 0; k < n; ++k) {
+    const double a = turn + 2 * M_PI * k / n;
+    p.push_back(centre + radius * Eigen::Vector2d(std::cos(a), std::sin(a)));
+  }
+  return p;
+}
+
+}  // namespace
+
+TEST(OutlineLattice, ARectangleOfWholeSquaresIsThePapersLattice) {
+  const Polygon floe = rectangle(0.6, 0.45);
+  const OutlineLattice l = fill_outline(floe, 0.15, ElementShape::kSquare);
+  const ElementLattice paper = make_element_lattice(floe, 0.15);
+  ASSERT_EQ(l.elements.size(), paper.centres.size());
+  ASSERT_EQ(l.joints.size(), paper.joints.size());
+  // the same centres (in another order) and the same faces: each joint's midpoint is one of
+  // the paper lattice's, with the face's full length L_e
+  for (const OutlineElement& e : l.elements) {
+    EXPECT_NEAR(e.moments.area, 0.0225, 1e-12);
+    EXPECT_TRUE(std::any_of(paper.centres.begin(), paper.centres.end(),
+                            [&](const Eigen::Vector2d& c) { return (c - e.moments.centroid).norm() < 1e-12; }));
+  }
+  for (const OutlineJoint& j : l.joints) {
+    EXPECT_NEAR(j.face_length, 0.15, 1e-12);
+    EXPECT_TRUE(std::any_of(paper.joints.begin(), paper.joints.end(),
+                            [&](const LatticeJoint& p) { return (p.midpoint - j.midpoint).norm() < 1e-12; }));
+  }
+  EXPECT_EQ(l.dropped_area, 0.0);
+}
+
+TEST(OutlineLattice, AnyConvexOutlineKeepsItsAreaAndInertia) {
+  // a 13-gon of radius 0.4 m off the origin and turned, as a photo's floe: the elements'
+  // areas add up to the outline's and their yaw inertia to its own (to round-off: the cut
+  // parts tile the outline exactly), with either element shape
+  const Polygon floe = regular(13, 0.4, {0.3, -0.2}, 0.37);
+  const CentroidalMoments whole = centroidal_moments(floe);
+  for (ElementShape shape : {ElementShape::kSquare, ElementShape::kHexagon}) {
+    SCOPED_TRACE(element_shape_name(shape));
+    const OutlineLattice l = fill_outline(floe, 0.15, shape);
+    EXPECT_NEAR(elements_area(l) + l.dropped_area, whole.area, 1e-12 * whole.area);
+    EXPECT_EQ(l.dropped_area, 0.0);  // a convex outline leaves no part without a neighbour
+    EXPECT_NEAR(elements_polar(l, whole.centroid), polar(whole), 1e-10 * polar(whole));
+    for (const OutlineElement& e : l.elements) {
+      // no sliver: every element holds at least a quarter cell, and its collision hull
+      // holds its part (a convex outline's parts are convex: the hull is the part)
+      EXPECT_GE(e.moments.area, 0.25 * cell_area(0.15, shape) - 1e-15);
+      EXPECT_GE(area(e.hull), e.moments.area * (1 - 1e-12));
+      EXPECT_GT(signed_area(e.hull), 0);  // ccw seen from above, as every polygon of the project
+    }
+    // every element is joined to at least one other (the lattice holds together), and each
+    // joint's face is inside the outline
+    std::set<int> joined;
+    for (const OutlineJoint& j : l.joints) {
+      joined.insert(j.a), joined.insert(j.b);
+      EXPECT_TRUE(inside_or_on(floe, j.midpoint, 1e-12));
+      EXPECT_GT(j.face_length, 0);
+    }
+    EXPECT_EQ(joined.size(), l.elements.size());
+  }
+}
+
+TEST(OutlineLattice, HexagonsInsideTheIceHaveSixEqualFaces) {
+  // a 1.8 x 1.8 m floe of hexagons 0.2 m across: a whole hexagon is sqrt(3)/2 w^2, has six
+  // neighbours, each across a face of w / sqrt(3), along 30, 90, 150, ... degrees
+  const double w = 0.2;
+  const OutlineLattice l = fill_outline(rectangle(1.8, 1.8), w, ElementShape::kHexagon);
+  std::map<int, int> joints_of;
+  for (const OutlineJoint& j : l.joints) ++joints_of[j.a], ++joints_of[j.b];
+  int whole = 0;
+  for (std::size_t e = 0; e < l.elements.size(); ++e) {
+    if (std::abs(l.elements[e].moments.area - cell_area(w, ElementShape::kHexagon)) > 1e-12) continue;
+    const Eigen::Vector2d c = l.elements[e].moments.centroid;
+    if (std::abs(c.x()) > 0.9 - 1.2 * w || std::abs(c.y()) > 0.9 - 1.2 * w) continue;  // away from the edge
+    ++whole;
+    EXPECT_EQ(joints_of[int(e)], 6);
+  }
+  EXPECT_GT(whole, 20);
+  for (const OutlineJoint& j : l.joints) {
+    if (std::abs(j.face_length - w / std::sqrt(3.0)) > 1e-9) continue;  // cut at the outline
+    const double angle = std::atan2(j.axis.y(), j.axis.x()) * 180 / M_PI;
+    const double from_30 = std::fmod(angle - 30 + 720, 60.0);
+    EXPECT_TRUE(from_30 < 1e-6 || from_30 > 60 - 1e-6) << angle;
+  }
+}
+
+TEST(OutlineLattice, NoJointAcrossAConcaveNotch) {
+  // a U of 0.9 x 0.6 m with a slot 0.15 m wide and 0.45 m deep in the middle, cut into 0.15 m
+  // squares: the slot's two sides share cells' faces only across open water, so no joint
+  // lies in the slot, and the area is kept
+  const Polygon u = {{-0.45, -0.3}, {0.45, -0.3}, {0.45, 0.3},  {0.075, 0.3},
+                     {0.075, -0.15}, {-0.075, -0.15}, {-0.075, 0.3}, {-0.45, 0.3}};
+  for (ElementShape shape : {ElementShape::kSquare, ElementShape::kHexagon}) {
+    SCOPED_TRACE(element_shape_name(shape));
+    const OutlineLattice l = fill_outline(u, 0.15, shape);
+    EXPECT_NEAR(elements_area(l) + l.dropped_area, area(u), 1e-12);
+    for (const OutlineJoint& j : l.joints) EXPECT_TRUE(inside_or_on(u, j.midpoint, 1e-12)) << j.midpoint.transpose();
+  }
+}
+
+TEST(OutlineLattice, SliversJoinTheirNeighbours) {
+  // 0.62 m across 0.15 m squares leaves a column 0.02 m wide (13 % of a cell): each of its
+  // parts joins the element beside it, so the floe keeps its area and has the 4 x 3
+  // elements of 0.6 m, the last column 0.17 m wide: its elements are joined to each other
+  // across faces of 0.17 m (their own 0.15 m and the slivers' 0.02 m, summed into one joint),
+  // every other face is 0.15 m
+  const OutlineLattice l = fill_outline(rectangle(0.62, 0.45), 0.15, ElementShape::kSquare);
+  EXPECT_EQ(l.elements.size(), 12u);
+  EXPECT_NEAR(elements_area(l), 0.62 * 0.45, 1e-12);
+  int wide = 0;
+  for (const OutlineElement& e : l.elements) wide += std::abs(e.moments.area - 0.17 * 0.15) < 1e-12;
+  EXPECT_EQ(wide, 3);
+  EXPECT_EQ(l.joints.size(), 17u);
+  int long_faces = 0;
+  for (const OutlineJoint& j : l.joints) {
+    const bool in_wide_column = j.midpoint.x() > 0.3 - 1e-9 - 0.15 && std::abs(j.axis.y()) > 0.99;
+    EXPECT_NEAR(j.face_length, in_wide_column ? 0.17 : 0.15, 1e-12) << j.midpoint.transpose();
+    long_faces += in_wide_column;
+  }
+  EXPECT_EQ(long_faces, 2);
+}
+
+TEST(OutlineLattice, RefusesWhatIsNoOutline) {
+  EXPECT_THROW(fill_outline({{0, 0}, {1, 0}}, 0.15, ElementShape::kSquare), std::invalid_argument);
+  EXPECT_THROW(fill_outline(square(1.0), 0.0, ElementShape::kSquare), std::invalid_argument);
+  EXPECT_THROW(element_shape("triangle"), std::invalid_argument);
+  EXPECT_EQ(element_shape("hexagon"), ElementShape::kHexagon);
+}
