@@ -65,8 +65,11 @@ void check_fracture(const Scene& scene, World& world, double time, const Eigen::
       low_pass(fracture.filtered_joint_loads[i], loads, a);
       loads = fracture.filtered_joint_loads[i];
     }
+    // a joint's capacities are its face's (eqs. 1-3: each is proportional to the face's length)
+    const JointCapacity own = joint.face_length > 0 ? scaled(capacity, joint.face_length / scene.fracture.element_size)
+                                                    : capacity;
     double ratio = 0;
-    const FailureMode mode = failure_mode(loads, capacity, ratio);
+    const FailureMode mode = failure_mode(loads, own, ratio);
     const Eigen::Vector3d at = body_pose(body_a) * joint.midpoint_a;
     if (fracture.floe_margins.size() <= static_cast<std::size_t>(joint.floe))
       fracture.floe_margins.resize(joint.floe + 1);
@@ -77,7 +80,7 @@ void check_fracture(const Scene& scene, World& world, double time, const Eigen::
     if (mode == FailureMode::kNone) continue;
 
     BreakContext context = break_context(scene, world, joint.floe, at, structure, h);
-    context.ratios = criterion_ratios(loads, capacity);
+    context.ratios = criterion_ratios(loads, own);
     const BreakMechanism mechanism = classify_break(context, scene.ice.thickness);
     const std::array<double, kFailureModes>& r = context.ratios;  // FailureMode order
     fracture.add(FractureEvent{

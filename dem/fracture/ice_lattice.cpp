@@ -1,7 +1,9 @@
 #include "dem/fracture/ice_lattice.hpp"
 
+#include "dem/core/errors.hpp"
 #include "dem/world/joint_springs.hpp"
 
+#include <cmath>
 #include <functional>
 #include <map>
 
@@ -14,8 +16,145 @@ ElementLattice floe_lattice(const Polygon& shape, double element_size, double& y
   return make_element_lattice(outline, element_size);
 }
 
+bool paper_lattice(const Polygon& outline, const FractureSettings& fracture) {
+  if (fracture.element_shape != ElementShape::kSquare) return false;
+  try {
+    double yaw = 0;
+    floe_lattice(outline, fracture.element_size, yaw);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+OutlineLattice floe_outline_lattice(const Polygon& shape, const FractureSettings& fracture, double& yaw0) {
+  yaw0 = principal_yaw(shape);
+  Polygon outline;
+  for (const Eigen::Vector2d& v : shape) outline.push_back(rotate(v, -yaw0));
+  return fill_outline(outline, fracture.element_size, fracture.element_shape);
+}
+
+namespace {
+
+// The stand-in of a floe whose lattice waits outside the world (fracture.lattice_radius),
+// and the lattice's record; the elements and joints are added after it
+DormantLattice& add_stand_in(World& world, const Floe& floe, int floe_id, double y, double friction, int elements,
+                             int joints, btTransform& stand_in_pose) {
+  const FloeShape& whole = world.shape(floe.shape);
+  stand_in_pose.setIdentity();
+  stand_in_pose.setOrigin(btVector3(floe.centre.x(), y, floe.centre.y()));
+  stand_in_pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + whole.principal_yaw));
+  DormantLattice d;
+  d.stand_in = world.add_resting_floe(whole, stand_in_pose, floe_id, friction);
+  world.floes()[d.stand_in].stand_in = true;
+  world.floes()[d.stand_in].lattice = static_cast<int>(world.lattices().size());
+  d.first_element = static_cast<int>(world.floes().size());
+  d.elements = elements;
+  d.first_joint = static_cast<int>(world.joints().size());
+  d.joints = joints;
+  d.radius = whole.radius;
+  world.lattices().push_back(std::move(d));
+  return world.lattices().back();
+}
+
+// Bullet's fixed joint between two elements with the fracture settings' softness: springs
+// of the ice (elastic joints) or Bullet's ERP and CFM
+void add_element_joint(World& world, IceJoint joint, const btTransform& frame_a, const btTransform& frame_b,
+                       const JointSprings& springs, const FractureSettings& fracture, bool in_world) {
+  btRigidBody& body_a = *world.floes()[joint.body_a].body;
+  btRigidBody& body_b = *world.floes()[joint.body_b].body;
+  if (fracture.elastic_joints)
+    joint.constraint = std::make_unique<SpringJoint>(body_a, body_b, frame_a, frame_b, springs, kSpringJointErp);
+  else
+    joint.constraint = std::make_unique<btFixedConstraint>(body_a, body_b, frame_a, frame_b);
+  // softness set on all six axes (axis -1, Bullet's default for setParam, is silently ignored)
+  for (int axis = 0; axis < 6; ++axis) {
+    joint.constraint->setParam(BT_CONSTRAINT_STOP_CFM, fracture.cfm, axis);
+    joint.constraint->setParam(BT_CONSTRAINT_STOP_ERP, fracture.elastic_joints ? kSpringJointErp : fracture.erp, axis);
+  }
+  // more iterations for the joints than for contacts where asked: Bullet solves a
+  // constraint's rows for max(its override, solver.iterations) sweeps, contacts
+  // only for solver.iterations (btSequentialImpulseConstraintSolver)
+  if (fracture.joint_iterations > 0) joint.constraint->setOverrideNumSolverIterations(fracture.joint_iterations);
+  joint.feedback = std::make_unique<btJointFeedback>();
+  joint.constraint->setJointFeedback(joint.feedback.get());
+  world.add_joint(std::move(joint), in_world);
+}
+
+// A floe of any outline, or of hexagons: its outline lattice's elements, each a body of its
+// own shape (the convex hull of its part: exact for a convex outline) turned to its own
+// principal axes, and a joint at the middle of each shared face whose frame has x along the
+// face's normal (the springs and the loads are in that frame) and whose capacities follow
+// the face's length (dem/fracture/fracture.cpp)
+void add_outline_lattice_floe(World& world, const Floe& floe, int floe_id, double y, const FractureSettings& fracture,
+                              const IceSettings& ice, double friction) {
+  double yaw0 = 0;
+  const OutlineLattice lattice = floe_outline_lattice(floe.shape, fracture, yaw0);
+  const double yaw = floe.yaw + yaw0;
+  const double floe_area = area(floe.shape);
+  const AddedMass plate = plate_added_mass(floe_area, world.settings().water.water_density);
+  const bool dormant = fracture.lattice_radius > 0;
+  btTransform stand_in_pose;
+  if (dormant) {
+    DormantLattice& d = add_stand_in(world, floe, floe_id, y, friction, static_cast<int>(lattice.elements.size()),
+                                     static_cast<int>(lattice.joints.size()), stand_in_pose);
+    d.equal_elements = false;  // make_dormant's mean motion is for equal elements
+  }
+  const int first = static_cast<int>(world.floes().size());
+  std::vector<double> element_yaw;  // each element's body axes against the floe's principal frame
+  for (const OutlineElement& e : lattice.elements) {
+    Polygon local;
+    for (const Eigen::Vector2d& v : e.hull) local.push_back(v - e.moments.centroid);
+    const FloeShape& shape = world.shape(local);
+    element_yaw.push_back(shape.principal_yaw);
+    const Eigen::Vector2d at = floe.centre + rotate(e.moments.centroid, yaw);
+    btTransform pose;
+    pose.setIdentity();
+    pose.setOrigin(btVector3(at.x(), y, at.y()));
+    pose.setRotation(btQuaternion(btVector3(0, 1, 0), yaw + shape.principal_yaw));
+    const int index = world.add_body(shape, pose, floe_id, friction, 0, !dormant,
+                                     element_added_mass(plate, floe_area, e.moments.area));
+    if (dormant) {
+      world.floes()[index].lattice = static_cast<int>(world.lattices().size()) - 1;
+      world.lattices().back().offsets.push_back(stand_in_pose.inverse() * pose);
+    }
+  }
+  int index = 0;
+  for (const OutlineJoint& j : lattice.joints) {
+    const Eigen::Vector2d ca = lattice.elements[j.a].moments.centroid, cb = lattice.elements[j.b].moments.centroid;
+    const double pa = element_yaw[j.a], pb = element_yaw[j.b];
+    IceJoint joint;
+    joint.floe = floe_id;
+    joint.index = index++;
+    joint.body_a = first + j.a;
+    joint.body_b = first + j.b;
+    joint.face_length = j.face_length;
+    const Eigen::Vector2d mid_a = rotate(j.midpoint - ca, -pa), mid_b = rotate(j.midpoint - cb, -pb);
+    const Eigen::Vector2d axis_a = rotate(j.axis, -pa);
+    joint.midpoint_a = Eigen::Vector3d(mid_a.x(), 0, mid_a.y());
+    joint.axis_a = Eigen::Vector3d(axis_a.x(), 0, axis_a.y());
+    // the frames' x along the face's normal, the same direction seen from both bodies
+    const double turn_a = std::atan2(-axis_a.y(), axis_a.x());
+    btTransform frame_a, frame_b;
+    frame_a.setIdentity();
+    frame_b.setIdentity();
+    frame_a.setOrigin(btVector3(mid_a.x(), 0, mid_a.y()));
+    frame_b.setOrigin(btVector3(mid_b.x(), 0, mid_b.y()));
+    frame_a.setRotation(btQuaternion(btVector3(0, 1, 0), turn_a));
+    frame_b.setRotation(btQuaternion(btVector3(0, 1, 0), turn_a + pa - pb));
+    add_element_joint(world, std::move(joint), frame_a, frame_b,
+                      elastic_joint_springs_along(fracture, ice, j.face_length, (cb - ca).norm()), fracture, !dormant);
+  }
+}
+
+}  // namespace
+
 void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, const FractureSettings& fracture,
                       const IceSettings& ice, double friction) {
+  if (!paper_lattice(floe.shape, fracture)) {
+    add_outline_lattice_floe(world, floe, floe_id, y, fracture, ice, friction);
+    return;
+  }
   // the lattice in the floe's principal frame (elements are squares in that frame)
   double yaw0 = 0;
   const double Le = fracture.element_size;
@@ -31,22 +170,9 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
   // far from the structure the floe is one rigid body: its elements wait outside the world
   const bool dormant = fracture.lattice_radius > 0;
   btTransform stand_in_pose;
-  if (dormant) {
-    const FloeShape& whole = world.shape(floe.shape);
-    stand_in_pose.setIdentity();
-    stand_in_pose.setOrigin(btVector3(floe.centre.x(), y, floe.centre.y()));
-    stand_in_pose.setRotation(btQuaternion(btVector3(0, 1, 0), floe.yaw + whole.principal_yaw));
-    DormantLattice d;
-    d.stand_in = world.add_resting_floe(whole, stand_in_pose, floe_id, friction);
-    world.floes()[d.stand_in].stand_in = true;
-    world.floes()[d.stand_in].lattice = static_cast<int>(world.lattices().size());
-    d.first_element = static_cast<int>(world.floes().size());
-    d.elements = static_cast<int>(lattice.centres.size());
-    d.first_joint = static_cast<int>(world.joints().size());
-    d.joints = static_cast<int>(lattice.joints.size());
-    d.radius = whole.radius;
-    world.lattices().push_back(std::move(d));
-  }
+  if (dormant)
+    add_stand_in(world, floe, floe_id, y, friction, static_cast<int>(lattice.centres.size()),
+                 static_cast<int>(lattice.joints.size()), stand_in_pose);
 
   const int first = static_cast<int>(world.floes().size());
   for (const Eigen::Vector2d& c : lattice.centres) {
@@ -65,8 +191,7 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
     }
   }
 
-  // fixed joints at the middle of each shared face; softness set on all six axes
-  // (axis -1, Bullet's default for setParam, is silently ignored)
+  // fixed joints at the middle of each shared face
   int index = 0;
   for (const LatticeJoint& j : lattice.joints) {
     IceJoint joint;
@@ -83,27 +208,10 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
     frame_b.setIdentity();
     frame_a.setOrigin(btVector3(mid_a.x(), 0, mid_a.y()));
     frame_b.setOrigin(btVector3(mid_b.x(), 0, mid_b.y()));
-    btRigidBody& body_a = *world.floes()[joint.body_a].body;
-    btRigidBody& body_b = *world.floes()[joint.body_b].body;
     // elastic: springs of the ice, the same at any step (dem/world/joint_springs.hpp); else
-    // Bullet's ERP and CFM below set the stiffness
-    if (fracture.elastic_joints)
-      joint.constraint = std::make_unique<SpringJoint>(body_a, body_b, frame_a, frame_b,
-                                                       elastic_joint_springs(fracture, ice, joint.axis_a), kSpringJointErp);
-    else
-      joint.constraint = std::make_unique<btFixedConstraint>(body_a, body_b, frame_a, frame_b);
-    for (int axis = 0; axis < 6; ++axis) {
-      joint.constraint->setParam(BT_CONSTRAINT_STOP_CFM, fracture.cfm, axis);
-      joint.constraint->setParam(BT_CONSTRAINT_STOP_ERP, fracture.elastic_joints ? kSpringJointErp : fracture.erp, axis);
-    }
-    // more iterations for the joints than for contacts where asked: Bullet solves a
-    // constraint's rows for max(its override, solver.iterations) sweeps, contacts
-    // only for solver.iterations (btSequentialImpulseConstraintSolver)
-    if (fracture.joint_iterations > 0) joint.constraint->setOverrideNumSolverIterations(fracture.joint_iterations);
-    joint.feedback = std::make_unique<btJointFeedback>();
-    joint.constraint->setJointFeedback(joint.feedback.get());
-    // a dormant lattice's joints wait for wake_lattice
-    world.add_joint(std::move(joint), !dormant);
+    // Bullet's ERP and CFM set the stiffness. A dormant lattice's joints wait for wake_lattice
+    const JointSprings springs = elastic_joint_springs(fracture, ice, joint.axis_a);
+    add_element_joint(world, std::move(joint), frame_a, frame_b, springs, fracture, !dormant);
   }
 }
 
@@ -140,7 +248,7 @@ void wake_lattice(World& world, DormantLattice& lattice) {
 }
 
 bool make_dormant(World& world, DormantLattice& lattice) {
-  if (!lattice.replaced || lattice.broken) return false;
+  if (!lattice.replaced || lattice.broken || !lattice.equal_elements) return false;
   std::vector<FloeBody>& floes = world.floes();
   for (int i = 0; i < lattice.elements; ++i)
     if (floes[lattice.first_element + i].frozen) return false;

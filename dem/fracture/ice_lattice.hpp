@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "dem/fracture/element_lattice.hpp"
+#include "dem/fracture/outline_lattice.hpp"
 #include "dem/input/scene.hpp"
 #include "dem/layout/floe_layout.hpp"
 #include "dem/world/world.hpp"
@@ -23,9 +24,20 @@ namespace icedem {
 /// or not a whole number of elements across).
 ElementLattice floe_lattice(const Polygon& outline, double element_size, double& principal_yaw_out);
 
+/// Whether a floe is cut into the paper's lattice (floe_lattice): square elements, and an
+/// outline that is a rectangle a whole number of them across in its principal frame. Every
+/// other breakable floe is an outline lattice (floe_outline_lattice).
+bool paper_lattice(const Polygon& outline, const FractureSettings& fracture);
+
+/// A floe's outline lattice (dem/fracture/outline_lattice.hpp) in its principal frame, and the
+/// yaw of that frame relative to the floe's outline.
+OutlineLattice floe_outline_lattice(const Polygon& outline, const FractureSettings& fracture,
+                                    double& principal_yaw_out);
+
 /// Add a breakable floe: its elements (squares of fracture.element_size in the
-/// floe's principal frame) at height `y`, joined at the middle of each shared
-/// face with the fracture settings' softness (elastic joints: springs of `ice`);
+/// floe's principal frame, or the outline lattice's elements) at height `y`, joined at the
+/// middle of each shared face with the fracture settings' softness (elastic joints: springs
+/// of `ice`);
 /// with fracture.lattice_radius > 0 a stand-in in the world and the lattice
 /// dormant. `friction`: ice against ice.
 void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, const FractureSettings& fracture,

@@ -38,6 +38,11 @@ JointCapacity paper_joint_capacity(double element_size, double thickness, double
                        element_size * thickness * thickness * bending_strength / 6.0, 0.0, 0.0};
 }
 
+JointCapacity scaled(const JointCapacity& c, double ratio) {
+  return JointCapacity{c.compression * ratio, c.shear * ratio, c.bending * ratio, c.tension * ratio,
+                       c.in_plane_bending * ratio * ratio};
+}
+
 std::array<double, kFailureModes> criterion_ratios(const JointLoads& l, const JointCapacity& c) {
   auto r = [](double load, double capacity) { return capacity > 0 ? std::max(load, 0.0) / capacity : 0.0; };
   std::array<double, kFailureModes> ratios{};

@@ -48,6 +48,10 @@ struct JointCapacity {
 JointCapacity paper_joint_capacity(double element_size, double thickness, double compressive_strength,
                                    double shear_strength, double bending_strength);
 
+/// The capacities of a joint whose face is `ratio` times as long as the one `c` is for: every
+/// capacity in proportion to the face's length, the in-plane bending to its square.
+JointCapacity scaled(const JointCapacity& c, double ratio);
+
 /// Number of failure criteria (FailureMode values 0 .. kFailureModes - 1).
 constexpr int kFailureModes = 5;
 

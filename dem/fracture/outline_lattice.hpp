@@ -10,10 +10,12 @@
 // second moments of its part (its mass and inertia follow), and two elements are joined
 // where their parts share a stretch of their cells' common face, with that stretch's length
 // (a joint's capacities scale with it, eqs. 1-3). A part smaller than `min_fraction` of a
-// cell is merged into the neighbour it shares the longest face with (a sliver of a few
-// percent of a cell would be a body of a few grams beside ones of a kilogram: a stiff, badly
-// conditioned row for the contact solve), or dropped if it shares none; the area dropped is
-// reported. A rectangle of whole elements gives make_element_lattice's lattice exactly.
+// cell joins the neighbour it shares the longest face with, if the two make a convex body (a
+// sliver of a few percent of a cell is a body of a few grams beside ones of half a kilogram);
+// where they would not (a hexagon with a sliver of the next cell), it stays an element of its
+// own, since a body is a convex prism whose mass is its hull's. A part that shares no face is
+// dropped and its area reported. A rectangle of whole elements gives make_element_lattice's
+// lattice exactly.
 //
 // Pure geometry in the floe's frame, as make_element_lattice; not yet wired into the
 // world (elements with outlines other than squares need convex-hull shapes and per-joint
@@ -25,15 +27,12 @@
 
 #include <Eigen/Core>
 
-#include "dem/fracture/element_lattice.hpp"
+#include "dem/input/scene.hpp"
 #include "dem/layout/polygon.hpp"
 
 namespace icedem {
 
-enum class ElementShape { kSquare, kHexagon };
-
-/// "square" or "hexagon"; throws std::invalid_argument otherwise.
-ElementShape element_shape(const std::string& name);
+/// "square" or "hexagon" (fracture.element_shape's names).
 const char* element_shape_name(ElementShape shape);
 
 /// One element of an outline lattice.

@@ -282,7 +282,14 @@ std::vector<KeySpec> make_keys() {
                      "the structure's load normal to a floe reaches the breaking edge load of a "
                      "floating beam (docs/model/breakage.md)"));
   k.push_back(real("fracture.element_size", "m", 0.15, 0.01, 100.0,
-                       "side of the square ice elements (paper: 0.15 / 0.20 m)"));
+                       "side of the square ice elements (paper: 0.15 / 0.20 m); for hexagons, the distance "
+                       "between neighbouring elements' centres (their width across flats)"));
+  k.push_back(choice("fracture.element_shape", "square", {"square", "hexagon"},
+                     "the ice elements' shape: \"square\" (the paper's) or \"hexagon\". A floe that is a "
+                     "rectangle a whole number of squares across is cut into them; any other outline (a photo's, "
+                     "a layout file's) and every hexagonal lattice is filled with elements cut at the outline, "
+                     "joined across the faces they share, each joint's capacities and springs scaled by its "
+                     "face's length (docs/model/breakage.md)"));
   k.push_back(real("fracture.cfm", "-", 1.0e-10, 0.0, 1.0,
                    "constraint force mixing of the element joints (Bullet units); the joints' "
                    "stiffness depends on it and on the step: recalibrate (icedem calibrate) when "

@@ -154,9 +154,12 @@ struct CouplingSettings {
 // analytic: rigid floes that split when the structure's load reaches the breaking edge load
 // of a floating beam (dem/fracture/fracture_split.hpp)
 enum class FractureMode { kOff, kOn, kAuto, kAnalytic };
+// the ice elements' shape (dem/fracture/outline_lattice.hpp): squares (the paper's), or hexagons
+enum class ElementShape { kSquare, kHexagon };
 struct FractureSettings {
   FractureMode mode;
-  double element_size;  // m
+  double element_size;  // m: a square's side, or the distance between neighbouring hexagons' centres
+  ElementShape element_shape;
   double cfm;           // -, Bullet units
   double erp;           // -
   bool elastic_joints;  // joint rows are springs of the ice's modulus (fracture.joint_stiffness = "elastic")

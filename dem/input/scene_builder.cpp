@@ -76,7 +76,10 @@ void check_limits(const Scenario& sc, const Scene& s) {
                                     s.time.duration, s.time.substeps, steps, kMaxSteps));
   if (s.layout.file.empty() && s.validation.kind == ValidationKind::kNone) {
     const double floes = s.ice.concentration * s.channel.length * s.channel.width / (s.ice.floe_size * s.ice.floe_size);
-    const double per_floe = generated_floes_breakable(s) ? std::pow(s.ice.floe_size / s.fracture.element_size, 2) : 1.0;
+    // a hexagon of element_size across flats holds sqrt(3)/2 of that square's area
+    const double per_cell = s.fracture.element_shape == ElementShape::kHexagon ? 2.0 / std::sqrt(3.0) : 1.0;
+    const double per_floe =
+        generated_floes_breakable(s) ? per_cell * std::pow(s.ice.floe_size / s.fracture.element_size, 2) : 1.0;
     if (floes > kMaxBodies)
       fail_key(sc, blamed(sc, {"ice.floe_size", "channel.length", "channel.width", "ice.concentration"}), fmt::format("{:.3g} floes of this size fill the channel, more than {:.0e}; use larger "
                                             "floes or a smaller channel", floes, kMaxBodies));
@@ -274,6 +277,8 @@ Scene make_scene(const Scenario& sc) {
                                           {"auto", FractureMode::kAuto},
                                           {"analytic", FractureMode::kAnalytic}});
   s.fracture.element_size = real(sc, "fracture.element_size");
+  s.fracture.element_shape =
+      choice<ElementShape>(sc, "fracture.element_shape", {{"square", ElementShape::kSquare}, {"hexagon", ElementShape::kHexagon}});
   s.fracture.cfm = real(sc, "fracture.cfm");
   s.fracture.erp = real(sc, "fracture.erp");
   s.fracture.elastic_joints = choice<bool>(sc, "fracture.joint_stiffness", {{"cfm", false}, {"elastic", true}});
@@ -303,8 +308,9 @@ Scene make_scene(const Scenario& sc) {
                          "the characteristic length {:.3g} m): a lattice needs a whole number of elements across; "
                          "a spread of sizes is for rigid floes (fracture.mode \"off\" or \"analytic\")",
                          largest_generated_floe(s), s.fracture.characteristic_length));
-  if (generated_floes_breakable(s) && s.layout.file.empty() && s.validation.kind == ValidationKind::kNone) {
-    // generated square floes must be a whole number of elements across
+  if (generated_floes_breakable(s) && s.layout.file.empty() && s.validation.kind == ValidationKind::kNone &&
+      s.fracture.element_shape == ElementShape::kSquare) {
+    // generated square floes must be a whole number of square elements across (the paper's lattice)
     if (const double n = s.ice.floe_size / s.fracture.element_size; !whole(n))
       fail_key(sc, "fracture.element_size",
                fmt::format("ice.floe_size = {} m is not a whole number of elements ({:.3f}); choose an element size "
@@ -343,6 +349,10 @@ Scene make_scene(const Scenario& sc) {
   if (s.validation.kind != ValidationKind::kNone && s.fracture.mode != FractureMode::kOn)
     fail_key(sc, "fracture.mode", fmt::format("the {} case needs ice elements: set fracture.mode = \"on\"",
                                               get<std::string>(sc, "validation.case")));
+  if (s.validation.kind != ValidationKind::kNone && s.fracture.element_shape != ElementShape::kSquare)
+    fail_key(sc, "fracture.element_shape", fmt::format("\"square\" for the {} case: its load and its beam theory are "
+                                                       "laid out for square elements",
+                                                       get<std::string>(sc, "validation.case")));
   if (s.validation.kind == ValidationKind::kPlateDeflection) {
     if (const double n = s.validation.plate_size / s.fracture.element_size; !whole(n))
       fail_key(sc, "validation.plate_size", fmt::format("is not a whole number of elements of fracture.element_size = {} m "

@@ -153,18 +153,20 @@ Layout scene_layout(const Scene& scene, const std::function<void(double)>& on_pr
     }
   }
   refuse_floes_in_structure(scene, layout.floes);
-  // breakable floes must cut into elements (rectangles a whole number of elements across):
-  // refused here, naming the input the floes came from, before anything is built
-  for (const Floe& floe : layout.floes)
-    if (is_breakable(scene, floe.shape)) {
-      double yaw = 0;
-      try {
-        floe_lattice(floe.shape, scene.fracture.element_size, yaw);
-      } catch (const InputError& e) {
-        throw InputError(fmt::format("{}: {}", scene.layout.file.empty() ? scene.source_path : scene.layout.file,
-                                     e.what()));
-      }
-    }
+  // a breakable floe is cut into the paper's lattice (a rectangle of whole squares) or filled
+  // with elements cut at its outline; one too small to hold an element is refused here,
+  // naming the input the floes came from, before anything is built
+  for (std::size_t i = 0; i < layout.floes.size(); ++i) {
+    const Floe& floe = layout.floes[i];
+    if (!is_breakable(scene, floe.shape) || paper_lattice(floe.shape, scene.fracture)) continue;
+    double yaw = 0;
+    if (floe_outline_lattice(floe.shape, scene.fracture, yaw).elements.empty())
+      throw InputError(fmt::format("{}: floe {} ({:.4g} m^2) is smaller than a quarter of an element of "
+                                   "fracture.element_size = {} m; make it rigid (fracture.mode = \"auto\" "
+                                   "or \"off\") or the elements smaller",
+                                   scene.layout.file.empty() ? scene.source_path : scene.layout.file, i,
+                                   area(floe.shape), scene.fracture.element_size));
+  }
   return layout;
 }
 

@@ -20,4 +20,14 @@ JointSprings elastic_joint_springs(const FractureSettings& f, const IceSettings&
   return f.stiffness_scale * k;
 }
 
+JointSprings elastic_joint_springs_along(const FractureSettings& f, const IceSettings& ice, double face_length,
+                                         double distance) {
+  const double E = ice.elastic_modulus, G = E / (2.0 * (1.0 + ice.poisson_ratio));
+  const double H = ice.thickness, L = face_length, d = distance;
+  JointSprings k;
+  k << E * L * H / d, G * L * H / d, G * L * H / d,  // axial, shear up, shear across
+      G * L * H * H * H / 3.0 / d, E * H * L * L * L / 12.0 / d, E * L * H * H * H / 12.0 / d;  // torsion, bending
+  return f.stiffness_scale * k;
+}
+
 }  // namespace icedem

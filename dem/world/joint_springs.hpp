@@ -42,6 +42,16 @@ using JointSprings = Eigen::Matrix<double, 6, 1>;
 JointSprings elastic_joint_springs(const FractureSettings& fracture, const IceSettings& ice,
                                    const Eigen::Vector3d& axis_a);
 
+/// The springs of a joint in its own frame (x along the joint axis, y up, z across) between
+/// two elements whose centres are `distance` apart and which share a face `face_length` long
+/// (elements cut at a floe's outline, hexagons: dem/fracture/outline_lattice.hpp): the ice
+/// between the centres a beam of that length and of cross-section face_length x H, so axial
+/// E f H / d, shear G f H / d, torsion G (f H^3 / 3) / d, in-plane bending E (H f^3 / 12) / d,
+/// out-of-plane bending E (f H^3 / 12) / d, times fracture.stiffness_scale. For two squares
+/// of side L (f = d = L) these are elastic_joint_springs' with the axis along x.
+JointSprings elastic_joint_springs_along(const FractureSettings& fracture, const IceSettings& ice, double face_length,
+                                         double distance);
+
 /// The stop ERP a spring joint's rows are written with: Bullet writes the position
 /// error e as erp e / h, the solver reads it back (any erp > 0 would do; fracture.erp is
 /// for Bullet's own joints).

@@ -90,6 +90,7 @@ struct IceJoint {
   int body_a, body_b;          // indices into World::floes()
   Eigen::Vector3d midpoint_a;  // m, joint midpoint in A's body frame
   Eigen::Vector3d axis_a;      // unit, from A's centre to B's, in A's body frame
+  double face_length = 0;      // m, the face the two elements share; 0: fracture.element_size (a square's side)
 };
 
 /// A breakable floe simulated as one rigid body (its stand-in) while it is
@@ -102,6 +103,7 @@ struct DormantLattice {
   double radius;                      // m, farthest outline vertex from the floe's centroid
   bool replaced = false;              // the lattice is in the world, the stand-in is not
   bool broken = false;                // a joint has broken: it stays a lattice
+  bool equal_elements = true;         // its elements are equal squares (else, once woken, it stays a lattice)
 };
 
 /// What a World is made with (from the Scene: world_settings() in dem/step/world_builder.hpp).

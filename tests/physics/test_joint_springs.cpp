@@ -53,6 +53,14 @@ TEST(JointSprings, RowsAreTheIceBetweenTwoElementCentres) {
   EXPECT_DOUBLE_EQ(z(0), 2 * G * H);
   EXPECT_DOUBLE_EQ(z(5), 2 * G * H * H * H / 3);
   EXPECT_DOUBLE_EQ(z(3), 2 * E * H * H * H / 12);
+  // in a joint's own frame, for elements cut at an outline: between two squares (face and
+  // distance L) the rows along x above; a face half as long at the same distance holds half
+  // of every row but the in-plane bending, an eighth (its section's L^3)
+  const JointSprings own = elastic_joint_springs_along(f, ice, L, L);
+  for (int r = 0; r < 6; ++r) EXPECT_NEAR(own(r), 2 * x(r), 1e-9 * own(r)) << r;
+  const JointSprings half = elastic_joint_springs_along(f, ice, L / 2, L);
+  for (int r : {0, 1, 2, 3, 5}) EXPECT_NEAR(half(r), own(r) / 2, 1e-9 * own(r)) << r;
+  EXPECT_NEAR(half(4), own(4) / 8, 1e-9 * own(4));
 }
 
 // The issue the springs solve: with Bullet's ERP and CFM the plate's modulus grows as

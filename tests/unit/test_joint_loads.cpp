@@ -23,6 +23,16 @@ TEST(JointCapacity, MatchesThePaperThresholds) {
   EXPECT_LE(kPaper.tension, 0.0);  // off in paper mode
 }
 
+TEST(JointCapacity, AFacesCapacitiesFollowItsLength) {
+  // eqs. 1-3 for a face of half the length: half of each capacity (a cut element's face)
+  const JointCapacity half = scaled(kPaper, 0.5);
+  const JointCapacity paper_half = paper_joint_capacity(0.075, 0.033, 145.6e3, 72.8e3, 36.4e3);
+  EXPECT_NEAR(half.compression, paper_half.compression, 1e-9);
+  EXPECT_NEAR(half.shear, paper_half.shear, 1e-9);
+  EXPECT_NEAR(half.bending, paper_half.bending, 1e-12);
+  EXPECT_LE(half.tension, 0.0);  // off stays off
+}
+
 TEST(JointLoads, WrenchMovesToTheJointMidpoint) {
   // element A centred at the origin, B along +x; the joint at x = 0.075.
   // a vertical force F on A at its centre, no torque: at the midpoint it is a

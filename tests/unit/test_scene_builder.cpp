@@ -30,6 +30,7 @@ std::string chosen(const Scene& s, const std::string& key) {
   if (key == "activation.islands") return std::to_string(static_cast<int>(s.activation.islands));
   if (key == "validation.case") return std::to_string(static_cast<int>(s.validation.kind));
   if (key == "water.buoyancy") return std::to_string(s.water.linear_buoyancy);
+  if (key == "fracture.element_shape") return std::to_string(static_cast<int>(s.fracture.element_shape));
   return "";  // a choice key this test does not know: it fails below
 }
 
