@@ -183,11 +183,17 @@ OutlineLattice fill_outline(const Polygon& outline_in, double element_size, Elem
   // continues its neighbour's rectangle, but a hexagon with a sliver of the next cell is not
   // convex, and its hull's mass was up to a fifth more than its ice (measured on a photo's floe
   // of 0.15 m hexagons: 3.6 % of the floe's mass in all). Such a part stays an element of its
-  // own, joined by its short faces, whose capacities are as small as its faces
+  // own, joined by its short faces, whose capacities are as small as its faces. Convexity is
+  // judged against all a host holds so far (two slivers on two sides of a corner square
+  // would leave the corner out)
+  std::vector<std::vector<Eigen::Vector2d>> held(parts.size());
+  std::vector<double> held_area(parts.size());
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    held[p].assign(parts[p].begin(), parts[p].end()), held_area[p] = moments[p].area;
   auto convex_union = [&](int p, int q) {
-    std::vector<Eigen::Vector2d> both(parts[p].begin(), parts[p].end());
-    both.insert(both.end(), parts[q].begin(), parts[q].end());
-    const double together = moments[p].area + moments[q].area;
+    std::vector<Eigen::Vector2d> both(held[q]);
+    both.insert(both.end(), parts[p].begin(), parts[p].end());
+    const double together = held_area[q] + moments[p].area;
     return area(convex_hull(both)) <= together * (1.0 + 1e-9) + eps * eps;
   };
   for (std::size_t p = 0; p < parts.size(); ++p) {
@@ -205,6 +211,8 @@ OutlineLattice fill_outline(const Polygon& outline_in, double element_size, Elem
     }
     if (best >= 0) {
       host[p] = best;
+      held[best].insert(held[best].end(), parts[p].begin(), parts[p].end());
+      held_area[best] += moments[p].area;
     } else if (!any_face || moments[p].area < kLeast * cell_area(w, shape)) {
       dropped[p] = 1;
       lattice.dropped_area += moments[p].area;
