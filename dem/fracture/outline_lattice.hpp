@@ -17,9 +17,9 @@
 // dropped and its area reported. A rectangle of whole elements gives make_element_lattice's
 // lattice exactly.
 //
-// Pure geometry in the floe's frame, as make_element_lattice; not yet wired into the
-// world (elements with outlines other than squares need convex-hull shapes and per-joint
-// face lengths there).
+// Pure geometry in the floe's frame, as make_element_lattice; dem/fracture/ice_lattice.cpp
+// makes the bodies (each the prism of an element's hull, on its own principal axes) and the
+// joints (frames along each face's normal, capacities and springs by its length).
 #pragma once
 
 #include <string>
