@@ -175,8 +175,6 @@ OutlineLattice fill_outline(const Polygon& outline_in, double element_size, Elem
   std::vector<CentroidalMoments> moments(parts.size());
   for (std::size_t p = 0; p < parts.size(); ++p) moments[p] = centroidal_moments(parts[p]);
   OutlineLattice lattice;
-  lattice.element_size = w;
-  lattice.shape = shape;
   std::vector<char> dropped(parts.size(), 0);
   // a small part joins a neighbour only where the two make a convex body (a body is a convex
   // prism, whose mass and buoyancy are its hull's): a square's sliver along a straight edge
@@ -219,24 +217,19 @@ OutlineLattice fill_outline(const Polygon& outline_in, double element_size, Elem
     }
   }
 
-  // the elements: each kept part with the small parts it hosts
+  // the elements: each kept part with the small parts it hosts (their vertices in `held`)
   std::vector<int> element_of(parts.size(), -1);
-  std::vector<std::vector<Eigen::Vector2d>> points;
   for (std::size_t p = 0; p < parts.size(); ++p)
     if (host[p] == int(p) && !dropped[p]) {
       element_of[p] = int(lattice.elements.size());
-      lattice.elements.push_back({{}, moments[p]});
-      points.emplace_back(parts[p].begin(), parts[p].end());
+      lattice.elements.push_back({without_repeats(make_ccw(convex_hull(held[p])), 1e-9 * w), moments[p]});
     }
   for (std::size_t p = 0; p < parts.size(); ++p)
     if (host[p] != int(p)) {
       const int e = element_of[host[p]];
       element_of[p] = e;
       lattice.elements[e].moments = combined(lattice.elements[e].moments, moments[p]);
-      points[e].insert(points[e].end(), parts[p].begin(), parts[p].end());
     }
-  for (std::size_t e = 0; e < lattice.elements.size(); ++e)
-    lattice.elements[e].hull = without_repeats(make_ccw(convex_hull(points[e])), 1e-9 * w);
 
   // the joints: faces between two elements, those between the same two summed (a merged
   // part's face continues its host's)

@@ -22,7 +22,6 @@
 // joints (frames along each face's normal, capacities and springs by its length).
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -50,8 +49,6 @@ struct OutlineJoint {
 };
 
 struct OutlineLattice {
-  double element_size = 0;  // m: a square's side, or a hexagon's distance between neighbouring centres
-  ElementShape shape = ElementShape::kSquare;
   std::vector<OutlineElement> elements;
   std::vector<OutlineJoint> joints;
   double dropped_area = 0;  // m^2: parts below min_fraction of a cell sharing no face
