@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include <Eigen/Cholesky>
+#include "dem/contact/lattice_mass.hpp"
 
 namespace icedem {
 namespace {
@@ -15,11 +15,6 @@ namespace {
 // steps between two evaluations of the merit (it costs about as much as a step's
 // products; on the problem library every 4th step took 20 % less CPU than every step)
 constexpr int kCheckEvery = 4;
-
-// the largest group of bodies joined by joints that is folded into its mass matrix (a dense
-// inverse of 6 x 24 = 144 rows: a 0.6 m floe of 0.15 m elements has 16); an island with a
-// larger one keeps its joint rows as unknowns
-constexpr int kMaxFoldedBodies = 24;
 
 // R rows of J on their one or two bodies (-1: none): a joint row (R = 1) or a contact's
 // side kept apart (ContactRows below, R = 3). Plain arrays of six, one per row, so that
@@ -161,13 +156,13 @@ void contact_products(const std::vector<ContactRows>& contacts, const std::vecto
 //
 // Soft joints (every lattice's) are folded into the mass matrix of the lattice they join:
 // Mt = M + Jj^T C^-1 Jj and ft = M v_free - Jj^T C^-1 b over each group of bodies joined by
-// joints (a floe's elements), inverted once per island (a dense matrix of six times the
-// elements a side). The iteration then runs on the contacts alone, and each joint row's
-// impulse follows from the velocities, l = -(Jj v + b) / C. Stiff springs beside the
-// contacts were what the iteration converged slowly on: on islands of the 0.20 m lattices
-// the rows as unknowns took 180-350 steps to a merit of 1e-3, the folded form 5-49.
-// A rigid joint row (compliance 0) cannot be folded, nor a lattice of more than
-// kMaxFoldedBodies elements be inverted every step: then every row stays an unknown.
+// joints (a floe's elements), factorised once per island (dem/contact/lattice_mass.hpp: dense
+// for small lattices, sparse for large ones). The iteration then runs on the contacts
+// alone, and each joint row's impulse follows from the velocities, l = -(Jj v + b) / C.
+// Stiff springs beside the contacts were what the iteration converged slowly on: on islands
+// of the 0.20 m lattices the rows as unknowns took 180-350 steps to a merit of 1e-3, the
+// folded form 5-49. A rigid joint row (compliance 0) cannot be folded: then every row
+// stays an unknown.
 class DualProblem {
  public:
   DualProblem(const ContactProblem& p, MeritKind merit_kind)
@@ -183,13 +178,19 @@ class DualProblem {
     nj_ = folded_ ? 0 : nj_all_;
     start_velocity_ = body_velocity_;
     // the inverse masses the contacts' scaling sees: a folded body's block of Mt^-1 (a copy
-    // only for islands with folded lattices; every island of every step pays this set-up)
+    // only for islands with folded lattices; every island of every step pays this set-up),
+    // for the bodies a contact touches (a sparse factor solves for each block)
     std::vector<Eigen::Matrix<double, 6, 6>> folded_inv_mass;
     if (!groups_.empty()) {
       folded_inv_mass = inv_mass_;
-      for (const Group& g : groups_)
-        for (std::size_t k = 0; k < g.bodies.size(); ++k)
-          folded_inv_mass[g.bodies[k]] = g.inverse.block<6, 6>(6 * k, 6 * k);
+      std::vector<char> done(nb_, 0);
+      auto fill = [&](int body) {
+        if (body < 0 || group_of_[body] < 0 || done[body]) return;
+        done[body] = 1;
+        const Group& g = groups_[group_of_[body]];
+        folded_inv_mass[body] = g.mass.inverse_block(local_[body]);
+      };
+      for (const ProblemContact& k : p.contacts) fill(k.a), fill(k.b);
     }
     const auto& scaling = groups_.empty() ? inv_mass_ : folded_inv_mass;
     // J kept as each contact's rows (ContactRows) and each joint row's 1x6 blocks on its
@@ -264,7 +265,7 @@ class DualProblem {
     for (const Group& g : groups_) {
       const int k = static_cast<int>(g.bodies.size());
       for (int b = 0; b < k; ++b) g.impulse.segment<6>(6 * b) = body_impulse_.segment<6>(6 * g.bodies[b]);
-      g.velocity.noalias() = g.inverse * g.impulse;
+      g.mass.solve(g.impulse, g.velocity);
       for (int b = 0; b < k; ++b) body_velocity_.segment<6>(6 * g.bodies[b]) = g.velocity.segment<6>(6 * b);
     }
     gather(rows_free_, rows);
@@ -364,14 +365,13 @@ class DualProblem {
     if (!folded_) row_products(joints_, free.data() + 3 * nc_, body_velocity_.data(), rows.data() + 3 * nc_);
   }
 
-  // Mt^-1 and v_free_t = Mt^-1 ft of each group of bodies joined by joints
+  // Mt, factorised, and v_free_t = Mt^-1 ft of each group of bodies joined by joints
   struct Group {
     std::vector<int> bodies;
-    Eigen::MatrixXd inverse;                    // Mt^-1 over the group's bodies
+    LatticeMass mass{0};                         // Mt over the group's bodies
     mutable Eigen::VectorXd impulse, velocity;  // scratch of row_velocities
   };
-  // false (and nothing folded) if a group has more than kMaxFoldedBodies: its dense inverse
-  // would cost the cube of its size every step (a 2.7 m validation plate of 324 elements)
+  // false (and nothing folded) if a group's Mt is not positive definite
   bool fold(const ContactProblem& p) {
     // the groups: bodies joined by joint rows (union-find)
     std::vector<int> parent(nb_);
@@ -387,7 +387,9 @@ class DualProblem {
       if (j.a >= 0 && j.b >= 0) parent[root(j.a)] = root(j.b);
     }
     group_of_.assign(nb_, -1);
-    std::vector<int> local(nb_, -1), group_of_root(nb_, -1);
+    local_.assign(nb_, -1);
+    std::vector<int>& local = local_;
+    std::vector<int> group_of_root(nb_, -1);
     for (int i = 0; i < nb_; ++i) {
       if (!jointed[i]) continue;
       int& g = group_of_root[root(i)];
@@ -395,12 +397,6 @@ class DualProblem {
       group_of_[i] = g;
       groups_[g].bodies.push_back(i);
     }
-    for (const Group& group : groups_)
-      if (static_cast<int>(group.bodies.size()) > kMaxFoldedBodies) {
-        groups_.clear();
-        group_of_.clear();
-        return false;
-      }
     // a group's bodies in the order of their index in the run (the elements'), not of the
     // island's, which follows Bullet's arrays: a world rebuilt from a checkpoint then
     // factorises the same matrix in the same order, bit for bit
@@ -409,49 +405,54 @@ class DualProblem {
                        [&](int a, int b) { return p.bodies[a].id < p.bodies[b].id; });
       for (std::size_t k = 0; k < group.bodies.size(); ++k) local[group.bodies[k]] = static_cast<int>(k);
     }
-    std::vector<Eigen::MatrixXd> Mt(groups_.size());
     std::vector<Eigen::VectorXd> ft(groups_.size());
     for (std::size_t g = 0; g < groups_.size(); ++g) {
-      const int n = 6 * static_cast<int>(groups_[g].bodies.size());
-      Mt[g] = Eigen::MatrixXd::Zero(n, n);
-      ft[g].resize(n);
-      for (std::size_t k = 0; k < groups_[g].bodies.size(); ++k) {
+      const int n = static_cast<int>(groups_[g].bodies.size());
+      groups_[g].mass = LatticeMass(n);
+      ft[g].resize(6 * n);
+      for (int k = 0; k < n; ++k) {
         const ProblemBody& body = p.bodies[groups_[g].bodies[k]];
         Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero();
         M.topLeftCorner<3, 3>() = (Eigen::Vector3d::Constant(body.mass) + body.added_mass).asDiagonal();
         M.bottomRightCorner<3, 3>() = body.inertia;
-        Mt[g].block<6, 6>(6 * k, 6 * k) = M;
+        groups_[g].mass.add(k, k, M);
         ft[g].segment<6>(6 * k) = M * body.free_velocity;
       }
     }
     for (const ProblemJointRow& j : p.joints) {
       const int body = j.a >= 0 ? j.a : j.b;
       const int g = group_of_[body];
-      // the row's J over the group's dofs: at most two blocks of six
-      const int ia = j.a >= 0 ? 6 * local[j.a] : -1, ib = j.b >= 0 ? 6 * local[j.b] : -1;
+      // the row's J over the group's elements: at most two blocks of six
+      const int ia = j.a >= 0 ? local[j.a] : -1, ib = j.b >= 0 ? local[j.b] : -1;
       const double c = 1.0 / j.compliance;
       for (int u = 0; u < 2; ++u) {
         const int iu = u == 0 ? ia : ib;
         if (iu < 0) continue;
         const RowJacobian& Ju = u == 0 ? j.ja : j.jb;
-        ft[g].segment<6>(iu) -= c * j.bias * Ju.transpose();
+        ft[g].segment<6>(6 * iu) -= c * j.bias * Ju.transpose();
         for (int w = 0; w < 2; ++w) {
           const int iw = w == 0 ? ia : ib;
           if (iw < 0) continue;
           const RowJacobian& Jw = w == 0 ? j.ja : j.jb;
-          Mt[g].block<6, 6>(iu, iw) += c * Ju.transpose() * Jw;
+          groups_[g].mass.add(iu, iw, c * Ju.transpose() * Jw);
         }
       }
     }
+    for (std::size_t g = 0; g < groups_.size(); ++g)
+      if (!groups_[g].mass.factorise()) {
+        groups_.clear();
+        group_of_.clear();
+        local_.clear();
+        return false;
+      }
     for (std::size_t g = 0; g < groups_.size(); ++g) {
       Group& group = groups_[g];
-      const Eigen::LLT<Eigen::MatrixXd> llt(Mt[g]);
-      group.inverse = llt.solve(Eigen::MatrixXd::Identity(Mt[g].rows(), Mt[g].cols()));
-      const Eigen::VectorXd v = group.inverse * ft[g];
+      Eigen::VectorXd v(ft[g].size());
+      group.mass.solve(ft[g], v);
       for (std::size_t k = 0; k < group.bodies.size(); ++k)
         body_velocity_.segment<6>(6 * group.bodies[k]) = v.segment<6>(6 * k);
-      group.impulse.resize(Mt[g].rows());
-      group.velocity.resize(Mt[g].rows());
+      group.impulse.resize(ft[g].size());
+      group.velocity.resize(ft[g].size());
     }
     return true;
   }
@@ -460,6 +461,7 @@ class DualProblem {
   bool folded_ = false;
   std::vector<Group> groups_;
   std::vector<int> group_of_;             // each body's group, -1 if it has no joint
+  std::vector<int> local_;                // each body's index in its group
   Eigen::VectorXd start_velocity_, bias_, all_compliance_;  // v_free (v_free_t if folded); every joint row's b, C
   std::vector<ContactRows> contacts_;
   std::vector<SideRows> sides_;                          // b sides not opposite to a (none of Bullet's)

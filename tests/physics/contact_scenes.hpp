@@ -173,17 +173,17 @@ inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e
 }
 inline ContactProblem sliding_row() { return sliding_row_step("pgs").problem; }
 
-// Two lattices of 0.15 m elements (a 0.6 x 0.3 m strip, a 0.3 x 0.3 m square),
-// frictionless, the square pushed into the strip at 0.2 m/s; joints soft (the 0.15 m
-// paper CFM) and unbreakable; solved to 1e-9 by Bullet's rows. `keep` gets the problem
-// of the first step in which they touch (none if they never do).
-inline void pushed_lattices(Keep& keep) {
+// Two lattices of 0.15 m elements (a strip, 0.6 x 0.3 m unless given, and a 0.3 x 0.3 m
+// square), frictionless, the square pushed into the strip's end at 0.2 m/s; joints soft
+// (the 0.15 m paper CFM) and unbreakable; solved to 1e-9 by Bullet's rows. `keep` gets the
+// problem of the first step in which they touch (none if they never do).
+inline void pushed_lattices(Keep& keep, double strip_length = 0.6, double strip_width = 0.3) {
   // Bullet's CFM joints swept by its rows: the rows' own answer is the one under test
   const Scene scene = bench({"solver.method=pgs", "fracture.joint_stiffness=cfm", "fracture.cfm=0.00743",
                              "friction.ice_ice=0", "solver.tolerance=1e-9", "solver.iterations=20000",
                              "fracture.joint_iterations=20000"});
-  Floe square = square_floe(10.0 + 0.45 + 0.002, 0.0, 0.3);
-  State state = initial_state(scene, {strip(0.6, 0.3), square});
+  Floe square = square_floe(10.0 + strip_length / 2 + 0.15 + 0.002, 0.0, 0.3);
+  State state = initial_state(scene, {strip(strip_length, strip_width), square});
   for (FloeBody& f : state.world->floes())
     if (f.floe_id == 1) f.body->setLinearVelocity(btVector3(-0.2, 0, 0));
   state.world->set_problem_observer(&keep);
