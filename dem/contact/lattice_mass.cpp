@@ -9,7 +9,8 @@ struct LatticeMass::Sparse {
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> cholesky;
 };
 
-LatticeMass::LatticeMass(int elements) : n_(elements) {
+LatticeMass::LatticeMass(int elements, Form form)
+    : n_(elements), sparse_form_(form == Form::kSparse || (form == Form::kBySize && elements > kDenseElements)) {
   if (sparse())
     entries_.reserve(static_cast<std::size_t>(36) * 5 * n_);  // own blocks and about four joined pairs
   else

@@ -26,13 +26,17 @@ class LatticeMass {
   // elements)
   static constexpr int kDenseElements = 24;
 
-  explicit LatticeMass(int elements);
+  // which form: by size (kDenseElements), or one of the two (the benchmark that chose
+  // kDenseElements measures both at every size: bench/micro/lattice_mass.cpp)
+  enum class Form { kBySize, kDense, kSparse };
+
+  explicit LatticeMass(int elements, Form form = Form::kBySize);
   ~LatticeMass();
   LatticeMass(LatticeMass&&) noexcept;
   LatticeMass& operator=(LatticeMass&&) noexcept;
 
   int elements() const { return n_; }
-  bool sparse() const { return n_ > kDenseElements; }
+  bool sparse() const { return sparse_form_; }
 
   // Mt's block of elements i and j += m (i == j: the element's own; a joint adds both
   // (i, j) and (j, i)). Before factorise().
@@ -48,6 +52,7 @@ class LatticeMass {
  private:
   struct Sparse;
   int n_;
+  bool sparse_form_;
   Eigen::MatrixXd dense_;  // Mt, then Mt^-1 (dense lattices)
   std::vector<Eigen::Triplet<double>> entries_;  // Mt's entries (sparse lattices)
   std::unique_ptr<Sparse> sparse_;

@@ -1,0 +1,88 @@
+// A lattice's folded mass matrix (dem/contact/lattice_mass.hpp), dense against sparse, at
+// the sizes runs meet: what a step of the contact solve pays for it. Per island and step
+// the method factorises Mt once (the dense form also inverts it) and then applies Mt^-1
+// once per gradient step (tens to hundreds a step). The lattice is a grid of square
+// elements of 0.15 m joined to their four neighbours, each joint a stiff 6 x 6 block as a
+// fixed joint's rows fold in (J^T C^-1 J). Its pattern is what the cost follows.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+
+#include "dem/contact/lattice_mass.hpp"
+
+using namespace icedem;
+
+namespace {
+
+// Mt of a side x side grid: element mass and inertia of a 0.15 m, 0.033 m thick element,
+// joint blocks from a fixed joint's six rows between neighbours (lever arms of half an
+// element), C^-1 = 1e5 (about a lattice's: C ~ 1e-3 of its rows' inverse mass)
+void fill(LatticeMass& mass, int side) {
+  const double m = 0.15 * 0.15 * 0.033 * 900.0;
+  Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero();
+  M.diagonal() << m, m, m, m * 0.15 * 0.15 / 12, m * 0.15 * 0.15 / 12, m * 0.15 * 0.15 / 6;
+  for (int k = 0; k < side * side; ++k) mass.add(k, k, M);
+  auto join = [&](int a, int b, const Eigen::Vector3d& offset) {
+    // rows: relative velocity at the joint point (3), relative angular velocity (3)
+    Eigen::Matrix<double, 6, 6> ja = Eigen::Matrix<double, 6, 6>::Identity(), jb = -ja;
+    Eigen::Matrix3d skew;
+    skew << 0, -offset.z(), offset.y(), offset.z(), 0, -offset.x(), -offset.y(), offset.x(), 0;
+    ja.topRightCorner<3, 3>() = -skew;  // v + w x r at the point, r = +offset from a
+    jb.topRightCorner<3, 3>() = -skew;  // from b the point is at -offset: -(v_b + w_b x (-r))
+    const double c = 1e5;
+    mass.add(a, a, c * ja.transpose() * ja);
+    mass.add(b, b, c * jb.transpose() * jb);
+    mass.add(a, b, c * ja.transpose() * jb);
+    mass.add(b, a, c * jb.transpose() * ja);
+  };
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      const int k = i * side + j;
+      if (j + 1 < side) join(k, k + 1, {0.075, 0, 0});
+      if (i + 1 < side) join(k, k + side, {0, 0.075, 0});
+    }
+}
+
+LatticeMass::Form form_of(int64_t f) { return f ? LatticeMass::Form::kSparse : LatticeMass::Form::kDense; }
+
+// the set-up of a step: Mt assembled and factorised (the dense form inverted)
+void BM_LatticeMassFactorise(benchmark::State& s) {
+  const int side = static_cast<int>(s.range(0));
+  for (auto _ : s) {
+    LatticeMass mass(side * side, form_of(s.range(1)));
+    fill(mass, side);
+    benchmark::DoNotOptimize(mass.factorise());
+  }
+  s.SetLabel(std::to_string(side * side) + (s.range(1) ? " elements, sparse" : " elements, dense"));
+}
+
+// one gradient step's Mt^-1 J^T x
+void BM_LatticeMassSolve(benchmark::State& s) {
+  const int side = static_cast<int>(s.range(0));
+  LatticeMass mass(side * side, form_of(s.range(1)));
+  fill(mass, side);
+  mass.factorise();
+  std::mt19937 random(1);
+  std::normal_distribution<double> g;
+  Eigen::VectorXd impulse(6 * side * side), velocity(6 * side * side);
+  for (int i = 0; i < impulse.size(); ++i) impulse(i) = g(random);
+  for (auto _ : s) {
+    mass.solve(impulse, velocity);
+    benchmark::DoNotOptimize(velocity.data());
+  }
+  s.SetLabel(std::to_string(side * side) + (s.range(1) ? " elements, sparse" : " elements, dense"));
+}
+
+// sides 3, 4 (the 0.15 m squares' 16), 5 (25, just above the dense limit), 6, 7, 10, 18 (the
+// 2.7 m validation plate's 324; dense only up to 10: its inverse alone is 0.9 GB a second)
+void sizes(benchmark::internal::Benchmark* b) {
+  for (int side : {3, 4, 5, 6, 7, 10, 18})
+    for (int sparse : {0, 1})
+      if (sparse || side <= 10) b->Args({side, sparse});
+}
+
+}  // namespace
+
+BENCHMARK(BM_LatticeMassFactorise)->Apply(sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LatticeMassSolve)->Apply(sizes)->Unit(benchmark::kMicrosecond);
