@@ -22,6 +22,8 @@ struct StepDiagnostics {
   double solver_iterations = 0;     // most contact sweeps an island used (dem/world/contact_solver.hpp)
   double solver_residual = 0;       // largest residual an island ended its sweeps with
   double solver_capped = 0;         // 1 if an island reached solver.iterations above solver.tolerance
+  double breaking_solves = 0;       // islands solved again for a joint near its capacity (solver.breaking_ratio)
+  double breaking_capped = 0;       // of those, the ones that stopped at solver.breaking_iterations above their merit
   double boundary_load = 0;         // N, fixed bodies' resistance to the structure's push (dem/world/boundary_load.hpp)
   double locked = 0;                // 1 if the boundaries carry kLockedShare of the surge load or more
 };
@@ -64,6 +66,14 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      "1 if an island reached solver.iterations with its residual above solver.tolerance (another "
      "solver.method: solver.method_iterations with its merit above solver.merit_tolerance)",
      &StepDiagnostics::solver_capped},
+    {"breaking_solves", "1",
+     "islands solved again in the step, from their answer, to solver.breaking_merit_tolerance because the answer "
+     "put a joint at solver.breaking_ratio of its capacity or more (methods other than \"pgs\")",
+     &StepDiagnostics::breaking_solves},
+    {"breaking_capped", "1",
+     "of the step's breaking_solves, the islands that stopped at solver.breaking_iterations above "
+     "solver.breaking_merit_tolerance: their joints' loads are no better known than at the joints' merit",
+     &StepDiagnostics::breaking_capped},
     {"boundary_load", "N",
      "load the fixed bodies (walls, mother ice, frozen floes) take off the structure: their contact impulses on "
      "the ice of the islands touching the structure, along its travel, over the step (dem/world/boundary_load.hpp)",

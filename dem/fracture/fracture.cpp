@@ -17,6 +17,47 @@ JointLoads joint_loads(const World& world, const IceJoint& joint) {
                               pose_a.linear() * Eigen::Vector3d::UnitY());
 }
 
+JointCapacity joint_capacity(const Scene& scene, const IceJoint& joint) {
+  const JointCapacity square =
+      paper_joint_capacity(scene.fracture.element_size, scene.ice.thickness, scene.ice.compressive_strength,
+                           scene.ice.shear_strength, scene.ice.bending_strength);
+  // a joint's capacities are its face's (eqs. 1-3: each is proportional to the face's length)
+  return joint.face_length > 0 ? scaled(square, joint.face_length / scene.fracture.element_size) : square;
+}
+
+double largest_joint_ratio(const Scene& scene, const World& world, const ContactProblem& p, const Eigen::VectorXd& l) {
+  // the wrench each joint's rows put on its element A, as Bullet's joint feedback sums it
+  // (J_A^T l / h: the rows' linear and angular parts on A)
+  struct Wrench {
+    Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
+  };
+  std::vector<std::pair<int, Wrench>> on_a;  // joint index in World::joints(), wrench
+  for (std::size_t r = 0; r < p.joints.size(); ++r) {
+    const ProblemJointRow& row = p.joints[r];
+    if (row.joint < 0) continue;
+    const IceJoint& joint = world.joints()[row.joint];
+    const bool a_first = row.a >= 0 && p.bodies[row.a].id == joint.body_a;
+    if (!a_first && !(row.b >= 0 && p.bodies[row.b].id == joint.body_a)) continue;
+    const RowJacobian& j = a_first ? row.ja : row.jb;
+    if (on_a.empty() || on_a.back().first != row.joint) on_a.emplace_back(row.joint, Wrench{});
+    Wrench& w = on_a.back().second;
+    w.force += j.head<3>().transpose() * (l(static_cast<int>(r)) / p.dt);
+    w.torque += j.tail<3>().transpose() * (l(static_cast<int>(r)) / p.dt);
+  }
+  double largest = 0;
+  for (const auto& [index, w] : on_a) {
+    const IceJoint& joint = world.joints()[index];
+    const Eigen::Isometry3d pose_a = body_pose(*world.floes()[joint.body_a].body);
+    const JointLoads loads = decompose_joint_load(w.force, w.torque, pose_a.translation(), pose_a * joint.midpoint_a,
+                                                  pose_a.linear() * joint.axis_a,
+                                                  pose_a.linear() * Eigen::Vector3d::UnitY());
+    double ratio = 0;
+    failure_mode(loads, joint_capacity(scene, joint), ratio);
+    largest = std::max(largest, ratio);
+  }
+  return largest;
+}
+
 namespace {
 
 // First-order low-pass y += a (x - y), a = h / (tau + h): a load held for much
@@ -38,9 +79,6 @@ void check_fracture(const Scene& scene, World& world, double time, const Eigen::
                     FractureState& fracture) {
   std::vector<IceJoint>& joints = world.joints();
   if (joints.empty()) return;
-  const JointCapacity capacity =
-      paper_joint_capacity(scene.fracture.element_size, scene.ice.thickness, scene.ice.compressive_strength,
-                           scene.ice.shear_strength, scene.ice.bending_strength);
   const double tau = scene.fracture.load_filter_time;
   const double a = h / (tau + h);
   if (tau > 0 && fracture.filtered_joint_loads.size() != joints.size())
@@ -65,9 +103,7 @@ void check_fracture(const Scene& scene, World& world, double time, const Eigen::
       low_pass(fracture.filtered_joint_loads[i], loads, a);
       loads = fracture.filtered_joint_loads[i];
     }
-    // a joint's capacities are its face's (eqs. 1-3: each is proportional to the face's length)
-    const JointCapacity own = joint.face_length > 0 ? scaled(capacity, joint.face_length / scene.fracture.element_size)
-                                                    : capacity;
+    const JointCapacity own = joint_capacity(scene, joint);
     double ratio = 0;
     const FailureMode mode = failure_mode(loads, own, ratio);
     const Eigen::Vector3d at = body_pose(body_a) * joint.midpoint_a;

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "dem/contact/problem.hpp"
 #include "dem/fracture/fracture_state.hpp"
 #include "dem/fracture/joint_loads.hpp"
 #include "dem/input/scene.hpp"
@@ -20,6 +21,17 @@ namespace icedem {
 /// The load on an intact joint in its last Bullet step (joint feedback on
 /// element A, moved to the joint midpoint and split in the joint frame).
 JointLoads joint_loads(const World& world, const IceJoint& joint);
+
+/// The capacities of `joint` (eqs. 1-3 for its face: a square's side unless it has its own).
+JointCapacity joint_capacity(const Scene& scene, const IceJoint& joint);
+
+/// The largest failure ratio (load over capacity, eqs. 1-3) the joints of an island's
+/// contact problem reach with its joint rows' impulses `l` over the problem's step: the
+/// measure of check_fracture, taken on a solve's answer before the step integrates (the
+/// contact solver solves an island again, tighter, when a joint is near breaking:
+/// solver.breaking_ratio).
+double largest_joint_ratio(const Scene& scene, const World& world, const ContactProblem& problem,
+                           const Eigen::VectorXd& l);
 
 /// Check every intact joint of `world` with an awake element after a Bullet step of `h` seconds
 /// that ended at `time`, the structure's reference point at `structure` (low-passing the loads

@@ -106,12 +106,24 @@ std::vector<KeySpec> make_keys() {
                    "to, if below solver.merit_tolerance: the structure's load is read off that island's "
                    "impulses, and a loose solve leaves it low along the force chains (on the paper's "
                    "small-floe run, 3-5 % low at 1e-3; docs/model/convergence.md)"));
+  k.push_back(real("solver.breaking_merit_tolerance", "-", 3e-6, 1e-14, 1.0,
+                   "solver.method other than \"pgs\": an island whose answer puts a joint at "
+                   "solver.breaking_ratio of its capacity or more is solved again, from that answer, to this merit: "
+                   "whether the joint breaks is then decided on loads within about 0.5 % of its bending capacity, "
+                   "where the merit of 1e-4 leaves up to 5 % (on the lattices' breaking steps; "
+                   "docs/model/contact_problems.md). Not below solver.joint_merit_tolerance: off"));
+  k.push_back(real("solver.breaking_ratio", "-", 0.9, 0.0, 10.0,
+                   "solver.method other than \"pgs\": the failure ratio (a joint's load over its capacity, eqs. "
+                   "1-3) from which an island is solved again to solver.breaking_merit_tolerance: 0.9 leaves "
+                   "twice the 5 % the joint merit tolerance's error may reach"));
+  k.push_back(integer("solver.breaking_iterations", 20000, 1, 1000000,
+                      "solver.method other than \"pgs\": cap of the method's iterations when an island is solved "
+                      "again for a joint near its capacity (solver.breaking_merit_tolerance; the gradient method "
+                      "needs up to about 7000 on the lattices' breaking steps)"));
   k.push_back(integer("solver.method_iterations", 1000, 1, 100000,
                       "solver.method other than \"pgs\": cap of the method's iterations per island and Bullet "
                       "step (Newton steps, or sweeps); the paper's small-floe run needs at most 589 gradient steps "
-                      "(1022 on one island in one build); lattices of more than 24 elements, whose joints are not "
-                      "folded, reach it on every step (scenarios/stress/small_elements.toml), where a higher cap "
-                      "costs its multiple in CPU"));
+                      "(1022 on one island in one build), where a higher cap costs its multiple in CPU"));
   k.push_back(integer("solver.position_iterations", 30, 1, 100000,
                       "(profile) cap of the split-impulse position sweeps per island and Bullet step: they push "
                       "penetrating contacts apart by solver.contact_erp of their depth, apart from the contact "

@@ -55,6 +55,9 @@ struct SolverSettings {
   std::string merit;          // which: "impulse" (forces relative to forces) or "siconos" (dem/contact/merit.hpp)
   double joint_merit_tolerance;  // -, the same for an island with joint rows, if smaller
   double structure_merit_tolerance;  // -, the same for an island touching the structure, if smaller
+  double breaking_merit_tolerance;  // -, an island with a joint near its capacity is solved again to this
+  double breaking_ratio;            // -, a joint's failure ratio from which it is
+  int breaking_iterations;          // cap of the method's iterations then
   int method_iterations;      // cap of the method's iterations per island and Bullet step
   int position_iterations;    // cap of the split-impulse position sweeps per island and Bullet step
 };

@@ -140,6 +140,9 @@ Scene make_scene(const Scenario& sc) {
   s.solver.merit = get<std::string>(sc, "solver.merit");
   s.solver.joint_merit_tolerance = real(sc, "solver.joint_merit_tolerance");
   s.solver.structure_merit_tolerance = real(sc, "solver.structure_merit_tolerance");
+  s.solver.breaking_merit_tolerance = real(sc, "solver.breaking_merit_tolerance");
+  s.solver.breaking_ratio = real(sc, "solver.breaking_ratio");
+  s.solver.breaking_iterations = integer(sc, "solver.breaking_iterations");
   s.solver.method_iterations = integer(sc, "solver.method_iterations");
   s.solver.position_iterations = integer(sc, "solver.position_iterations");
 

@@ -44,6 +44,11 @@ std::string solver_line(const SolverSummary& v) {
                            v.method, v.iterations_mean, v.iterations_max, v.cap, v.tolerance,
                            tighter_islands(v),
                            v.residual_max);
+  if (v.breaking_solves > 0)
+    out += fmt::format("  {} islands solved again to a merit of {:g} for a joint near its capacity, {} of them "
+                       "stopped at solver.breaking_iterations above it (/diagnostics/breaking_solves, "
+                       "breaking_capped)\n",
+                       v.breaking_solves, v.breaking_tolerance, v.breaking_capped);
   if (v.tolerance > 0 && v.capped_window_fraction > SolverSummary::kCappedWarning)
     out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached {} = {:d} before "
                        "{} = {:g}: their loads are not converged; raise the cap "
@@ -237,7 +242,10 @@ const std::vector<SummaryField>& summary_fields() {
        "the contact solver over the run: method (solver.method), cap, tolerance, joint_tolerance (islands with "
        "joints; 0 for pgs), structure_tolerance (islands touching the structure; 0 for pgs), iterations_mean and "
        "iterations_max (sweeps per step, or the method's iterations), capped_steps, capped_window_fraction (share of "
-       "the window's steps that hit the cap unconverged), residual_max (the sweeps' residual, or the method's merit)",
+       "the window's steps that hit the cap unconverged), residual_max (the sweeps' residual, or the method's merit), "
+       "breaking_solves (islands solved again to breaking_tolerance, solver.breaking_merit_tolerance, for a joint "
+       "near its capacity; 0 for pgs), breaking_capped (of those, the ones stopped at solver.breaking_iterations above "
+       "it)",
        [](S s) {
          return json{{"method", s.solver.method},
                      {"cap", s.solver.cap},
@@ -248,7 +256,10 @@ const std::vector<SummaryField>& summary_fields() {
                      {"iterations_max", s.solver.iterations_max},
                      {"capped_steps", s.solver.capped_steps},
                      {"capped_window_fraction", s.solver.capped_window_fraction},
-                     {"residual_max", num(s.solver.residual_max)}};
+                     {"residual_max", num(s.solver.residual_max)},
+                     {"breaking_solves", s.solver.breaking_solves},
+                     {"breaking_capped", s.solver.breaking_capped},
+                     {"breaking_tolerance", s.solver.breaking_tolerance}};
        }},
       {"boundary", "", false, false,
        "the fixed boundaries (mother ice, walls, frozen floes) over the analysis window: share_of_surge (their "

@@ -29,6 +29,9 @@ struct SolverSummary {
   long capped_steps = 0;          // steps in which an island reached the cap unconverged
   double capped_window_fraction = 0;  // of the analysis window's steps (the whole run without one)
   double residual_max = 0;
+  long breaking_solves = 0;       // islands solved again for a joint near its capacity (solver.breaking_ratio)
+  long breaking_capped = 0;       // of those, the ones that stopped at their cap above the tighter merit
+  double breaking_tolerance = 0;  // the merit they were solved to (0: off)
   /// More than this fraction of capped steps in the window: the summary warns.
   static constexpr double kCappedWarning = 0.01;
 };

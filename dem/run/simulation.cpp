@@ -125,6 +125,10 @@ SolverSummary solver_summary(const Scene& scene, const RunHistory& h, const RunS
   v.tolerance = sweeps ? scene.solver.tolerance : scene.solver.merit_tolerance;
   v.joint_tolerance = sweeps ? 0.0 : std::min(scene.solver.merit_tolerance, scene.solver.joint_merit_tolerance);
   v.structure_tolerance = sweeps ? 0.0 : std::min(scene.solver.merit_tolerance, scene.solver.structure_merit_tolerance);
+  v.breaking_tolerance = sweeps || scene.fracture.mode != FractureMode::kOn ||
+                                 scene.solver.breaking_merit_tolerance >= v.joint_tolerance
+                             ? 0.0
+                             : scene.solver.breaking_merit_tolerance;
   long window_steps = 0, window_capped = 0;
   for (std::size_t i = 0; i < h.diagnostics.size(); ++i) {
     const StepDiagnostics& d = h.diagnostics[i];
@@ -132,6 +136,8 @@ SolverSummary solver_summary(const Scene& scene, const RunHistory& h, const RunS
     v.iterations_max = std::max(v.iterations_max, static_cast<int>(d.solver_iterations));
     v.residual_max = std::max(v.residual_max, d.solver_residual);
     v.capped_steps += d.solver_capped > 0;
+    v.breaking_solves += static_cast<long>(d.breaking_solves);
+    v.breaking_capped += static_cast<long>(d.breaking_capped);
     const bool in_window = !s.has_statistics || (h.time[i] >= s.surge.window_start && h.time[i] <= s.surge.window_end);
     window_steps += in_window;
     window_capped += in_window && d.solver_capped > 0;

@@ -95,6 +95,8 @@ void record_solver_report(const SolverReport& report, StepDiagnostics& d) {
   d.solver_iterations = report.iterations;
   d.solver_residual = report.residual;
   d.solver_capped = report.capped ? 1.0 : 0.0;
+  d.breaking_solves = report.breaking_solves;
+  d.breaking_capped = report.breaking_capped;
 }
 
 }  // namespace
@@ -119,6 +121,13 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   LoadCell cell;
   BoundaryLoad boundary;
   state.world->solver_report().clear();
+  // the fracture stage's measure of how near a joint is to breaking, for the contact solver's
+  // second, tighter solve of such islands (solver.breaking_ratio)
+  if (scene.fracture.mode == FractureMode::kOn)
+    state.world->contact_solver().set_joint_ratio(
+        [&scene, world = state.world.get()](const ContactProblem& p, const Eigen::VectorXd& l) {
+          return largest_joint_ratio(scene, *world, p, l);
+        });
   for (int k = 1; k <= scene.time.substeps; ++k) {
     const double t_next = t0 + k * h;
     { StageTimer t(times.structure); move_structure(scene, state, t_next); }

@@ -418,6 +418,29 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   options.merit = merit_;
   options.warm_start = true;  // from the rows' warm start (solver.warm_start of the last step's)
   SolverAnswer answer = method_->solve(problem, options);
+  // A joint breaks when its load reaches its capacity, and at the joints' merit its load is
+  // uncertain by a few per cent of the capacity (docs/model/contact_problems.md, "What the
+  // merit leaves in the joints' loads"): an island whose answer puts a joint near its
+  // capacity is solved on, from that answer, until the break is decided on a tight answer
+  if (joint_ratio_ && !problem.joints.empty() && settings_.breaking_merit_tolerance < options.tolerance &&
+      joint_ratio_(problem, answer.l) >= settings_.breaking_ratio) {
+    const double tolerance = options.tolerance;
+    ContactProblem from_answer = problem;  // the observer sees the run's own warm start
+    for (std::size_t c = 0; c < problem.contacts.size(); ++c) from_answer.contacts[c].guess = answer.r.segment<3>(3 * c);
+    for (std::size_t j = 0; j < problem.joints.size(); ++j) from_answer.joints[j].guess = answer.l(static_cast<int>(j));
+    options.tolerance = settings_.breaking_merit_tolerance;
+    options.max_iterations = settings_.breaking_iterations;
+    SolverAnswer tight = method_->solve(from_answer, options);
+    if (tight.residual <= answer.residual) {
+      tight.sweeps += answer.sweeps;
+      answer = std::move(tight);
+    } else {
+      answer.sweeps += tight.sweeps;
+    }
+    answer.capped = answer.residual > tolerance;  // the step's own tolerance: a tighter one is extra
+    ++report_.breaking_solves;
+    report_.breaking_capped += answer.residual > settings_.breaking_merit_tolerance;
+  }
   apply_impulses(answer);
   report_.add_island(answer.sweeps, answer.residual, answer.capped);
   if (observer_ && observer_->wants_problems()) observer_->solved(problem, answer);

@@ -50,6 +50,7 @@
 #pragma once
 
 #include <algorithm>
+#include <functional>
 #include <tuple>
 #include <memory>
 #include <string>
@@ -94,6 +95,12 @@ struct ContactSolverSettings {
   std::string merit = "siconos";  // what merit_tolerance bounds (dem/contact/merit.hpp)
   double joint_merit_tolerance = 1e-6;  // an island with joint rows: the smaller of the two
   double structure_merit_tolerance = 1e-6;  // an island touching the structure: likewise
+  // an island whose answer puts a joint at breaking_ratio of its capacity or more (JointRatio)
+  // is solved again, from that answer, to breaking_merit_tolerance in at most
+  // breaking_iterations; off when not below the island's tolerance
+  double breaking_merit_tolerance = 0.0;
+  double breaking_ratio = 0.9;
+  int breaking_iterations = 20000;
   int method_iterations = 300;
   // cap of the split-impulse position sweeps (pseudo-impulses that push penetrating contacts
   // apart, apart from the contact impulses); they stop earlier at `tolerance`
@@ -106,6 +113,8 @@ struct SolverReport {
   double residual = 0;   // largest residual an island ended with (dimensionless, see above)
   bool capped = false;   // an island reached the cap with its residual above the tolerance
   int islands = 0;       // solve groups with contacts
+  int breaking_solves = 0;  // islands solved again for a joint near its capacity
+  int breaking_capped = 0;  // of those, the ones that stopped at the cap above the tighter merit
 
   void clear() { *this = SolverReport{}; }
   /// One island solved: its iterations, the residual it ended with, whether the cap stopped it.
@@ -132,6 +141,12 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
 
   /// The structure whose load the residual follows (null: none).
   void set_structure(const btCollisionObject* structure) { structure_ = structure; }
+
+  /// The largest failure ratio (load over capacity) the joints of an island reach with its
+  /// joint rows' impulses `l` (the fracture stage's measure, dem/fracture/fracture.hpp).
+  using JointRatio = std::function<double(const ContactProblem& problem, const Eigen::VectorXd& l)>;
+  /// What decides whether an island is solved again to breaking_merit_tolerance (empty: never).
+  void set_joint_ratio(JointRatio ratio) { joint_ratio_ = std::move(ratio); }
 
   /// Let `observer` (not owned; null: none) see the problems of the steps it wants.
   void set_observer(ProblemObserver* observer) { observer_ = observer; }
@@ -233,6 +248,7 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
 
   ContactSolverSettings settings_;
   const btCollisionObject* structure_ = nullptr;
+  JointRatio joint_ratio_;
   ProblemObserver* observer_ = nullptr;
   MeritKind merit_;                            // settings_.merit
   std::unique_ptr<ContactMethod> method_;     // null: the sweeps

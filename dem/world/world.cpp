@@ -84,6 +84,9 @@ World::World(const WorldSettings& settings)
   contact.merit = solver.merit;
   contact.joint_merit_tolerance = solver.joint_merit_tolerance;
   contact.structure_merit_tolerance = solver.structure_merit_tolerance;
+  contact.breaking_merit_tolerance = solver.breaking_merit_tolerance;
+  contact.breaking_ratio = solver.breaking_ratio;
+  contact.breaking_iterations = solver.breaking_iterations;
   contact.method_iterations = solver.method_iterations;
   contact.position_iterations = solver.position_iterations;
   solver_ = std::make_unique<ContactSolver>(contact);
