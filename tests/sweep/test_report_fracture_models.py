@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The report's comparison of fracture models (tools/icedem_tools/report_fracture_models.py)
-compares the models over the seeds all of them finished, the same layouts, at the paper's
-Fig. 18 frictions only: a seed one model lacks is left out of every model's numbers, other
+compares the models over the seeds every model with runs finished, the same layouts, at the paper's
+Fig. 18 frictions only: a seed one model lacks is left out of every model's numbers (a model
+without any run is n/a and leaves the others' seeds alone), other
 frictions are not mixed in, and a run without the window's p99 (a record kept before it was)
 makes the column n/a rather than a mean over the others; without the ISO 19906 load the
 row says why."""
@@ -56,6 +57,16 @@ check(abs(st["p99_fx_N"][0] - 101.5) < 1e-12, f"its p99: {st['p99_fx_N']}")
 check(got[0.7][1][MODELS[2]]["p99_fx_N"] is None and got[0.7][1][MODELS[1]]["p99_fx_N"] is not None,
       "records without the window's p99 make the column n/a for that model only")
 check(all(v is None for v in comparison({})[0.3][1].values()), "no runs: no numbers")
+# a model whose sweep has not started (no run at all) does not empty the others' table
+unstarted = {k: v for k, v in records.items() if k != MODELS[-1][0]}
+common, models = comparison(unstarted)[0.3]
+check(common == [1, 2] and models[MODELS[-1]] is None and models[MODELS[1]] is not None,
+      f"a model without runs is n/a and leaves the others' seeds: {common}")
+# one with some runs but not those seeds does narrow them: its seeds are a fair comparison's
+partial = dict(unstarted)
+partial[MODELS[-1][0]] = runs(0.3, 0.3, [2], 9)
+common, models = comparison(partial)[0.3]
+check(common == [2] and models[MODELS[-1]] is not None, f"a model with runs narrows the seeds to its own: {common}")
 terms, why = iso19906("/nonexistent/icedem")
 check(terms is None and "no build at /nonexistent/icedem" in why, f"without a build the ISO row says why: {why}")
 terms, why = iso19906("/bin/false")

@@ -1,7 +1,7 @@
 """The report's comparison of fracture models on the paper's larger floes (tools/icedem_tools/report.py):
 rigid floes, rigid floes that split analytically (fracture.mode = "analytic"), and the lattices of
-0.20 m and 0.15 m elements, at the ice-structure friction of the paper's Fig. 18 and both its
-ice-ice frictions, over the seeds all four have finished; beside the tank's largest load and the
+0.20 m and 0.15 m square and hexagonal elements, at the ice-structure friction of the paper's Fig. 18
+and both its ice-ice frictions, over the seeds every model with runs has finished; beside the tank's largest load and the
 ISO 19906 load of level ice on the cone, in one table and one figure."""
 import json
 import os
@@ -19,7 +19,9 @@ from .report_tables import FII, FIS, run_records
 MODELS = (("large_rigid", "rigid, no fracture"),
           ("large_analytic", "rigid, splitting analytically"),
           ("large_breakable_020", "lattice, 0.20 m elements"),
-          ("large_breakable_015", "lattice, 0.15 m elements"))
+          ("large_breakable_015", "lattice, 0.15 m elements"),
+          ("large_hexagon_020", "lattice, 0.20 m hexagons"),
+          ("large_hexagon_015", "lattice, 0.15 m hexagons"))
 FIS_VALUE = 0.3           # the paper's Fig. 18
 FII_VALUES = (0.3, 0.7)   # its two states of failure
 ISO_SCENARIO = "scenarios/paper/large_floes_rigid.toml"  # the paper's cone and ice
@@ -59,12 +61,16 @@ def stats(recs):
 
 
 def comparison(records):
-    """{f_ii: (the seeds every model finished, {model: stats() over them, or None})}."""
+    """{f_ii: (the seeds every model with runs finished, {model: stats() over them, or None})}.
+    A model without any run at a friction (one whose sweep has not started) is left out of the
+    seeds' intersection there, so that a new model does not empty the table until it runs."""
     out = {}
     for fii in FII_VALUES:
         by_model = {m: model_runs(records, m[0], fii) for m in MODELS}
-        common = sorted(set.intersection(*(set(v) for v in by_model.values())))
-        out[fii] = (common, {m: stats([by_model[m][s] for s in common]) if common else None for m in MODELS})
+        started = [set(v) for v in by_model.values() if v]
+        common = sorted(set.intersection(*started)) if started else []
+        out[fii] = (common, {m: stats([by_model[m][s] for s in common]) if common and by_model[m] else None
+                             for m in MODELS})
     return out
 
 
@@ -131,11 +137,13 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
     iso, iso_missing = iso19906(icedem)
     L = ["## Fracture models compared", "",
          f"The paper's larger floes (0.6 m) at its Fig. 18's frictions (f_is {FIS_VALUE}, f_ii "
-         f"{' and '.join(str(v) for v in FII_VALUES)}) with four models of the ice: rigid floes (the grid's "
+         f"{' and '.join(str(v) for v in FII_VALUES)}) with these models of the ice: rigid floes (the grid's "
          "`large_rigid`), rigid floes that split in two when the cone's load normal to a floe reaches a floating "
          "beam's breaking load (`fracture.mode = \"analytic\"`, `sweeps/paper_fracture_models.toml`; "
-         "docs/model/breakage.md), and the lattices of 0.20 m and 0.15 m elements (the grid's). Each over the "
-         "seeds all four have finished, the same layouts; loads are the surge load over each run's analysis "
+         "docs/model/breakage.md), the lattices of 0.20 m and 0.15 m square elements (the grid's) and of "
+         "hexagonal elements of the same sizes (`fracture.element_shape = \"hexagon\"`, the models sweep's). "
+         "Each over the seeds every model with runs has finished, the same layouts (a model not yet run shows "
+         "n/a); loads are the surge load over each run's analysis "
          "window, the mean over seeds ± the half-width of the 95 % interval. p99 is the load a run exceeds "
          "1 % of its window. Breaks are joints broken (lattices) or splits (analytic, a piece splitting again "
          "counts again) per run; floes broken counts each layout floe that broke at all once. A break's "
@@ -146,7 +154,7 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
     compared = comparison(records)
     table = {fii: models for fii, (_, models) in compared.items()}
     for fii, (common, models) in compared.items():
-        L += [f"f_ii {fii}, f_is {FIS_VALUE}: {len(common)} seed(s) finished by all four"
+        L += [f"f_ii {fii}, f_is {FIS_VALUE}: {len(common)} seed(s) finished by every model with runs"
               + (f" ({', '.join(str(s) for s in common)})" if common else "") + ".", "",
               "| model | mean, N | p99, N | mean of maxima, N | largest, N | breaks / run | floes broken / run | "
               "break's load / capacity, median (p90) | CPU s / run |", "|---|---|---|---|---|---|---|---|---|"]
@@ -169,7 +177,7 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
                   "push and lift terms are 0) | | | | | |"]
         L.append("")
     if not any(st for t in table.values() for st in t.values()):
-        L += ["No seed has finished for all four models yet.", ""]
+        L += ["No seed has finished for every model with runs yet.", ""]
         return L + (convergence_section(convergence, {}, title="### Convergence of the analytic model")
                     if convergence else [])
     os.makedirs(figs, exist_ok=True)
