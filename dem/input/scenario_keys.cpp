@@ -119,7 +119,8 @@ std::vector<KeySpec> make_keys() {
   k.push_back(integer("solver.breaking_iterations", 20000, 1, 1000000,
                       "solver.method other than \"pgs\": cap of the method's iterations when an island is solved "
                       "again for a joint near its capacity (solver.breaking_merit_tolerance; the gradient method "
-                      "needs up to about 7000 on the lattices' breaking steps)"));
+                      "needs up to about 7000 on the lattices' breaking steps); what it leaves above that merit, "
+                      "the Newton method finishes (at most 1000 of its steps)"));
   k.push_back(integer("solver.method_iterations", 1000, 1, 100000,
                       "solver.method other than \"pgs\": cap of the method's iterations per island and Bullet "
                       "step (Newton steps, or sweeps); the paper's small-floe run needs at most 589 gradient steps "

@@ -249,6 +249,9 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   ContactSolverSettings settings_;
   const btCollisionObject* structure_ = nullptr;
   JointRatio joint_ratio_;
+  std::unique_ptr<ContactMethod> newton_;  // finishes a breaking solve the method left above its merit
+  // Newton steps then: the lattices' breaking steps needed at most 485 to 3e-6
+  static constexpr int kBreakingNewtonSteps = 1000;
   ProblemObserver* observer_ = nullptr;
   MeritKind merit_;                            // settings_.merit
   std::unique_ptr<ContactMethod> method_;     // null: the sweeps

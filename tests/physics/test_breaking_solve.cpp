@@ -86,3 +86,15 @@ TEST(BreakingSolve, AnIslandNearBreakingIsSolvedToTheTighterMerit) {
   std::printf("pushed lattices: merit %.2e solved again, %.2e at the joints' tolerance\n", keep.answer.residual,
               loose.answer.residual);
 }
+
+// What the gradient method leaves above the tighter merit at its cap, the Newton method
+// finishes: with a cap of one gradient step, the answer still meets the merit
+TEST(BreakingSolve, TheNewtonMethodFinishesWhatTheCapLeft) {
+  Keep keep;
+  Pushed p = push(keep, {"solver.breaking_ratio=0", "solver.breaking_merit_tolerance=1e-8",
+                         "solver.breaking_iterations=1"});
+  ASSERT_TRUE(keep.problem);
+  EXPECT_GE(p.state.diagnostics.breaking_solves, 1.0);
+  EXPECT_EQ(p.state.diagnostics.breaking_capped, 0.0);
+  EXPECT_LE(keep.answer.residual, 1e-8);
+}
