@@ -215,9 +215,10 @@ def mechanism_rows(got, numerics_list, rng):
     return rows
 
 
-def headline_section(got):
+def headline_section(got, pooled=True):
     """Markdown lines: the table of every headline number's change with the numerics, and a
-    sentence listing those that move. `got`: {(model, numerics): {seed: summary}}."""
+    sentence listing those that move. `got`: {(model, numerics): {seed: summary}}; `pooled`:
+    whether it holds the supplements' and the grid's runs too (the report's), or one sweep's."""
     numerics_list = sorted({n for _, n in got} - {"default"})
     rng = np.random.default_rng(0)  # seeded: a report is reproducible
     rows = (load_rows(got, numerics_list) + ratio_rows(got, numerics_list) + breaks_rows(got, numerics_list)
@@ -235,8 +236,9 @@ def headline_section(got):
          f"per run, {100 * SHARE_TOLERANCE:.0f} points for a mechanism's share, well below the Fig. 18 shift "
          "looked for) when its whole interval is, **beyond** it when its whole interval lies outside, "
          "**moves** when its interval excludes no change but straddles the tolerance (a real change the seeds "
-         "cannot size against it), and is unresolved otherwise. Runs of the supplements at these numerics, and the grid's own runs at this "
-         "friction (the default numerics), count here too.", "",
+         "cannot size against it), and is unresolved otherwise."
+         + (" Runs of the supplements at these numerics, and the grid's own runs at this friction (the default "
+            "numerics), count here too." if pooled else ""), "",
          "The last column estimates how many seeds would narrow the interval to a half-width of the "
          "tolerance (the half-width shrinks as one over the root of the seeds, and Student's t towards the "
          "normal quantile): the seeds a verdict needs "

@@ -150,6 +150,25 @@ def pooled_numerics(got, records, supplements):
     return pooled
 
 
+def cost_table(got):
+    """Markdown lines: what each numerics of a <model>+<numerics> sweep costs, per model (its runs,
+    breaks per run, solver iterations per step, CPU per run). `got`: {(model, numerics): {seed:
+    summary}}."""
+    L = ["What each numerics costs (its changes to the findings follow in \"Are the findings converged?\"):", "",
+         "| model | numerics | seeds | breaks per run | solver iterations per step | CPU per run s |",
+         "|---|---|---|---|---|---|"]
+    for model in dict.fromkeys(m for m, _ in got):
+        for numerics in [n for m, n in got if m == model]:
+            runs_ = got[(model, numerics)]
+            br = [x.get("breaks", 0) for x in runs_.values()]
+            sw = [(x.get("solver") or {}).get("iterations_mean") for x in runs_.values()]
+            sw = [v for v in sw if v is not None]
+            cpu = [x.get("cpu_time_s") for x in runs_.values() if x.get("cpu_time_s")]
+            L.append(f"| {model} | {numerics} | {len(runs_)} | {sum(br) / len(br):.1f} | "
+                     f"{fmt(sum(sw) / len(sw) if sw else None)} | {fmt(sum(cpu) / len(cpu) if cpu else None, '', 0)} |")
+    return L
+
+
 def convergence_section(conv_sweep, records, title="## Convergence of the grid's loads", supplements=()):
     """The grid's numbers against a halved step and a tighter solve (a sweep whose scenarios are
     <model>+<numerics>, e.g. sweeps/paper_convergence.toml), compared seed by seed, and whether
@@ -163,18 +182,7 @@ def convergence_section(conv_sweep, records, title="## Convergence of the grid's
     if not got:
         return L + [f"No finished runs yet (`scripts/sweep run {os.path.relpath(conv_sweep, spec.ROOT)}`).", ""]
     # what each numerics costs; what it changes is judged, with intervals, by headline_section
-    L += ["What each numerics costs (its changes to the findings follow in \"Are the findings converged?\"):", "",
-          "| model | numerics | seeds | breaks per run | solver iterations per step | CPU per run s |",
-          "|---|---|---|---|---|---|"]
-    for model in dict.fromkeys(m for m, _ in got):
-        for numerics in [n for m, n in got if m == model]:
-            runs_ = got[(model, numerics)]
-            br = [x.get("breaks", 0) for x in runs_.values()]
-            sw = [(x.get("solver") or {}).get("iterations_mean") for x in runs_.values()]
-            sw = [v for v in sw if v is not None]
-            cpu = [x.get("cpu_time_s") for x in runs_.values() if x.get("cpu_time_s")]
-            L.append(f"| {model} | {numerics} | {len(runs_)} | {sum(br) / len(br):.1f} | "
-                     f"{fmt(sum(sw) / len(sw) if sw else None)} | {fmt(sum(cpu) / len(cpu) if cpu else None, '', 0)} |")
+    L += cost_table(got)
     # the default runs are the grid's runs of the same seeds at f_ii 0.5, f_is 0.2: they must agree
     same, differ = 0, []
     for (model, numerics), by_seed in got.items():
