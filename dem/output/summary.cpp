@@ -45,9 +45,9 @@ std::string solver_line(const SolverSummary& v) {
                            tighter_islands(v),
                            v.residual_max);
   if (v.breaking_solves > 0)
-    out += fmt::format("  {} islands solved again to a merit of {:g} for a joint near its capacity, {} of them "
-                       "stopped at solver.breaking_iterations above it (/diagnostics/breaking_solves, "
-                       "breaking_capped)\n",
+    out += fmt::format("  {} islands solved again to a merit of {:g} for a joint near its capacity (their "
+                       "iterations count above, beyond the cap), {} of them stopped at solver.breaking_iterations "
+                       "above it (/diagnostics/breaking_solves, breaking_capped)\n",
                        v.breaking_solves, v.breaking_tolerance, v.breaking_capped);
   if (v.tolerance > 0 && v.capped_window_fraction > SolverSummary::kCappedWarning)
     out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached {} = {:d} before "
