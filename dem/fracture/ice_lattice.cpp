@@ -17,7 +17,7 @@ ElementLattice floe_lattice(const Polygon& shape, double element_size, double& y
 }
 
 bool paper_lattice(const Polygon& outline, const FractureSettings& fracture) {
-  if (fracture.element_shape != ElementShape::kSquare) return false;
+  if (fracture.element_shape != ElementShape::kSquare || fracture.lattice_angle != 0) return false;
   try {
     double yaw = 0;
     floe_lattice(outline, fracture.element_size, yaw);
@@ -28,7 +28,9 @@ bool paper_lattice(const Polygon& outline, const FractureSettings& fracture) {
 }
 
 OutlineLattice floe_outline_lattice(const Polygon& shape, const FractureSettings& fracture, double& yaw0) {
-  yaw0 = principal_yaw(shape);
+  // the grid along the floe's principal axes, turned by fracture.lattice_angle: the outline is
+  // filled in the grid's frame, and the elements are placed back through yaw0
+  yaw0 = principal_yaw(shape) + fracture.lattice_angle;
   Polygon outline;
   for (const Eigen::Vector2d& v : shape) outline.push_back(rotate(v, -yaw0));
   return fill_outline(outline, fracture.element_size, fracture.element_shape);

@@ -24,13 +24,15 @@ namespace icedem {
 /// or not a whole number of elements across).
 ElementLattice floe_lattice(const Polygon& outline, double element_size, double& principal_yaw_out);
 
-/// Whether a floe is cut into the paper's lattice (floe_lattice): square elements, and an
-/// outline that is a rectangle a whole number of them across in its principal frame. Every
-/// other breakable floe is an outline lattice (floe_outline_lattice).
+/// Whether a floe is cut into the paper's lattice (floe_lattice): square elements along its
+/// principal axes (fracture.lattice_angle 0), and an outline that is a rectangle a whole
+/// number of them across in its principal frame. Every other breakable floe is an outline
+/// lattice (floe_outline_lattice).
 bool paper_lattice(const Polygon& outline, const FractureSettings& fracture);
 
-/// A floe's outline lattice (dem/fracture/outline_lattice.hpp) in its principal frame, and the
-/// yaw of that frame relative to the floe's outline.
+/// A floe's outline lattice (dem/fracture/outline_lattice.hpp) in the grid's frame (the floe's
+/// principal frame turned by fracture.lattice_angle), and the yaw of that frame relative to the
+/// floe's outline.
 OutlineLattice floe_outline_lattice(const Polygon& outline, const FractureSettings& fracture,
                                     double& principal_yaw_out);
 

@@ -303,6 +303,11 @@ std::vector<KeySpec> make_keys() {
                      "a layout file's) and every hexagonal lattice is filled with elements cut at the outline, "
                      "joined across the faces they share, each joint's capacities and springs scaled by its "
                      "face's length (docs/model/breakage.md)"));
+  k.push_back(real("fracture.lattice_angle", "deg", 0.0, -180.0, 180.0,
+                   "turn of the element grid from each breakable floe's principal axes, about the vertical as a "
+                   "yaw: 0 lays the grid along them (the paper's); any other angle makes every breakable floe an "
+                   "outline lattice, its elements cut at the outline. The wide cantilever measures a lattice's "
+                   "strength by the direction of its load with it (docs/model/breakage.md)"));
   k.push_back(real("fracture.cfm", "-", 1.0e-10, 0.0, 1.0,
                    "constraint force mixing of the element joints (Bullet units); the joints' "
                    "stiffness depends on it and on the step: recalibrate (icedem calibrate) when "
@@ -387,11 +392,18 @@ std::vector<KeySpec> make_keys() {
                       "analysis window where the squeeze begins"));
 
   // validation cases (scenarios/validation/)
-  k.push_back(choice("validation.case", "none", {"none", "plate_deflection", "cantilever"},
+  k.push_back(choice("validation.case", "none", {"none", "plate_deflection", "cantilever", "wide_cantilever"},
                      "validation case: plate_deflection, a floating plate of elements under a central "
                      "point load (seed paper Fig. 6) against Hertz's plate; cantilever, a clamped beam "
-                     "of elements in air loaded at its tip until it breaks (Fig. 7, eq. 6)"));
+                     "of elements in air loaded at its tip until it breaks (Fig. 7, eq. 6); wide_cantilever, "
+                     "a plate of any elements (validation.beam_length x beam_width, the grid turned by "
+                     "fracture.lattice_angle) clamped along one edge in air and loaded along the other until "
+                     "it breaks: its bending strength across the grid in that direction"));
   k.push_back(integer("validation.beam_elements", 4, 2, 100, "cantilever: elements along the beam, root included"));
+  k.push_back(positive("validation.beam_length", "m", 0.9, 100.0,
+                       "wide_cantilever: the plate's length along x, from its clamped edge to its loaded one"));
+  k.push_back(positive("validation.beam_width", "m", 0.45, 100.0,
+                       "wide_cantilever: the plate's width along z, the length of the line that breaks"));
   k.push_back(positive("validation.load_rate", "N/s", 0.2, 1.0e4, "cantilever: growth rate of the tip load"));
   k.push_back(real("validation.tip_speed", "m/s", 0.0, 0.0, 10.0,
                    "cantilever: > 0 floats the beam and pushes its tip down at this speed (the "

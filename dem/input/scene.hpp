@@ -163,6 +163,7 @@ struct FractureSettings {
   FractureMode mode;
   double element_size;  // m: a square's side, or the distance between neighbouring hexagons' centres
   ElementShape element_shape;
+  double lattice_angle;  // rad, the element grid's turn from a floe's principal axes (yaw)
   double cfm;           // -, Bullet units
   double erp;           // -
   bool elastic_joints;  // joint rows are springs of the ice's modulus (fracture.joint_stiffness = "elastic")
@@ -200,13 +201,15 @@ struct StatsSettings {
   bool include_squeeze;        // keep the steps of a squeeze against the end wall (dem/input/structure_path.hpp)
 };
 
-enum class ValidationKind { kNone, kPlateDeflection, kCantilever };
+enum class ValidationKind { kNone, kPlateDeflection, kCantilever, kWideCantilever };
 struct ValidationSettings {
   ValidationKind kind;
   double plate_size;  // m
   double load;        // N, downward at the plate centre
   double tolerance;   // -, relative
   int beam_elements;  // cantilever: elements along the beam
+  double beam_length;  // m, wide cantilever: clamped edge to loaded edge (x)
+  double beam_width;   // m, wide cantilever: across (z)
   double load_rate;   // N/s, cantilever tip load growth
   double tip_speed;   // m/s, floating cantilever pushed down at the tip; 0: load ramp in air
 };

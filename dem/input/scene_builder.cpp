@@ -282,6 +282,7 @@ Scene make_scene(const Scenario& sc) {
   s.fracture.element_size = real(sc, "fracture.element_size");
   s.fracture.element_shape =
       choice<ElementShape>(sc, "fracture.element_shape", {{"square", ElementShape::kSquare}, {"hexagon", ElementShape::kHexagon}});
+  s.fracture.lattice_angle = real(sc, "fracture.lattice_angle") * kPi / 180.0;
   s.fracture.cfm = real(sc, "fracture.cfm");
   s.fracture.erp = real(sc, "fracture.erp");
   s.fracture.elastic_joints = choice<bool>(sc, "fracture.joint_stiffness", {{"cfm", false}, {"elastic", true}});
@@ -296,11 +297,14 @@ Scene make_scene(const Scenario& sc) {
   s.validation.kind = choice<ValidationKind>(sc, "validation.case",
                                              {{"none", ValidationKind::kNone},
                                               {"plate_deflection", ValidationKind::kPlateDeflection},
-                                              {"cantilever", ValidationKind::kCantilever}});
+                                              {"cantilever", ValidationKind::kCantilever},
+                                              {"wide_cantilever", ValidationKind::kWideCantilever}});
   s.validation.plate_size = real(sc, "validation.plate_size");
   s.validation.load = real(sc, "validation.load");
   s.validation.tolerance = real(sc, "validation.tolerance");
   s.validation.beam_elements = integer(sc, "validation.beam_elements");
+  s.validation.beam_length = real(sc, "validation.beam_length");
+  s.validation.beam_width = real(sc, "validation.beam_width");
   s.validation.load_rate = real(sc, "validation.load_rate");
   s.validation.tip_speed = real(sc, "validation.tip_speed");
 
@@ -312,7 +316,7 @@ Scene make_scene(const Scenario& sc) {
                          "a spread of sizes is for rigid floes (fracture.mode \"off\" or \"analytic\")",
                          largest_generated_floe(s), s.fracture.characteristic_length));
   if (generated_floes_breakable(s) && s.layout.file.empty() && s.validation.kind == ValidationKind::kNone &&
-      s.fracture.element_shape == ElementShape::kSquare) {
+      s.fracture.element_shape == ElementShape::kSquare && s.fracture.lattice_angle == 0) {
     // generated square floes must be a whole number of square elements across (the paper's lattice)
     if (const double n = s.ice.floe_size / s.fracture.element_size; !whole(n))
       fail_key(sc, "fracture.element_size",
@@ -354,12 +358,14 @@ Scene make_scene(const Scenario& sc) {
                                               get<std::string>(sc, "validation.case")));
   // the plate takes any elements: its load is on the elements at its centre and its theory a
   // plate's; the cantilevers' loads and beam theory are laid out for a row of squares
-  if (s.validation.kind != ValidationKind::kNone && s.validation.kind != ValidationKind::kPlateDeflection &&
-      s.fracture.element_shape != ElementShape::kSquare)
-    fail_key(sc, "fracture.element_shape", fmt::format("\"square\" for the {} case: its load and its beam theory are "
-                                                       "laid out for square elements",
-                                                       get<std::string>(sc, "validation.case")));
-  if (s.validation.kind == ValidationKind::kPlateDeflection && s.fracture.element_shape == ElementShape::kSquare) {
+  if (s.validation.kind == ValidationKind::kCantilever &&
+      (s.fracture.element_shape != ElementShape::kSquare || s.fracture.lattice_angle != 0))
+    fail_key(sc, s.fracture.lattice_angle != 0 ? "fracture.lattice_angle" : "fracture.element_shape",
+             fmt::format("{} for the {} case: its load and its beam theory are laid out for a row of squares "
+                         "along the grid (validation.case = \"wide_cantilever\" takes any elements and angle)",
+                         s.fracture.lattice_angle != 0 ? "0" : "\"square\"", get<std::string>(sc, "validation.case")));
+  if (s.validation.kind == ValidationKind::kPlateDeflection && s.fracture.element_shape == ElementShape::kSquare &&
+      s.fracture.lattice_angle == 0) {
     if (const double n = s.validation.plate_size / s.fracture.element_size; !whole(n))
       fail_key(sc, "validation.plate_size", fmt::format("is not a whole number of elements of fracture.element_size = {} m "
                                                         "({:.3f})", s.fracture.element_size, n));

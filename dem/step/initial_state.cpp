@@ -138,6 +138,8 @@ Layout scene_layout(const Scene& scene, const std::function<void(double)>& on_pr
   // validation cases: one rectangular floe at the middle of the channel
   if (scene.validation.kind == ValidationKind::kPlateDeflection)
     return single_floe_layout(scene, scene.validation.plate_size, scene.validation.plate_size);
+  if (scene.validation.kind == ValidationKind::kWideCantilever)  // a plate, clamped along its x = 0 edge
+    return single_floe_layout(scene, scene.validation.beam_length, scene.validation.beam_width);
   if (scene.validation.kind == ValidationKind::kCantilever)  // a beam along x, one element wide
     return single_floe_layout(scene, scene.validation.beam_elements * scene.fracture.element_size,
                               scene.fracture.element_size);

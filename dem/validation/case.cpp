@@ -8,6 +8,7 @@
 #include "dem/step/step.hpp"
 #include "dem/validation/cantilever.hpp"
 #include "dem/validation/plate_deflection.hpp"
+#include "dem/validation/wide_cantilever.hpp"
 
 namespace icedem {
 
@@ -31,6 +32,7 @@ std::unique_ptr<ValidationCase> make_validation_case(const Scene& scene, State& 
     case ValidationKind::kCantilever:
       if (scene.validation.tip_speed > 0) return std::make_unique<FloatingCantilever>(scene, state);
       return std::make_unique<CantileverInAir>(scene, state);
+    case ValidationKind::kWideCantilever: return std::make_unique<WideCantilever>(scene, state);
   }
   return nullptr;
 }

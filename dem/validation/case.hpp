@@ -2,7 +2,7 @@
 // case sets up its loads on the initial state, applies them in the step's point-load stage,
 // measures after every step, and ends with a typed result, which the summary carries as its
 // `validation` block. One file per case: plate_deflection, cantilever_in_air,
-// floating_cantilever. advance() (dem/step/step.hpp) is the one step of every run, with its case or
+// floating_cantilever, wide_cantilever. advance() (dem/step/step.hpp) is the one step of every run, with its case or
 // without.
 #pragma once
 

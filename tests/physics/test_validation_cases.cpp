@@ -2,7 +2,9 @@
 // eq. 6, and the finite-plate table.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "dem/fracture/break_context.hpp"
 #include "dem/fracture/fracture.hpp"
@@ -126,4 +128,61 @@ TEST(Breakable, FloatingCantileverWithElasticJointsBreaksAtTheRootInBending) {
   EXPECT_TRUE(v["at_root"].get<bool>());
   EXPECT_NEAR(v["root_joint_stress_at_failure_kPa"].get<double>(), 36.4, 0.01 * 36.4);
   EXPECT_LT(v["rel_error"].get<double>(), -0.10) << "eq. 6 now meets the target: update validation_targets.md";
+}
+
+// The wide cantilever (dem/validation/wide_cantilever.hpp; scenarios/validation/
+// wide_cantilever_015.toml: a 0.9 x 0.45 m plate of 0.15 m elements in air, clamped along one
+// edge, loaded along the other): the plate's bending strength across it at the first break,
+// by the direction of the element grid (fracture.lattice_angle)
+namespace {
+
+nlohmann::json wide_cantilever(const std::string& shape, double angle_deg) {
+  const Scene scene =
+      load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/wide_cantilever_015.toml",
+                 {"fracture.element_shape=\"" + shape + "\"", "fracture.lattice_angle=" + std::to_string(angle_deg)});
+  const ValidationResult r = run_validation_case(scene);
+  EXPECT_TRUE(r.value) << shape << " at " << angle_deg << " deg: " << r.note;
+  return r.to_json();
+}
+
+double strength_ratio(const nlohmann::json& r) { return r["value"].get<double>() / r["reference"].get<double>(); }
+
+}  // namespace
+
+// Squares along the grid: the root line's three joints share the moment equally, so the plate
+// breaks there, in bending, when M = B T^2 sigma_b / 6 (eq. 3 summed over the line): within 3 %
+// (the load grows 0.5 N/s over steps of 0.02 s, 0.2 % of the load at the break; measured +0.1 %)
+TEST(WideCantilever, SquaresAlongTheGridBreakAtTheBendingStrength) {
+  const nlohmann::json r = wide_cantilever("square", 0);
+  EXPECT_NEAR(strength_ratio(r), 1.0, 0.03) << r.dump();
+  EXPECT_TRUE(r["at_root"].get<bool>());
+  EXPECT_EQ(r["failure_mode"].get<std::string>(), "bending");
+  EXPECT_EQ(r["root_joints"].get<int>(), 3);
+}
+
+// Across the grid a square lattice is stronger: at 45 degrees the crack zig-zags through sqrt(2)
+// times the face length per length of line, each face loaded at 45 degrees to its own bending
+// axis. Measured 1.49 sigma_b; asked: more than 1.2 (the straight line's 1.0 plus a margin far
+// beyond the 0.1 % scatter of the break's step)
+TEST(WideCantilever, SquaresAcrossTheGridAreStronger) {
+  EXPECT_GT(strength_ratio(wide_cantilever("square", 45)), 1.2);
+}
+
+// A hexagonal grid's strength varies less with the direction than a square grid's (the
+// paper's reason for hexagons: cracks closer to any direction), and it is above the bending
+// strength in every direction: a crack through hexagons always zig-zags (per length of line
+// its faces are 2/sqrt(3) = 1.15 times as long, at 30 degrees to it). Measured on this plate:
+// hexagons 1.31-1.51 sigma_b at 0, 10, 20 and 30 degrees (spread 1.15), squares 1.00, 1.36
+// and 1.49 at 0, 20 and 45 degrees (spread 1.49)
+TEST(WideCantilever, HexagonsVaryLessWithDirectionThanSquares) {
+  std::vector<double> hexagons, squares;
+  for (double a : {0.0, 10.0, 20.0, 30.0}) hexagons.push_back(strength_ratio(wide_cantilever("hexagon", a)));
+  for (double a : {0.0, 20.0, 45.0}) squares.push_back(strength_ratio(wide_cantilever("square", a)));
+  const auto spread = [](const std::vector<double>& v) {
+    return *std::max_element(v.begin(), v.end()) / *std::min_element(v.begin(), v.end());
+  };
+  EXPECT_LT(spread(hexagons), spread(squares));
+  EXPECT_GT(*std::min_element(hexagons.begin(), hexagons.end()), 1.0);
+  std::printf("wide cantilever, strength / sigma_b: hexagons %.2f %.2f %.2f %.2f (0-30 deg), squares %.2f %.2f %.2f "
+              "(0, 20, 45 deg)\n", hexagons[0], hexagons[1], hexagons[2], hexagons[3], squares[0], squares[1], squares[2]);
 }

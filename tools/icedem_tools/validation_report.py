@@ -143,8 +143,12 @@ def main(argv=None):
         f.write("|---|---|---|---|---|---|---|---|---|\n")
         for name, s in results:
             v = s["validation"]
-            extra = (f"E {v['elastic_modulus_MPa']:.1f} MPa" if v["case"] == "plate_deflection"
-                     else f"{v['failure_mode']} at joint {v['failed_joint']}")
+            if v["case"] == "plate_deflection":
+                extra = f"E {v['elastic_modulus_MPa']:.1f} MPa"
+            elif v["case"] == "wide_cantilever":
+                extra = f"{v['failure_mode']} " + ("at the root line" if v["at_root"] else "off the root line")
+            else:
+                extra = f"{v['failure_mode']} at joint {v['failed_joint']}"
             f.write(f"| {name} | {v['metric']} | {v['value']:.4g} | {v['reference']:.4g} | "
                     f"{100 * v['rel_error']:+.1f} % | {100 * v['tolerance']:.0f} % | {v['passed']} | {extra} | "
                     f"{s['wall_time_s']:.1f} |\n")
