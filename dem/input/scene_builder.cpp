@@ -364,6 +364,16 @@ Scene make_scene(const Scenario& sc) {
              fmt::format("{} for the {} case: its load and its beam theory are laid out for a row of squares "
                          "along the grid (validation.case = \"wide_cantilever\" takes any elements and angle)",
                          s.fracture.lattice_angle != 0 ? "0" : "\"square\"", get<std::string>(sc, "validation.case")));
+  // the wide cantilever's plate: a clamped strip, a free span and a loaded strip, each an element long
+  if (s.validation.kind == ValidationKind::kWideCantilever &&
+      s.validation.beam_length < 3 * s.fracture.element_size * (1 - 1e-9))
+    fail_key(sc, "validation.beam_length",
+             fmt::format("at least 3 x fracture.element_size = {:g} m for the wide_cantilever case: a clamped strip, a "
+                         "free span and a loaded strip, each one element long", 3 * s.fracture.element_size));
+  if (s.validation.kind == ValidationKind::kWideCantilever &&
+      s.validation.beam_width < s.fracture.element_size * (1 - 1e-9))
+    fail_key(sc, "validation.beam_width",
+             fmt::format("at least fracture.element_size = {:g} m for the wide_cantilever case", s.fracture.element_size));
   if (s.validation.kind == ValidationKind::kPlateDeflection && s.fracture.element_shape == ElementShape::kSquare &&
       s.fracture.lattice_angle == 0) {
     if (const double n = s.validation.plate_size / s.fracture.element_size; !whole(n))

@@ -6,6 +6,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "dem/core/constants.hpp"
 #include "dem/fracture/joint_loads.hpp"
 #include "dem/world/bullet_eigen.hpp"
 
@@ -21,8 +22,8 @@ double mass_of(const FloeBody& f) { return f.body->getInvMass() > 0 ? 1.0 / f.bo
 WideCantilever::WideCantilever(const Scene& scene, State& state) {
   std::vector<FloeBody>& bodies = state.world->floes();
   const double w = scene.fracture.element_size;
-  // the plate's extent along x, from its elements' hulls' centres (the plate is centred in the
-  // channel; its edges are half its length either side)
+  // the plate's centre along x, its elements' centre of mass; its edges are half its length
+  // either side
   double x_centre = 0, mass = 0;
   for (const FloeBody& f : bodies) {
     const double m = mass_of(f);
@@ -103,7 +104,7 @@ ValidationResult WideCantilever::result(const Scene& scene) const {
   d["root_joints"] = root_joints_;
   d["root_face_length_m"] = root_face_length_;
   d["beam_width_m"] = scene.validation.beam_width;
-  d["lattice_angle_deg"] = scene.fracture.lattice_angle * 180.0 / std::acos(-1.0);
+  d["lattice_angle_deg"] = scene.fracture.lattice_angle * 180.0 / kPi;
   d["element_shape"] = scene.fracture.element_shape == ElementShape::kHexagon ? "hexagon" : "square";
   if (!broken_) {
     r.note = "the plate did not break within time.duration";
