@@ -22,7 +22,13 @@ JointCapacity joint_capacity(const Scene& scene, const IceJoint& joint) {
       paper_joint_capacity(scene.fracture.element_size, scene.ice.thickness, scene.ice.compressive_strength,
                            scene.ice.shear_strength, scene.ice.bending_strength);
   // a joint's capacities are its face's (eqs. 1-3: each is proportional to the face's length)
-  return joint.face_length > 0 ? scaled(square, joint.face_length / scene.fracture.element_size) : square;
+  JointCapacity c = joint.face_length > 0 ? scaled(square, joint.face_length / scene.fracture.element_size) : square;
+  // the lattice's calibration (fracture.strength_scale): every capacity alike
+  if (const double s = scene.fracture.strength_scale; s != 1.0) {
+    c.compression *= s, c.shear *= s, c.bending *= s;
+    c.tension *= s, c.in_plane_bending *= s;  // a criterion that is off (<= 0) stays off
+  }
+  return c;
 }
 
 double largest_joint_ratio(const Scene& scene, const World& world, const ContactProblem& p, const Eigen::VectorXd& l) {

@@ -303,6 +303,12 @@ std::vector<KeySpec> make_keys() {
                      "a layout file's) and every hexagonal lattice is filled with elements cut at the outline, "
                      "joined across the faces they share, each joint's capacities and springs scaled by its "
                      "face's length (docs/model/breakage.md)"));
+  k.push_back(real("fracture.strength_scale", "-", 1.0, 1.0e-3, 1.0e3,
+                   "factor on every joint's capacities (eqs. 1-3, each face's): 1 for squares, whose lattice "
+                   "breaks at the bending strength along its grid (the cantilevers); a hexagonal lattice is "
+                   "stronger across any line than its faces' capacities say (the wide cantilever: 1.20-1.40 "
+                   "times at 0.15 m), and its calibrated scale brings its bending strength to the ice's in every "
+                   "direction (docs/model/breakage.md, \"Strength by direction\")"));
   k.push_back(real("fracture.lattice_angle", "deg", 0.0, -180.0, 180.0,
                    "turn of the element grid from each breakable floe's principal axes, about the vertical as a "
                    "yaw: 0 lays the grid along them (the paper's); any other angle makes every breakable floe an "

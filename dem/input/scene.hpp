@@ -168,6 +168,7 @@ struct FractureSettings {
   double erp;           // -
   bool elastic_joints;  // joint rows are springs of the ice's modulus (fracture.joint_stiffness = "elastic")
   double stiffness_scale;  // -, factor on the elastic rows' stiffness
+  double strength_scale;   // -, factor on every joint's capacities
   double characteristic_length;  // m, l_c = (D / (rho_w g))^(1/4) of the ice ("auto")
   int joint_iterations;          // PGS iterations of the joints; 0: solver.iterations
   double load_filter_time;       // s, low-pass time constant of joint loads; 0: raw

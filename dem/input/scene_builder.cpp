@@ -287,6 +287,7 @@ Scene make_scene(const Scenario& sc) {
   s.fracture.erp = real(sc, "fracture.erp");
   s.fracture.elastic_joints = choice<bool>(sc, "fracture.joint_stiffness", {{"cfm", false}, {"elastic", true}});
   s.fracture.stiffness_scale = real(sc, "fracture.stiffness_scale");
+  s.fracture.strength_scale = real(sc, "fracture.strength_scale");
   // characteristic length l_c = (D / (rho_w g))^(1/4): "auto" makes only floes at least this
   // large breakable
   s.fracture.characteristic_length = std::pow(s.ice.flexural_rigidity / (s.water.density * s.water.gravity), 0.25);
