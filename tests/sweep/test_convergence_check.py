@@ -46,7 +46,7 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(sweep, "w") as f:
         f.write(SWEEP)
     # no finished run
-    convergence_check.finished_summaries = lambda runs, out: {}
+    convergence_check.report_sweeps.finished_summaries = lambda runs, out: {}
     text = "\n".join(convergence_check.page(sweep, os.path.join(tmp, "runs")))
     check("No finished run" in text, "no finished run: the page says so")
     # dt/2 doubles every seed's breaks and raises the max by 40 % in every seed
@@ -54,7 +54,7 @@ with tempfile.TemporaryDirectory() as tmp:
     runs = {"lattice+default": {s: summary(15 * k, 60 * k, 4) for s, k in scatter.items()},
             "lattice+dt_half": {s: summary(15 * k, 84 * k, 8) for s, k in scatter.items()},
             "unpaired_name": {s: summary(99, 999, 0) for s in scatter}}
-    convergence_check.finished_summaries = lambda r, out: runs
+    convergence_check.report_sweeps.finished_summaries = lambda r, out: runs
     text = "\n".join(convergence_check.page(sweep, os.path.join(tmp, "runs")))
     check("| lattice | default | 5 | 4.0 |" in text and "| lattice | dt_half | 5 | 8.0 |" in text,
           "the cost table has each numerics of the model, its breaks per run")

@@ -15,17 +15,14 @@ import os
 
 from . import output_guard, spec
 from .report_convergence import headline_section
-from .report_sweeps import cost_table, finished_summaries
+from . import report_sweeps
+from .report_sweeps import cost_table
 
 
 def page(sweep, out):
     """The page's Markdown lines for the sweep file `sweep` with its runs in `out`."""
     name, runs = spec.load(sweep)
-    got = {}
-    for scenario, by_seed in finished_summaries(runs, out).items():
-        model, plus, numerics = scenario.partition("+")
-        if plus:
-            got[(model, numerics)] = by_seed
+    got = report_sweeps.by_model_numerics(runs, out)
     L = [f"# {name}: do its findings move with the numerics?", "",
          f"Runs of `{os.path.relpath(sweep, spec.ROOT)}` finished so far, judged on their own "
          "(`scripts/convergence_check`).", ""]

@@ -132,6 +132,17 @@ def flow_section(flow_sweep, rows):
     return L + ["", "± are 95 % confidence half-widths over the seeds; a difference is beyond the scatter when "
                 "it exceeds the root sum of squares of the two half-widths.", ""]
 
+def by_model_numerics(runs, out):
+    """{(model, numerics): {seed: run_numbers}} of a sweep's finished runs whose scenarios are
+    named <model>+<numerics> (the others left out)."""
+    got = {}
+    for scenario, by_seed in finished_summaries(runs, out).items():
+        model, plus, numerics = scenario.partition("+")
+        if plus:
+            got.setdefault((model, numerics), {}).update(by_seed)
+    return got
+
+
 def pooled_numerics(got, records, supplements):
     """The convergence sweep's {(model, numerics): {seed: summary}} with the runs of the
     supplements named <model>+<numerics> added, and the grid's own runs at the reference
@@ -139,10 +150,8 @@ def pooled_numerics(got, records, supplements):
     they repeat)."""
     pooled = {k: dict(v) for k, v in got.items()}
     for _, _, runs, out, _ in supplements:
-        for scenario, by_seed in finished_summaries(runs, out).items():
-            model, plus, numerics = scenario.partition("+")
-            if plus:
-                pooled.setdefault((model, numerics), {}).update(by_seed)
+        for key, by_seed in by_model_numerics(runs, out).items():
+            pooled.setdefault(key, {}).update(by_seed)
     for model in {m for m, _ in pooled}:
         grid = {r.seed: run_numbers(rec) for r, rec in records.get(model, []) if at_reference(r)}
         if grid:
@@ -176,9 +185,7 @@ def convergence_section(conv_sweep, records, title="## Convergence of the grid's
     change (report_convergence.py), with the supplements' <model>+<numerics> runs added."""
     name, runs, out, _ = supplement_rows(conv_sweep)
     L = [title, "", sweep_about(conv_sweep), ""]
-    # (model, numerics) -> {seed: summary}
-    got = {(scenario.partition("+")[0], scenario.partition("+")[2]): by_seed
-           for scenario, by_seed in finished_summaries(runs, out).items()}
+    got = by_model_numerics(runs, out)  # (model, numerics) -> {seed: summary}
     if not got:
         return L + [f"No finished runs yet (`scripts/sweep run {os.path.relpath(conv_sweep, spec.ROOT)}`).", ""]
     # what each numerics costs; what it changes is judged, with intervals, by headline_section
