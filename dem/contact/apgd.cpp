@@ -388,7 +388,6 @@ class DualProblem {
     }
     group_of_.assign(nb_, -1);
     local_.assign(nb_, -1);
-    std::vector<int>& local = local_;
     std::vector<int> group_of_root(nb_, -1);
     for (int i = 0; i < nb_; ++i) {
       if (!jointed[i]) continue;
@@ -403,7 +402,7 @@ class DualProblem {
     for (Group& group : groups_) {
       std::stable_sort(group.bodies.begin(), group.bodies.end(),
                        [&](int a, int b) { return p.bodies[a].id < p.bodies[b].id; });
-      for (std::size_t k = 0; k < group.bodies.size(); ++k) local[group.bodies[k]] = static_cast<int>(k);
+      for (std::size_t k = 0; k < group.bodies.size(); ++k) local_[group.bodies[k]] = static_cast<int>(k);
     }
     std::vector<Eigen::VectorXd> ft(groups_.size());
     for (std::size_t g = 0; g < groups_.size(); ++g) {
@@ -423,7 +422,7 @@ class DualProblem {
       const int body = j.a >= 0 ? j.a : j.b;
       const int g = group_of_[body];
       // the row's J over the group's elements: at most two blocks of six
-      const int ia = j.a >= 0 ? local[j.a] : -1, ib = j.b >= 0 ? local[j.b] : -1;
+      const int ia = j.a >= 0 ? local_[j.a] : -1, ib = j.b >= 0 ? local_[j.b] : -1;
       const double c = 1.0 / j.compliance;
       for (int u = 0; u < 2; ++u) {
         const int iu = u == 0 ? ia : ib;

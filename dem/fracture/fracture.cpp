@@ -10,11 +10,15 @@
 namespace icedem {
 
 JointLoads joint_loads(const World& world, const IceJoint& joint) {
+  return joint_loads(world, joint, to_eigen(joint.feedback->m_appliedForceBodyA),
+                     to_eigen(joint.feedback->m_appliedTorqueBodyA));
+}
+
+JointLoads joint_loads(const World& world, const IceJoint& joint, const Eigen::Vector3d& force_on_a,
+                       const Eigen::Vector3d& torque_on_a) {
   const Eigen::Isometry3d pose_a = body_pose(*world.floes()[joint.body_a].body);
-  return decompose_joint_load(to_eigen(joint.feedback->m_appliedForceBodyA),
-                              to_eigen(joint.feedback->m_appliedTorqueBodyA), pose_a.translation(),
-                              pose_a * joint.midpoint_a, pose_a.linear() * joint.axis_a,
-                              pose_a.linear() * Eigen::Vector3d::UnitY());
+  return decompose_joint_load(force_on_a, torque_on_a, pose_a.translation(), pose_a * joint.midpoint_a,
+                              pose_a.linear() * joint.axis_a, pose_a.linear() * Eigen::Vector3d::UnitY());
 }
 
 JointCapacity joint_capacity(const Scene& scene, const IceJoint& joint) {
@@ -53,12 +57,8 @@ double largest_joint_ratio(const Scene& scene, const World& world, const Contact
   double largest = 0;
   for (const auto& [index, w] : on_a) {
     const IceJoint& joint = world.joints()[index];
-    const Eigen::Isometry3d pose_a = body_pose(*world.floes()[joint.body_a].body);
-    const JointLoads loads = decompose_joint_load(w.force, w.torque, pose_a.translation(), pose_a * joint.midpoint_a,
-                                                  pose_a.linear() * joint.axis_a,
-                                                  pose_a.linear() * Eigen::Vector3d::UnitY());
     double ratio = 0;
-    failure_mode(loads, joint_capacity(scene, joint), ratio);
+    failure_mode(joint_loads(world, joint, w.force, w.torque), joint_capacity(scene, joint), ratio);
     largest = std::max(largest, ratio);
   }
   return largest;

@@ -22,6 +22,11 @@ namespace icedem {
 /// element A, moved to the joint midpoint and split in the joint frame).
 JointLoads joint_loads(const World& world, const IceJoint& joint);
 
+/// The same for a wrench on element A given apart from the feedback (force at A's centre of
+/// mass, torque about it; tank frame): a solve's answer before the step integrates.
+JointLoads joint_loads(const World& world, const IceJoint& joint, const Eigen::Vector3d& force_on_a,
+                       const Eigen::Vector3d& torque_on_a);
+
 /// The capacities of `joint` (eqs. 1-3 for its face: a square's side unless it has its own).
 JointCapacity joint_capacity(const Scene& scene, const IceJoint& joint);
 

@@ -426,8 +426,11 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
       joint_ratio_(problem, answer.l) >= settings_.breaking_ratio) {
     const double tolerance = options.tolerance;
     ContactProblem from_answer = problem;  // the observer sees the run's own warm start
-    for (std::size_t c = 0; c < problem.contacts.size(); ++c) from_answer.contacts[c].guess = answer.r.segment<3>(3 * c);
-    for (std::size_t j = 0; j < problem.joints.size(); ++j) from_answer.joints[j].guess = answer.l(static_cast<int>(j));
+    const auto start_from = [&from_answer](const SolverAnswer& a) {
+      for (std::size_t c = 0; c < from_answer.contacts.size(); ++c) from_answer.contacts[c].guess = a.r.segment<3>(3 * c);
+      for (std::size_t j = 0; j < from_answer.joints.size(); ++j) from_answer.joints[j].guess = a.l(static_cast<int>(j));
+    };
+    start_from(answer);
     options.tolerance = settings_.breaking_merit_tolerance;
     options.max_iterations = settings_.breaking_iterations;
     const auto keep_better = [&answer](SolverAnswer next) {
@@ -445,8 +448,7 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
     // Newton method finishes from its best answer
     if (answer.residual > settings_.breaking_merit_tolerance && settings_.method != "newton") {
       if (!newton_) newton_ = make_contact_method("newton");
-      for (std::size_t c = 0; c < problem.contacts.size(); ++c) from_answer.contacts[c].guess = answer.r.segment<3>(3 * c);
-      for (std::size_t j = 0; j < problem.joints.size(); ++j) from_answer.joints[j].guess = answer.l(static_cast<int>(j));
+      start_from(answer);
       options.max_iterations = kBreakingNewtonSteps;
       keep_better(newton_->solve(from_answer, options));
     }
