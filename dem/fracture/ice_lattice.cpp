@@ -89,13 +89,13 @@ void add_element_joint(World& world, IceJoint joint, const btTransform& frame_a,
 // face's normal (the springs and the loads are in that frame) and whose capacities follow
 // the face's length (dem/fracture/fracture.cpp)
 void add_outline_lattice_floe(World& world, const Floe& floe, int floe_id, double y, const FractureSettings& fracture,
-                              const IceSettings& ice, double friction) {
+                              const IceSettings& ice, double friction, bool held) {
   double yaw0 = 0;
   const OutlineLattice lattice = floe_outline_lattice(floe.shape, fracture, yaw0);
   const double yaw = floe.yaw + yaw0;
   const double floe_area = area(floe.shape);
   const AddedMass plate = plate_added_mass(floe_area, world.settings().water.water_density);
-  const bool dormant = fracture.lattice_radius > 0;
+  const bool dormant = !held && fracture.lattice_radius > 0;
   btTransform stand_in_pose;
   if (dormant) {
     DormantLattice& d = add_stand_in(world, floe, floe_id, y, friction, static_cast<int>(lattice.elements.size()),
@@ -116,6 +116,7 @@ void add_outline_lattice_floe(World& world, const Floe& floe, int floe_id, doubl
     pose.setRotation(btQuaternion(btVector3(0, 1, 0), yaw + shape.principal_yaw));
     const int index = world.add_body(shape, pose, floe_id, friction, 0, !dormant,
                                      element_added_mass(plate, floe_area, e.moments.area));
+    if (held) world.freeze(world.floes()[index]);
     if (dormant) {
       world.floes()[index].lattice = static_cast<int>(world.lattices().size()) - 1;
       world.lattices().back().offsets.push_back(stand_in_pose.inverse() * pose);
@@ -145,16 +146,17 @@ void add_outline_lattice_floe(World& world, const Floe& floe, int floe_id, doubl
     frame_a.setRotation(btQuaternion(btVector3(0, 1, 0), turn_a));
     frame_b.setRotation(btQuaternion(btVector3(0, 1, 0), turn_a + pa - pb));
     add_element_joint(world, std::move(joint), frame_a, frame_b,
-                      elastic_joint_springs_along(fracture, ice, j.face_length, (cb - ca).norm()), fracture, !dormant);
+                      elastic_joint_springs_along(fracture, ice, j.face_length, (cb - ca).norm()), fracture,
+                      !dormant && !held);
   }
 }
 
 }  // namespace
 
 void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, const FractureSettings& fracture,
-                      const IceSettings& ice, double friction) {
+                      const IceSettings& ice, double friction, bool held) {
   if (!paper_lattice(floe.shape, fracture)) {
-    add_outline_lattice_floe(world, floe, floe_id, y, fracture, ice, friction);
+    add_outline_lattice_floe(world, floe, floe_id, y, fracture, ice, friction, held);
     return;
   }
   // the lattice in the floe's principal frame (elements are squares in that frame)
@@ -170,7 +172,7 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
   const btQuaternion rotation(btVector3(0, 1, 0), yaw);
 
   // far from the structure the floe is one rigid body: its elements wait outside the world
-  const bool dormant = fracture.lattice_radius > 0;
+  const bool dormant = !held && fracture.lattice_radius > 0;
   btTransform stand_in_pose;
   if (dormant)
     add_stand_in(world, floe, floe_id, y, friction, static_cast<int>(lattice.centres.size()),
@@ -186,6 +188,7 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
     // one piece: its elements do not collide with each other (fragment 0); the floe's added mass
     // shared among its elements (dem/water/added_mass.hpp)
     const int index = world.add_body(element, pose, floe_id, friction, 0, !dormant, element_added);
+    if (held) world.freeze(world.floes()[index]);
     if (dormant) {
       DormantLattice& d = world.lattices().back();
       world.floes()[index].lattice = static_cast<int>(world.lattices().size()) - 1;
@@ -213,7 +216,7 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
     // elastic: springs of the ice, the same at any step (dem/world/joint_springs.hpp); else
     // Bullet's ERP and CFM set the stiffness. A dormant lattice's joints wait for wake_lattice
     const JointSprings springs = elastic_joint_springs(fracture, ice, joint.axis_a);
-    add_element_joint(world, std::move(joint), frame_a, frame_b, springs, fracture, !dormant);
+    add_element_joint(world, std::move(joint), frame_a, frame_b, springs, fracture, !dormant && !held);
   }
 }
 
@@ -318,6 +321,9 @@ namespace {
 
 void update_fragments(World& world, int floe_id) {
   std::vector<FloeBody>& floes = world.floes();
+  // level ice: thousands of elements, most held; only those whose fragment changed need new
+  // broadphase pairs, and a held element stays asleep (dem/fracture/level_ice.hpp)
+  const bool sheet = world.level_sheet() && world.level_sheet()->floe_id == floe_id;
   // fragments: connected components of the floe's elements over intact joints
   std::vector<int> bodies;
   for (int b = 0; b < static_cast<int>(floes.size()); ++b)
@@ -327,11 +333,28 @@ void update_fragments(World& world, int floe_id) {
   std::function<int(int)> root = [&](int x) { return parent[x] == x ? x : parent[x] = root(parent[x]); };
   for (const IceJoint& j : world.joints())
     if (j.floe == floe_id && j.constraint) parent[root(j.body_a)] = root(j.body_b);
-  for (int b : bodies) floes[b].fragment = root(b);
+  // the sheet's fragments named by their first element, which a break elsewhere leaves as it was
+  // (a root of the union depends on the order of all the unions before it)
+  std::map<int, int> first;
+  if (sheet)
+    for (int b : bodies) first.emplace(root(b), b);  // bodies ascend: the first is the least
+  std::vector<char> changed(bodies.size(), 1);
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const int fragment = sheet ? first.at(root(bodies[k])) : root(bodies[k]);
+    changed[k] = !sheet || floes[bodies[k]].fragment != fragment;
+    floes[bodies[k]].fragment = fragment;
+  }
   // new broadphase pairs between pieces that came apart: re-create their proxies
-  for (int b : bodies) {
-    floes[b].body->activate(true);
-    world.dynamics().refreshBroadphaseProxy(floes[b].body);
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    if (!changed[k]) continue;
+    FloeBody& f = floes[bodies[k]];
+    if (!(sheet && f.frozen)) f.body->activate(true);
+    // the sheet's pairs keep their sides through a checkpoint (World::refresh_proxy); the floes'
+    // are left as they were made, the paper profile's runs bit for bit
+    if (sheet)
+      world.refresh_proxy(*f.body);
+    else
+      world.dynamics().refreshBroadphaseProxy(f.body);
   }
 }
 
@@ -343,6 +366,8 @@ void break_joint(World& world, IceJoint& joint) {
   if (lattice >= 0) world.lattices()[lattice].broken = true;
   world.dynamics().removeConstraint(joint.constraint.get());
   joint.constraint.reset();
+  if (std::optional<LevelSheet>& sheet = world.level_sheet(); sheet && joint.floe == sheet->floe_id)
+    sheet->joint_in_world[joint.index] = 0;  // out of the solver (dem/fracture/level_ice.hpp)
   update_fragments(world, joint.floe);
 }
 

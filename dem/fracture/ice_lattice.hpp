@@ -41,9 +41,11 @@ OutlineLattice floe_outline_lattice(const Polygon& outline, const FractureSettin
 /// middle of each shared face with the fracture settings' softness (elastic joints: springs
 /// of `ice`);
 /// with fracture.lattice_radius > 0 a stand-in in the world and the lattice
-/// dormant. `friction`: ice against ice.
+/// dormant. `friction`: ice against ice. `held`: level ice (dem/fracture/level_ice.hpp), its
+/// elements in the world held where they lie (frozen) and its joints out of the solver, whatever
+/// the radius.
 void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, const FractureSettings& fracture,
-                      const IceSettings& ice, double friction);
+                      const IceSettings& ice, double friction, bool held = false);
 
 /// Put a dormant lattice in the world in place of its stand-in: every element
 /// takes the rigid-body motion of the stand-in at its place, the joints are

@@ -175,6 +175,12 @@ std::vector<KeySpec> make_keys() {
   k.push_back(real("tank.depth", "m", 1.8, 0.05, 1.0e3, "water depth (Table 1: 1.8 m)"));
 
   // ice
+  k.push_back(choice("ice.cover", "floes", {"floes", "level"},
+                     "what covers the channel: \"floes\" (a field of floes, ice.floe_size and ice.concentration, "
+                     "or layout.file) or \"level\" (one continuous sheet over the channel's length and width, "
+                     "breakable: fracture.mode = \"on\"; it moves within fracture.lattice_radius of the structure "
+                     "axis and is held where it lies beyond, as the sheet far from the structure is; "
+                     "dem/fracture/level_ice.hpp)"));
   k.push_back(positive("ice.floe_size", "m", 0.3, 100.0, "side of the square floes (paper: 0.3 / 0.6 m)"));
   k.push_back(real("ice.thickness", "m", 0.033, 0.001, 10.0, "ice thickness (Table 3: 0.033 m)"));
   k.push_back(real("ice.concentration", "-", 0.75, 0.0, 0.9,

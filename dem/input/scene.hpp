@@ -81,7 +81,10 @@ struct ChannelSettings {
   double tank_depth; // m, water depth
 };
 
+// what covers the channel: a field of floes, or one continuous sheet (dem/fracture/level_ice.hpp)
+enum class IceCover { kFloes, kLevel };
 struct IceSettings {
+  IceCover cover;
   double floe_size;             // m, side of square floes
   double thickness;             // m
   double concentration;         // -, area fraction

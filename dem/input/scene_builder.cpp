@@ -74,10 +74,16 @@ void check_limits(const Scenario& sc, const Scene& s) {
     fail_key(sc, blamed(sc, {"time.dt", "time.duration", "time.substeps"}), fmt::format("time.duration = {} s at this step and {} substeps is {:.3g} Bullet steps, more "
                                     "than {:.0e} a run can hold; lengthen the step or shorten the run",
                                     s.time.duration, s.time.substeps, steps, kMaxSteps));
-  if (s.layout.file.empty() && s.validation.kind == ValidationKind::kNone) {
+  // a hexagon of element_size across flats holds sqrt(3)/2 of that square's area
+  const double per_cell = s.fracture.element_shape == ElementShape::kHexagon ? 2.0 / std::sqrt(3.0) : 1.0;
+  if (s.ice.cover == IceCover::kLevel) {
+    const double elements = per_cell * s.channel.length * s.channel.width / std::pow(s.fracture.element_size, 2);
+    if (elements > kMaxBodies)
+      fail_key(sc, blamed(sc, {"fracture.element_size", "channel.length", "channel.width"}),
+               fmt::format("{:.3g} elements of level ice fill the channel, more than {:.0e} bodies; use larger "
+                           "elements or a smaller channel", elements, kMaxBodies));
+  } else if (s.layout.file.empty() && s.validation.kind == ValidationKind::kNone) {
     const double floes = s.ice.concentration * s.channel.length * s.channel.width / (s.ice.floe_size * s.ice.floe_size);
-    // a hexagon of element_size across flats holds sqrt(3)/2 of that square's area
-    const double per_cell = s.fracture.element_shape == ElementShape::kHexagon ? 2.0 / std::sqrt(3.0) : 1.0;
     const double per_floe =
         generated_floes_breakable(s) ? per_cell * std::pow(s.ice.floe_size / s.fracture.element_size, 2) : 1.0;
     if (floes > kMaxBodies)
@@ -110,6 +116,34 @@ void check_structure_in_tank(const Scenario& sc, const Scene& s) {
              fmt::format("the hull (radius {:.3f} m where it meets the ice) at z = {} m reaches beyond the tank's "
                          "side at |z| = {} m (tank.width / 2)",
                          r, s.structure.start_z, 0.5 * s.channel.tank_width));
+}
+
+// Level ice (ice.cover = "level", dem/fracture/level_ice.hpp): a breakable sheet that moves near
+// the structure and is held beyond, built from the channel alone
+void check_level_ice(const Scenario& sc, const Scene& s) {
+  const std::string why = "ice.cover = \"level\" ";
+  if (s.validation.kind != ValidationKind::kNone)
+    fail_key(sc, "ice.cover", "\"floes\" for a validation case: its plate or beam is the only ice");
+  if (s.fracture.mode != FractureMode::kOn)
+    fail_key(sc, "fracture.mode", "\"on\" with " + why + "(the sheet is a lattice of breakable elements)");
+  if (!s.layout.file.empty())
+    fail_key(sc, "layout.file", "empty with " + why + "(the sheet fills the channel; a layout is of floes)");
+  if (s.layout.layers > 1) fail_key(sc, "layout.layers", "1 with " + why + "(one sheet)");
+  if (s.water.added_mass)
+    fail_key(sc, "water.added_mass", "false with " + why + "(the added mass is a floe's, of its whole outline; a "
+                                     "sheet's has no such model here)");
+  if (s.activation.freeze_outside_region)
+    fail_key(sc, "activation.freeze_outside_region",
+             "false with " + why + "(the sheet is held beyond fracture.lattice_radius by its own rule)");
+  // the sheet moves within the radius: it must reach past the elements the hull can touch
+  const double reach = hull_radius_in_ice(s) + 2 * s.fracture.element_size;
+  if (s.fracture.lattice_radius < reach)
+    fail_key(sc, "fracture.lattice_radius",
+             fmt::format("at least the hull's radius in the ice plus two elements ({:.3f} m) with {}: level ice "
+                         "moves within this distance of the structure axis and is held where it lies beyond it "
+                         "(a few characteristic lengths, {:.3f} m here, keep the held edge from stiffening the "
+                         "sheet the structure bends)",
+                         reach, why, s.fracture.characteristic_length));
 }
 
 Scene make_scene(const Scenario& sc) {
@@ -175,6 +209,7 @@ Scene make_scene(const Scenario& sc) {
   if (s.channel.width > s.channel.tank_width)
     fail_key(sc, "channel.width", fmt::format("wider than the tank (tank.width = {} m)", s.channel.tank_width));
 
+  s.ice.cover = choice<IceCover>(sc, "ice.cover", {{"floes", IceCover::kFloes}, {"level", IceCover::kLevel}});
   s.ice.floe_size = real(sc, "ice.floe_size");
   s.ice.thickness = real(sc, "ice.thickness");
   s.ice.concentration = real(sc, "ice.concentration");
@@ -201,7 +236,7 @@ Scene make_scene(const Scenario& sc) {
   if (s.ice.density >= s.water.density)
     fail_key(sc, "ice.density", fmt::format("ice must be lighter than water (water.density = {} kg/m^3)",
                                             s.water.density));
-  if (s.ice.floe_size >= s.channel.width)
+  if (s.ice.cover == IceCover::kFloes && s.ice.floe_size >= s.channel.width)
     fail_key(sc, "ice.floe_size", fmt::format("floes must be smaller than the channel (channel.width = {} m)",
                                               s.channel.width));
 
@@ -310,13 +345,14 @@ Scene make_scene(const Scenario& sc) {
   s.validation.tip_speed = real(sc, "validation.tip_speed");
 
   // a lattice is a whole number of elements across; floes of any size stay rigid
-  if (s.layout.size_spread > 0 && generated_floes_breakable(s))
+  if (s.ice.cover == IceCover::kFloes && s.layout.size_spread > 0 && generated_floes_breakable(s))
     fail_key(sc, "layout.size_spread",
              fmt::format("0 with breakable floes (fracture.mode = \"on\", or \"auto\" with floes up to {:.3g} m against "
                          "the characteristic length {:.3g} m): a lattice needs a whole number of elements across; "
                          "a spread of sizes is for rigid floes (fracture.mode \"off\" or \"analytic\")",
                          largest_generated_floe(s), s.fracture.characteristic_length));
-  if (generated_floes_breakable(s) && s.layout.file.empty() && s.validation.kind == ValidationKind::kNone &&
+  if (s.ice.cover == IceCover::kFloes && generated_floes_breakable(s) && s.layout.file.empty() &&
+      s.validation.kind == ValidationKind::kNone &&
       s.fracture.element_shape == ElementShape::kSquare && s.fracture.lattice_angle == 0) {
     // generated square floes must be a whole number of square elements across (the paper's lattice)
     if (const double n = s.ice.floe_size / s.fracture.element_size; !whole(n))
@@ -385,6 +421,7 @@ Scene make_scene(const Scenario& sc) {
     fail_key(sc, "stats.lowpass_hz", fmt::format("must be below the Nyquist frequency 1/(2 dt) = {} Hz", 0.5 / s.time.dt));
   if (s.stats.window_end_travel > 0 && s.stats.window_end_travel <= s.stats.window_start_travel)
     fail_key(sc, "stats.window_end_travel", "must be beyond stats.window_start_travel (or 0 for the end of the run)");
+  if (s.ice.cover == IceCover::kLevel) check_level_ice(sc, s);
   if (s.validation.kind == ValidationKind::kNone) check_structure_in_tank(sc, s);
   check_limits(sc, s);
   return s;

@@ -10,6 +10,7 @@
 
 #include "dem/core/errors.hpp"
 #include "dem/fracture/ice_lattice.hpp"
+#include "dem/fracture/level_ice.hpp"
 
 namespace icedem {
 namespace {
@@ -136,6 +137,13 @@ void restore_world(World& world, const WorldState& s) {
     if (s.lattice_replaced[l]) wake_lattice(world, world.lattices()[l]);
   for (std::size_t j = 0; j < world.joints().size(); ++j)
     if (s.joint_broken[j]) break_joint(world, world.joints()[j]);
+  // level ice: the build holds every element of the sheet; those the run had released move again
+  // (before the collision pass below, which makes their contacts) with their joints in the solver
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    FloeBody* f = world.ice_body(bodies[i].get());
+    if (f && f->frozen && !s.bodies[i].frozen) world.unfreeze(*f);
+  }
+  sync_level_sheet_joints(world);
 
   // every body where it was. The bodies of the checkpoint's manifolds are awake for the
   // collision pass below, which makes a manifold for each of their pairs (Bullet skips pairs of

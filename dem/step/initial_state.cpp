@@ -10,6 +10,7 @@
 #include "dem/activation/activation.hpp"
 #include "dem/core/errors.hpp"
 #include "dem/fracture/ice_lattice.hpp"
+#include "dem/fracture/level_ice.hpp"
 #include "dem/step/step.hpp"
 #include "dem/step/world_builder.hpp"
 #include "dem/world/cone_geometry.hpp"
@@ -144,7 +145,11 @@ Layout scene_layout(const Scene& scene, const std::function<void(double)>& on_pr
     return single_floe_layout(scene, scene.validation.beam_elements * scene.fracture.element_size,
                               scene.fracture.element_size);
   Layout layout;
-  if (!scene.layout.file.empty()) {
+  if (scene.ice.cover == IceCover::kLevel) {  // one sheet over the channel (dem/fracture/level_ice.hpp)
+    layout.floes.push_back(level_sheet_floe(scene));
+    layout.channel_area = scene.channel.length * scene.channel.width;
+    layout.achieved_concentration = area(layout.floes[0].shape) / layout.channel_area;
+  } else if (!scene.layout.file.empty()) {
     layout = read_layout_file(scene.layout.file, scene_channel(scene));
   } else {
     // a generated layout's problems come from the scenario's keys: name its file

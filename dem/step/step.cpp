@@ -7,6 +7,7 @@
 #include "dem/fracture/fracture.hpp"
 #include "dem/fracture/fracture_split.hpp"
 #include "dem/fracture/lattice_region.hpp"
+#include "dem/fracture/level_ice.hpp"
 #include "dem/step/health_check.hpp"
 #include "dem/water/water_forces.hpp"
 #include "dem/world/boundary_load.hpp"
@@ -113,7 +114,9 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   {
     StageTimer t(times.activation);
     // the lattices the structure reaches first: their elements wake, and reach the floes
-    // around them before this step's collision detection, as any awake body does
+    // around them before this step's collision detection, as any awake body does; so does
+    // the level sheet near it
+    update_level_sheet(scene, state.structure_position, *state.world);
     update_lattice_region(scene, state.structure_position, *state.world, state.fracture);
     enter_reached_floes(scene, *state.world);
   }

@@ -5,6 +5,7 @@
 
 #include "dem/core/constants.hpp"
 #include "dem/fracture/ice_lattice.hpp"
+#include "dem/fracture/level_ice.hpp"
 #include "dem/world/cone_geometry.hpp"
 
 namespace icedem {
@@ -114,6 +115,10 @@ void add_floes(World& world, const Scene& scene, const std::vector<Floe>& floes)
   for (const FloeBody& f : world.floes()) floe_id = std::max(floe_id, f.floe_id + 1);
   for (const Floe& floe : floes) {
     const double y = initial_height(scene, floe);
+    if (scene.ice.cover == IceCover::kLevel) {  // the layout's one floe: the sheet
+      add_level_sheet(world, scene, floe, floe_id++, y);
+      continue;
+    }
     if (is_breakable(scene, floe.shape)) {
       add_lattice_floe(world, floe, floe_id++, y, scene.fracture, scene.ice, scene.friction.ice_ice);
       continue;

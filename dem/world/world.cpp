@@ -323,6 +323,17 @@ void World::enter_world(btRigidBody& body) {
   }
 }
 
+void World::refresh_proxy(btRigidBody& body) {
+  if (!dbvt_) {
+    dynamics_->refreshBroadphaseProxy(&body);
+    return;
+  }
+  const int next_id = dbvt_->m_gid;
+  dbvt_->m_gid = body.getUserIndex3();  // the broadphase gives the body m_gid + 1, as in enter_world
+  dynamics_->refreshBroadphaseProxy(&body);
+  dbvt_->m_gid = std::max(next_id, body.getUserIndex3() + 1);
+}
+
 std::vector<int> World::awake_floe_indices() const {
   std::vector<int> awake;
   const btAlignedObjectArray<btRigidBody*>& bodies = dynamics_->getNonStaticRigidBodies();

@@ -55,7 +55,8 @@ struct FloeBody {
   btRigidBody* body;       // owned by World
   int floe_id;             // index of its floe in the layout
   const FloeShape* shape;  // owned by World
-  bool frozen = false;     // a fixed obstacle for now (dem/activation/activation.hpp)
+  bool frozen = false;     // a fixed obstacle for now (dem/activation/activation.hpp), or an element of
+                           // level ice held where it lies (dem/fracture/level_ice.hpp)
   int fragment = -1;       // breakable floes: elements of one fragment do not collide; -1: rigid floe
   bool stand_in = false;   // the whole floe standing in for its dormant lattice (not an output body)
   int lattice = -1;        // index into World::lattices() for a floe with a lattice region, else -1
@@ -104,6 +105,17 @@ struct DormantLattice {
   bool replaced = false;              // the lattice is in the world, the stand-in is not
   bool broken = false;                // a joint has broken: it stays a lattice
   bool equal_elements = true;         // its elements are equal squares (else, once woken, it stays a lattice)
+};
+
+/// Level ice (dem/fracture/level_ice.hpp): one breakable sheet whose elements are held where they
+/// lie (frozen) far from the structure and move near it; a joint is in the solver while it is
+/// intact and one of its elements moves.
+struct LevelSheet {
+  int floe_id = -1;                              // its floe index in the layout
+  int first_element = 0, elements = 0;           // World::floes()[first_element, first_element + elements)
+  int first_joint = 0, joints = 0;               // World::joints()[first_joint, first_joint + joints)
+  std::vector<char> edge;                        // per element: along the sheet's sides or far end
+  std::vector<char> joint_in_world;              // per joint: its constraint is in the solver
 };
 
 /// What a World is made with (from the Scene: world_settings() in dem/step/world_builder.hpp).
@@ -194,6 +206,10 @@ class World {
   std::vector<DormantLattice>& lattices() { return lattices_; }
   const std::vector<DormantLattice>& lattices() const { return lattices_; }
 
+  /// The level sheet (ice.cover = "level"), if the scene has one.
+  std::optional<LevelSheet>& level_sheet() { return level_sheet_; }
+  const std::optional<LevelSheet>& level_sheet() const { return level_sheet_; }
+
   /// Move every body now in Bullet's world to its broadphase's tree of resting boxes, built
   /// balanced. Bullet's dbvt does that itself two steps after a body last moved, one
   /// insertion at a time, so a field made at once (the floes made row by row) became a deep
@@ -205,6 +221,12 @@ class World {
   /// insertion at a time, and all of a field at once in the order it was made built a chain
   /// (restoring a 96,000-floe checkpoint took 100 s of CPU).
   void update_boxes_shuffled(std::vector<btCollisionObject*> objects);
+
+  /// Make a body's broadphase proxy again (its pairs are found anew), under the same id it
+  /// entered with (enter_world), so that its pairs keep their sides. Bullet's own refresh hands
+  /// out the next free id, and a world rebuilt from a checkpoint, which refreshes in another
+  /// order, then meets the pairs from other sides (round-off apart).
+  void refresh_proxy(btRigidBody& body);
 
   /// Put a body made by the world into Bullet's world (every body enters through here).
   /// Throws InputError if the sweep-and-prune broadphase is full (kSweepAndPruneBodies).
@@ -272,6 +294,7 @@ class World {
   std::vector<FloeBody> floes_;
   std::vector<IceJoint> joints_;
   std::vector<DormantLattice> lattices_;
+  std::optional<LevelSheet> level_sheet_;
   std::vector<FloeSplit> splits_;
   UnreachedFloes unreached_;
   std::unique_ptr<btOverlapFilterCallback> fragment_filter_;

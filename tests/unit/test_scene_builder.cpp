@@ -31,6 +31,7 @@ std::string chosen(const Scene& s, const std::string& key) {
   if (key == "validation.case") return std::to_string(static_cast<int>(s.validation.kind));
   if (key == "water.buoyancy") return std::to_string(s.water.linear_buoyancy);
   if (key == "fracture.element_shape") return std::to_string(static_cast<int>(s.fracture.element_shape));
+  if (key == "ice.cover") return std::to_string(static_cast<int>(s.ice.cover));
   return "";  // a choice key this test does not know: it fails below
 }
 
@@ -46,7 +47,7 @@ TEST(SceneBuilder, EveryChoiceOfEveryChoiceKeyGivesItsOwnSceneValue) {
       // what other keys the choice needs (validation cases run on elements)
       std::vector<std::string> sets{spec.path + "=\"" + name + "\"", "fracture.mode=\"on\"", "ice.floe_size=0.6",
                                     "fracture.element_size=0.15", "validation.plate_size=0.6",
-                                    "coupling.exchange_dir=\"/tmp\""};
+                                    "coupling.exchange_dir=\"/tmp\"", "fracture.lattice_radius=1.5"};
       if (spec.path == "fracture.mode") sets = {spec.path + "=\"" + name + "\""};
       try {
         const Scene s = load_scene(kScenario, sets);

@@ -1,0 +1,92 @@
+#include "dem/fracture/level_ice.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "dem/fracture/ice_lattice.hpp"
+#include "dem/fracture/lattice_region.hpp"
+
+namespace icedem {
+
+Floe level_sheet_floe(const Scene& scene) {
+  const double a = scene.channel.length / 2, b = scene.channel.width / 2 - scene.layout.min_gap;
+  return Floe{Eigen::Vector2d(scene.channel.start_x + a, 0.0), 0.0, {{-a, -b}, {a, -b}, {a, b}, {-a, b}}};
+}
+
+void add_level_sheet(World& world, const Scene& scene, const Floe& floe, int floe_id, double y) {
+  LevelSheet sheet;
+  sheet.floe_id = floe_id;
+  sheet.first_element = static_cast<int>(world.floes().size());
+  sheet.first_joint = static_cast<int>(world.joints().size());
+  add_lattice_floe(world, floe, floe_id, y, scene.fracture, scene.ice, scene.friction.ice_ice, /*held=*/true);
+  sheet.elements = static_cast<int>(world.floes().size()) - sheet.first_element;
+  sheet.joints = static_cast<int>(world.joints().size()) - sheet.first_joint;
+  sheet.joint_in_world.assign(sheet.joints, 0);
+  // the elements the ice around the sheet holds: along its sides and its far end (the structure
+  // comes from x_min), within an element of the outline's edge
+  double x_max = -INFINITY, z_min = INFINITY, z_max = -INFINITY;
+  for (const Eigen::Vector2d& v : floe.shape) {
+    x_max = std::max(x_max, floe.centre.x() + v.x());
+    z_min = std::min(z_min, floe.centre.y() + v.y());
+    z_max = std::max(z_max, floe.centre.y() + v.y());
+  }
+  const double near = scene.fracture.element_size;
+  sheet.edge.assign(sheet.elements, 0);
+  for (int i = 0; i < sheet.elements; ++i) {
+    FloeBody& f = world.floes()[sheet.first_element + i];
+    const btVector3 c = f.body->getCenterOfMassPosition();
+    sheet.edge[i] = c.z() - z_min < near || z_max - c.z() < near || x_max - c.x() < near;
+    f.fragment = sheet.first_element;  // named by its first element, as after a break (ice_lattice.cpp)
+  }
+  world.level_sheet() = std::move(sheet);
+}
+
+bool in_level_sheet(const World& world, int index) {
+  const std::optional<LevelSheet>& s = world.level_sheet();
+  return s && index >= s->first_element && index < s->first_element + s->elements;
+}
+
+void sync_level_sheet_joints(World& world) {
+  std::optional<LevelSheet>& sheet = world.level_sheet();
+  if (!sheet) return;
+  for (int j = 0; j < sheet->joints; ++j) {
+    IceJoint& joint = world.joints()[sheet->first_joint + j];
+    char& in_world = sheet->joint_in_world[j];
+    if (!joint.constraint) {  // broken: break_joint took it out of the solver
+      in_world = 0;
+      continue;
+    }
+    const bool wanted = !(world.floes()[joint.body_a].frozen && world.floes()[joint.body_b].frozen);
+    if (wanted && !in_world)
+      world.dynamics().addConstraint(joint.constraint.get(), false);  // the fragment filter handles collisions
+    else if (!wanted && in_world)
+      world.dynamics().removeConstraint(joint.constraint.get());
+    in_world = wanted;
+  }
+}
+
+void update_level_sheet(const Scene& scene, const Eigen::Vector3d& structure, World& world) {
+  std::optional<LevelSheet>& sheet = world.level_sheet();
+  if (!sheet) return;
+  const double radius = scene.fracture.lattice_radius;
+  std::vector<FloeBody>& floes = world.floes();
+  // the fragments still part of the sheet: those with an element the ice around it holds
+  std::set<int> attached;
+  for (int i = 0; i < sheet->elements; ++i)
+    if (sheet->edge[i]) attached.insert(floes[sheet->first_element + i].fragment);
+  for (int i = 0; i < sheet->elements; ++i) {
+    FloeBody& f = floes[sheet->first_element + i];
+    const btVector3 c = f.body->getCenterOfMassPosition();
+    // the element's nearest point is at least this far from the axis
+    const double gap = std::hypot(c.x() - structure.x(), c.z() - structure.z()) - f.shape->radius;
+    if (f.frozen && gap < radius) {
+      world.unfreeze(f);  // at rest where it was held, awake
+    } else if (!f.frozen && gap > radius + kLatticeHysteresis && attached.count(f.fragment)) {
+      world.freeze(f);  // where it lies now: its joints keep the offsets they hold
+    }
+  }
+  // every step, as the joints broken since (each a pass over two flags)
+  sync_level_sheet_joints(world);
+}
+
+}  // namespace icedem
