@@ -6,7 +6,7 @@
 //   icedem keys                                 every scenario key (markdown)
 //   icedem schema                               every output: datasets, attributes, summary keys
 //   icedem stl SCENARIO.toml -o hull.stl        the structure's surface
-//   icedem cone-load SCENARIO.toml             the ISO 19906 load of level ice on the structure
+//   icedem cone-load SCENARIO.toml             the ISO 19906 and Ralston loads of level ice on the structure
 //   icedem calibrate PLATE.toml [--target-modulus PA] [--write OUT.toml]
 //                                               joint CFM for a target elastic modulus
 //   icedem foam-case SCENARIO.toml -o DIR       a runnable OpenFOAM case (DIR/Allrun)
@@ -42,6 +42,7 @@
 #include "dem/step/initial_state.hpp"
 #include "dem/validation/calibration.hpp"
 #include "dem/validation/iso19906.hpp"
+#include "dem/validation/ralston.hpp"
 #include "dem/world/cone_geometry.hpp"
 
 using namespace icedem;
@@ -214,6 +215,7 @@ int cone_load_command(const std::string& scenario_path, const std::vector<std::s
   ConeLoadInputs in = cone_load_inputs(scene);
   in.rubble = pile;
   const ConeLoad r = iso19906_cone_load(in);
+  const RalstonLoad ralston = ralston_cone_load(in);  // no pile in its method
   if (json) {  // for the report's comparison of fracture models (tools/icedem_tools/report_fracture_models.py)
     const nlohmann::json j{{"friction", in.friction},
                            {"ice_friction", in.ice_friction},
@@ -227,7 +229,10 @@ int cone_load_command(const std::string& scenario_path, const std::vector<std::s
                            {"total_N", r.total},
                            {"breaking_only_N", r.breaking_only},
                            {"crack_width_m", r.crack_width},
-                           {"characteristic_length_m", r.characteristic_length}};
+                           {"characteristic_length_m", r.characteristic_length},
+                           {"ralston_breaking_N", ralston.breaking},
+                           {"ralston_ride_N", ralston.ride},
+                           {"ralston_total_N", ralston.total}};
     std::cout << j.dump(2) << "\n";
     return kExitOk;
   }
@@ -250,6 +255,12 @@ int cone_load_command(const std::string& scenario_path, const std::vector<std::s
       r.ride_height, in.thickness, in.flexural_strength, in.elastic_modulus, in.poisson_ratio, in.ice_density,
       in.water_density, in.friction, pile_text, r.characteristic_length, r.crack_width, r.slope_factor, r.breaking,
       r.pile_push, r.ride, r.pile_lift, r.turning, r.total, r.breaking_only);
+  std::cout << fmt::format(
+      "Ralston (IEC 61400-3) load of level ice on the same slope, dem/validation/ralston.hpp{}:\n"
+      "  slope ends at D_T {:.3f} m, G {:.3f}\n"
+      "  breaking H_B {:.1f} N, ride H_R {:.1f} N, total H {:.1f} N\n",
+      pile.height > 0 ? " (no rubble pile in its method)" : "", in.end_diameter, ralston.weight_ratio,
+      ralston.breaking, ralston.ride, ralston.total);
   return kExitOk;
 }
 
@@ -379,7 +390,7 @@ int main(int argc, char** argv) {
   stl->add_option("-o,--output", output, "STL file")->required();
 
   CLI::App* cone_load = app.add_subcommand(
-      "cone-load", "the ISO 19906 (Croasdale) load of level ice on the scenario's structure, term by term");
+      "cone-load", "the ISO 19906 (Croasdale) and Ralston loads of level ice on the scenario's structure, term by term");
   cone_load->add_option("scenario", scenario, "scenario TOML file")->required();
   cone_load->add_option("--set", sets, "override a scenario key")->take_all();
   bool cone_load_json = false;

@@ -18,6 +18,7 @@ COMMANDS = {
     "full_runs": ("full_runs", "the contact solve judged on the paper's full runs"),
     "convergence": ("convergence", "convergence of the contact solve, error against cost"),
     "convergence_check": ("convergence_check", "whether a <model>+<numerics> sweep's findings move with its numerics"),
+    "level_ice_report": ("level_ice_report", "a level-ice sweep's loads against ISO 19906 and Ralston, and where it broke"),
     "ladder": ("ladder", "run time against error, a ladder of solver settings"),
     "budget": ("budget", "the model-error budget against the tank: what each factor does to the loads"),
     "tank_maxima": ("tank_maxima", "the tank's largest load against the distribution of the runs' maxima"),

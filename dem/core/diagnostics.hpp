@@ -23,6 +23,7 @@ struct StepDiagnostics {
   double solver_residual = 0;       // largest residual an island ended its sweeps with
   double solver_capped = 0;         // 1 if an island reached solver.iterations above solver.tolerance
   double breaking_solves = 0;       // islands solved again for a joint near its capacity (solver.breaking_ratio)
+  double breaking_decided = 0;      // of those, the ones every break of which was decided at solver.breaking_check_tolerance
   double breaking_capped = 0;       // of those, the ones that stopped at solver.breaking_iterations above their merit
   double boundary_load = 0;         // N, fixed bodies' resistance to the structure's push (dem/world/boundary_load.hpp)
   double locked = 0;                // 1 if the boundaries carry kLockedShare of the surge load or more
@@ -68,8 +69,12 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      &StepDiagnostics::solver_capped},
     {"breaking_solves", "1",
      "islands solved again in the step, from their answer, to solver.breaking_merit_tolerance because the answer "
-     "put a joint at solver.breaking_ratio of its capacity or more (methods other than \"pgs\")",
+     "put a joint's failure ratio within 1 - solver.breaking_ratio of 1 (methods other than \"pgs\")",
      &StepDiagnostics::breaking_solves},
+    {"breaking_decided", "1",
+     "of the step's breaking_solves, the islands that stopped at solver.breaking_check_tolerance with every "
+     "joint's failure ratio farther than solver.breaking_check_band from 1: each break decided there",
+     &StepDiagnostics::breaking_decided},
     {"breaking_capped", "1",
      "of the step's breaking_solves, the islands that stopped at solver.breaking_iterations above "
      "solver.breaking_merit_tolerance: their joints' loads are no better known than at the joints' merit",

@@ -1,6 +1,7 @@
 #include "dem/fracture/fracture.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "dem/fracture/break_context.hpp"
@@ -35,7 +36,7 @@ JointCapacity joint_capacity(const Scene& scene, const IceJoint& joint) {
   return c;
 }
 
-double largest_joint_ratio(const Scene& scene, const World& world, const ContactProblem& p, const Eigen::VectorXd& l) {
+JointRatios joint_ratios(const Scene& scene, const World& world, const ContactProblem& p, const Eigen::VectorXd& l) {
   // the wrench each joint's rows put on its element A, as Bullet's joint feedback sums it
   // (J_A^T l / h: the rows' linear and angular parts on A)
   struct Wrench {
@@ -54,14 +55,15 @@ double largest_joint_ratio(const Scene& scene, const World& world, const Contact
     w.force += j.head<3>().transpose() * (l(static_cast<int>(r)) / p.dt);
     w.torque += j.tail<3>().transpose() * (l(static_cast<int>(r)) / p.dt);
   }
-  double largest = 0;
+  JointRatios out;
   for (const auto& [index, w] : on_a) {
     const IceJoint& joint = world.joints()[index];
     double ratio = 0;
     failure_mode(joint_loads(world, joint, w.force, w.torque), joint_capacity(scene, joint), ratio);
-    largest = std::max(largest, ratio);
+    out.largest = std::max(out.largest, ratio);
+    if (std::abs(ratio - 1) < std::abs(out.nearest - 1)) out.nearest = ratio;
   }
-  return largest;
+  return out;
 }
 
 namespace {

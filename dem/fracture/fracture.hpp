@@ -30,13 +30,16 @@ JointLoads joint_loads(const World& world, const IceJoint& joint, const Eigen::V
 /// The capacities of `joint` (eqs. 1-3 for its face: a square's side unless it has its own).
 JointCapacity joint_capacity(const Scene& scene, const IceJoint& joint);
 
-/// The largest failure ratio (load over capacity, eqs. 1-3) the joints of an island's
-/// contact problem reach with its joint rows' impulses `l` over the problem's step: the
-/// measure of check_fracture, taken on a solve's answer before the step integrates (the
-/// contact solver solves an island again, tighter, when a joint is near breaking:
-/// solver.breaking_ratio).
-double largest_joint_ratio(const Scene& scene, const World& world, const ContactProblem& problem,
-                           const Eigen::VectorXd& l);
+/// The failure ratios (load over capacity, eqs. 1-3) the joints of an island's contact
+/// problem reach with its joint rows' impulses `l` over the problem's step: the measure of
+/// check_fracture, taken on a solve's answer before the step integrates (the contact solver
+/// solves an island again, tighter, when a joint's is near 1: solver.breaking_ratio).
+struct JointRatios {
+  double largest = 0;       // -, the largest (0 without joints)
+  double nearest = 0;       // -, the one nearest to 1 (0 without joints)
+};
+JointRatios joint_ratios(const Scene& scene, const World& world, const ContactProblem& problem,
+                         const Eigen::VectorXd& l);
 
 /// Check every intact joint of `world` with an awake element after a Bullet step of `h` seconds
 /// that ended at `time`, the structure's reference point at `structure` (low-passing the loads

@@ -107,15 +107,28 @@ std::vector<KeySpec> make_keys() {
                    "impulses, and a loose solve leaves it low along the force chains (on the paper's "
                    "small-floe run, 3-5 % low at 1e-3; docs/model/convergence.md)"));
   k.push_back(real("solver.breaking_merit_tolerance", "-", 3e-6, 1e-14, 1.0,
-                   "solver.method other than \"pgs\": an island whose answer puts a joint at "
-                   "solver.breaking_ratio of its capacity or more is solved again, from that answer, to this merit: "
+                   "solver.method other than \"pgs\": an island whose answer puts a joint's failure ratio within "
+                   "1 - solver.breaking_ratio of 1 is solved again, from that answer, to this merit "
+                   "(after solver.breaking_check_tolerance): "
                    "whether the joint breaks is then decided on loads within about 0.5 % of its bending capacity, "
                    "where the merit of 1e-4 leaves up to 5 % (on the lattices' breaking steps; "
                    "docs/model/contact_problems.md). Not below solver.joint_merit_tolerance: off"));
   k.push_back(real("solver.breaking_ratio", "-", 0.9, 0.0, 10.0,
-                   "solver.method other than \"pgs\": the failure ratio (a joint's load over its capacity, eqs. "
-                   "1-3) from which an island is solved again to solver.breaking_merit_tolerance: 0.9 leaves "
-                   "twice the 5 % the joint merit tolerance's error may reach"));
+                   "solver.method other than \"pgs\": an island is solved again to solver.breaking_merit_tolerance "
+                   "when a joint's failure ratio (its load over its capacity, eqs. 1-3) lies within 1 - this of 1: "
+                   "0.9 to 1.1 at 0.9, twice the 5 % the joint merit tolerance's error may reach; a joint farther "
+                   "from 1 breaks, or does not, whatever a tighter solve says"));
+  k.push_back(real("solver.breaking_check_tolerance", "-", 1e-5, 0.0, 1.0,
+                   "solver.method other than \"pgs\": an island solved again for a joint near its capacity is "
+                   "first solved to this merit, and stops there if every joint's failure ratio is then farther "
+                   "than solver.breaking_check_band from 1 (each break decided: at 1e-5 the joints' loads are "
+                   "within 2 % of the bending capacity on the lattices' breaking steps, docs/model/"
+                   "contact_problems.md); else it goes on to solver.breaking_merit_tolerance. Not above that "
+                   "merit (0, say): off"));
+  k.push_back(real("solver.breaking_check_band", "-", 0.04, 0.0, 10.0,
+                   "solver.method other than \"pgs\": how far from 1 every joint's failure ratio must be at "
+                   "solver.breaking_check_tolerance for the solve to stop there: 0.04, twice the 2 % that "
+                   "merit's error reached"));
   k.push_back(integer("solver.breaking_iterations", 20000, 1, 1000000,
                       "solver.method other than \"pgs\": cap of the method's iterations when an island is solved "
                       "again for a joint near its capacity (solver.breaking_merit_tolerance; the gradient method "

@@ -56,7 +56,9 @@ struct SolverSettings {
   double joint_merit_tolerance;  // -, the same for an island with joint rows, if smaller
   double structure_merit_tolerance;  // -, the same for an island touching the structure, if smaller
   double breaking_merit_tolerance;  // -, an island with a joint near its capacity is solved again to this
-  double breaking_ratio;            // -, a joint's failure ratio from which it is
+  double breaking_ratio;            // -, a joint's failure ratio within 1 - this of 1 has its island solved again
+  double breaking_check_tolerance;  // -, merit of a first check of such an island's breaks
+  double breaking_check_band;       // -, how far from 1 every ratio must then be to stop there
   int breaking_iterations;          // cap of the method's iterations then
   int method_iterations;      // cap of the method's iterations per island and Bullet step
   int position_iterations;    // cap of the split-impulse position sweeps per island and Bullet step

@@ -176,6 +176,8 @@ Scene make_scene(const Scenario& sc) {
   s.solver.structure_merit_tolerance = real(sc, "solver.structure_merit_tolerance");
   s.solver.breaking_merit_tolerance = real(sc, "solver.breaking_merit_tolerance");
   s.solver.breaking_ratio = real(sc, "solver.breaking_ratio");
+  s.solver.breaking_check_tolerance = real(sc, "solver.breaking_check_tolerance");
+  s.solver.breaking_check_band = real(sc, "solver.breaking_check_band");
   s.solver.breaking_iterations = integer(sc, "solver.breaking_iterations");
   s.solver.method_iterations = integer(sc, "solver.method_iterations");
   s.solver.position_iterations = integer(sc, "solver.position_iterations");

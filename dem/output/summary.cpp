@@ -46,9 +46,10 @@ std::string solver_line(const SolverSummary& v) {
                            v.residual_max);
   if (v.breaking_solves > 0)
     out += fmt::format("  {} islands solved again to a merit of {:g} for a joint near its capacity (their "
-                       "iterations count above, beyond the cap), {} of them stopped at solver.breaking_iterations "
-                       "above it (/diagnostics/breaking_solves, breaking_capped)\n",
-                       v.breaking_solves, v.breaking_tolerance, v.breaking_capped);
+                       "iterations count above, beyond the cap), {} of them decided at solver.breaking_check_tolerance "
+                       "and {} stopped at solver.breaking_iterations above it (/diagnostics/breaking_solves, "
+                       "breaking_decided, breaking_capped)\n",
+                       v.breaking_solves, v.breaking_tolerance, v.breaking_decided, v.breaking_capped);
   if (v.tolerance > 0 && v.capped_window_fraction > SolverSummary::kCappedWarning)
     out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached {} = {:d} before "
                        "{} = {:g}: their loads are not converged; raise the cap "
@@ -244,7 +245,8 @@ const std::vector<SummaryField>& summary_fields() {
        "iterations_max (sweeps per step, or the method's iterations), capped_steps, capped_window_fraction (share of "
        "the window's steps that hit the cap unconverged), residual_max (the sweeps' residual, or the method's merit), "
        "breaking_solves (islands solved again to breaking_tolerance, solver.breaking_merit_tolerance, for a joint "
-       "near its capacity; 0 for pgs), breaking_capped (of those, the ones stopped at solver.breaking_iterations above "
+       "near its capacity; 0 for pgs), breaking_decided (of those, the ones every break of which was decided at "
+       "solver.breaking_check_tolerance), breaking_capped (of those, the ones stopped at solver.breaking_iterations above "
        "it)",
        [](S s) {
          return json{{"method", s.solver.method},
@@ -258,6 +260,7 @@ const std::vector<SummaryField>& summary_fields() {
                      {"capped_window_fraction", s.solver.capped_window_fraction},
                      {"residual_max", num(s.solver.residual_max)},
                      {"breaking_solves", s.solver.breaking_solves},
+                     {"breaking_decided", s.solver.breaking_decided},
                      {"breaking_capped", s.solver.breaking_capped},
                      {"breaking_tolerance", s.solver.breaking_tolerance}};
        }},

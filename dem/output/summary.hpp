@@ -30,6 +30,7 @@ struct SolverSummary {
   double capped_window_fraction = 0;  // of the analysis window's steps (the whole run without one)
   double residual_max = 0;
   long breaking_solves = 0;       // islands solved again for a joint near its capacity (solver.breaking_ratio)
+  long breaking_decided = 0;      // of those, the ones decided at solver.breaking_check_tolerance
   long breaking_capped = 0;       // of those, the ones that stopped at their cap above the tighter merit
   double breaking_tolerance = 0;  // the merit they were solved to (0: off)
   /// More than this fraction of capped steps in the window: the summary warns.

@@ -137,6 +137,7 @@ SolverSummary solver_summary(const Scene& scene, const RunHistory& h, const RunS
     v.residual_max = std::max(v.residual_max, d.solver_residual);
     v.capped_steps += d.solver_capped > 0;
     v.breaking_solves += static_cast<long>(d.breaking_solves);
+    v.breaking_decided += static_cast<long>(d.breaking_decided);
     v.breaking_capped += static_cast<long>(d.breaking_capped);
     const bool in_window = !s.has_statistics || (h.time[i] >= s.surge.window_start && h.time[i] <= s.surge.window_end);
     window_steps += in_window;

@@ -97,6 +97,7 @@ void record_solver_report(const SolverReport& report, StepDiagnostics& d) {
   d.solver_residual = report.residual;
   d.solver_capped = report.capped ? 1.0 : 0.0;
   d.breaking_solves = report.breaking_solves;
+  d.breaking_decided = report.breaking_decided;
   d.breaking_capped = report.breaking_capped;
 }
 
@@ -129,7 +130,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   if (scene.fracture.mode == FractureMode::kOn)
     state.world->contact_solver().set_joint_ratio(
         [&scene, world = state.world.get()](const ContactProblem& p, const Eigen::VectorXd& l) {
-          return largest_joint_ratio(scene, *world, p, l);
+          return joint_ratios(scene, *world, p, l).nearest;
         });
   for (int k = 1; k <= scene.time.substeps; ++k) {
     const double t_next = t0 + k * h;

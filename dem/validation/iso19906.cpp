@@ -102,6 +102,7 @@ ConeLoadInputs cone_load_inputs(const Scene& scene) {
   in.slope = std::atan2(rise, run);
   in.downward = downward;
   in.ride_height = downward ? -from.y : to.y;
+  in.end_diameter = 2.0 * (downward ? from.radius : to.radius);
   in.thickness = scene.ice.thickness;
   in.flexural_strength = scene.ice.bending_strength;
   in.elastic_modulus = scene.ice.elastic_modulus;

@@ -68,6 +68,7 @@ struct ConeLoadInputs {
   double friction;            // -, ice on the structure, mu
   double ice_friction;        // -, ice on ice, mu_i (the rubble terms only)
   RubblePile rubble;          // with a pile, the ice rides to its top: ride_height is unused
+  double end_diameter = 0;    // m, the slope's diameter where the ride ends (Ralston's D_T, dem/validation/ralston.hpp)
 };
 
 /// The named terms and the total, N (and the lengths they use, m).

@@ -420,10 +420,10 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   SolverAnswer answer = method_->solve(problem, options);
   // A joint breaks when its load reaches its capacity, and at the joints' merit its load is
   // uncertain by a few per cent of the capacity (docs/model/contact_problems.md, "What the
-  // merit leaves in the joints' loads"): an island whose answer puts a joint near its
-  // capacity is solved on, from that answer, until the break is decided on a tight answer
+  // merit leaves in the joints' loads"): an island whose answer puts a joint's failure ratio
+  // that near 1 is solved on, from that answer, until the break is decided on a tight answer
   if (joint_ratio_ && !problem.joints.empty() && settings_.breaking_merit_tolerance < options.tolerance &&
-      joint_ratio_(problem, answer.l) >= settings_.breaking_ratio) {
+      std::abs(joint_ratio_(problem, answer.l) - 1) <= 1 - settings_.breaking_ratio) {
     const double tolerance = options.tolerance;
     ContactProblem from_answer = problem;  // the observer sees the run's own warm start
     const auto start_from = [&from_answer](const SolverAnswer& a) {
@@ -431,7 +431,6 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
       for (std::size_t j = 0; j < from_answer.joints.size(); ++j) from_answer.joints[j].guess = a.l(static_cast<int>(j));
     };
     start_from(answer);
-    options.tolerance = settings_.breaking_merit_tolerance;
     options.max_iterations = settings_.breaking_iterations;
     const auto keep_better = [&answer](SolverAnswer next) {
       if (next.residual <= answer.residual) {
@@ -441,20 +440,37 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
         answer.sweeps += next.sweeps;
       }
     };
-    keep_better(method_->solve(from_answer, options));
-    // the gradient method's tail can be long where the Newton method's is not (on the lattices'
-    // breaking steps one island in 17 stayed at 2e-5 after 20,000 gradient steps, where Newton
-    // reached 3e-6 in 327 of its steps): what the first method leaves above the tolerance, the
-    // Newton method finishes from its best answer
-    if (answer.residual > settings_.breaking_merit_tolerance && settings_.method != "newton") {
-      if (!newton_) newton_ = make_contact_method("newton");
+    // first to the check's merit: where every joint's ratio is then clear of 1 by the band, each
+    // break is decided (at 1e-5 the loads were within 2 % of the bending capacity on the
+    // lattices' breaking steps) and the solve stops there; a level sheet's crack front holds
+    // joints near capacity most steps, and the tight merit cost it 11,000 gradient steps each
+    const double check = settings_.breaking_check_tolerance;
+    bool decided = false;
+    if (check > settings_.breaking_merit_tolerance && check < tolerance) {
+      options.tolerance = check;
+      keep_better(method_->solve(from_answer, options));
+      decided = answer.residual <= check &&
+                std::abs(joint_ratio_(problem, answer.l) - 1) > settings_.breaking_check_band;
       start_from(answer);
-      options.max_iterations = kBreakingNewtonSteps;
-      keep_better(newton_->solve(from_answer, options));
+    }
+    if (!decided) {
+      options.tolerance = settings_.breaking_merit_tolerance;
+      keep_better(method_->solve(from_answer, options));
+      // the gradient method's tail can be long where the Newton method's is not (on the lattices'
+      // breaking steps one island in 17 stayed at 2e-5 after 20,000 gradient steps, where Newton
+      // reached 3e-6 in 327 of its steps): what the first method leaves above the tolerance, the
+      // Newton method finishes from its best answer
+      if (answer.residual > settings_.breaking_merit_tolerance && settings_.method != "newton") {
+        if (!newton_) newton_ = make_contact_method("newton");
+        start_from(answer);
+        options.max_iterations = kBreakingNewtonSteps;
+        keep_better(newton_->solve(from_answer, options));
+      }
     }
     answer.capped = answer.residual > tolerance;  // the step's own tolerance: a tighter one is extra
     ++report_.breaking_solves;
-    report_.breaking_capped += answer.residual > settings_.breaking_merit_tolerance;
+    report_.breaking_decided += decided;
+    report_.breaking_capped += !decided && answer.residual > settings_.breaking_merit_tolerance;
   }
   apply_impulses(answer);
   report_.add_island(answer.sweeps, answer.residual, answer.capped);

@@ -95,11 +95,15 @@ struct ContactSolverSettings {
   std::string merit = "siconos";  // what merit_tolerance bounds (dem/contact/merit.hpp)
   double joint_merit_tolerance = 1e-6;  // an island with joint rows: the smaller of the two
   double structure_merit_tolerance = 1e-6;  // an island touching the structure: likewise
-  // an island whose answer puts a joint at breaking_ratio of its capacity or more (JointRatio)
-  // is solved again, from that answer, to breaking_merit_tolerance in at most
-  // breaking_iterations; off when not below the island's tolerance
+  // an island whose answer puts a joint's failure ratio within 1 - breaking_ratio of 1
+  // (JointRatios) is solved again, from that answer, to breaking_merit_tolerance in at most
+  // breaking_iterations, off when not below the island's tolerance; first to
+  // breaking_check_tolerance, where it stops if every ratio is then farther than
+  // breaking_check_band from 1 (off when not above breaking_merit_tolerance)
   double breaking_merit_tolerance = 0.0;
   double breaking_ratio = 0.9;
+  double breaking_check_tolerance = 0.0;
+  double breaking_check_band = 0.04;
   int breaking_iterations = 20000;
   int method_iterations = 300;
   // cap of the split-impulse position sweeps (pseudo-impulses that push penetrating contacts
@@ -114,6 +118,7 @@ struct SolverReport {
   bool capped = false;   // an island reached the cap with its residual above the tolerance
   int islands = 0;       // solve groups with contacts
   int breaking_solves = 0;  // islands solved again for a joint near its capacity
+  int breaking_decided = 0;  // of those, the ones that stopped at breaking_check_tolerance, every break decided
   int breaking_capped = 0;  // of those, the ones that stopped at the cap above the tighter merit
 
   void clear() { *this = SolverReport{}; }
@@ -142,8 +147,8 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   /// The structure whose load the residual follows (null: none).
   void set_structure(const btCollisionObject* structure) { structure_ = structure; }
 
-  /// The largest failure ratio (load over capacity) the joints of an island reach with its
-  /// joint rows' impulses `l` (the fracture stage's measure, dem/fracture/fracture.hpp).
+  /// The failure ratios (load over capacity) the joints of an island reach with its joint rows'
+  /// impulses `l` (the fracture stage's measure, dem/fracture/fracture.hpp): the one nearest to 1.
   using JointRatio = std::function<double(const ContactProblem& problem, const Eigen::VectorXd& l)>;
   /// What decides whether an island is solved again to breaking_merit_tolerance (empty: never).
   void set_joint_ratio(JointRatio ratio) { joint_ratio_ = std::move(ratio); }

@@ -86,6 +86,8 @@ World::World(const WorldSettings& settings)
   contact.structure_merit_tolerance = solver.structure_merit_tolerance;
   contact.breaking_merit_tolerance = solver.breaking_merit_tolerance;
   contact.breaking_ratio = solver.breaking_ratio;
+  contact.breaking_check_tolerance = solver.breaking_check_tolerance;
+  contact.breaking_check_band = solver.breaking_check_band;
   contact.breaking_iterations = solver.breaking_iterations;
   contact.method_iterations = solver.method_iterations;
   contact.position_iterations = solver.position_iterations;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "dem/fracture/fracture.hpp"
 #include "tests/physics/contact_scenes.hpp"
@@ -47,24 +48,26 @@ Pushed push(Keep& keep, std::vector<std::string> set) {
 
 }  // namespace
 
-// largest_joint_ratio, taken on the problem and the answer, is the ratio the fracture stage
-// finds from Bullet's joint feedback after the step: the same rows' impulses, the same
-// decomposition at the midpoint (round-off apart; the step's poses are used by both here)
+// joint_ratios, taken on the problem and the answer, are the ratios the fracture stage finds
+// from Bullet's joint feedback after the step: the same rows' impulses, the same decomposition
+// at the midpoint (round-off apart; the step's poses are used by both here)
 TEST(BreakingSolve, JointRatioIsTheFractureStagesRatio) {
   Keep keep;
   Pushed p = push(keep, {});
   ASSERT_TRUE(keep.problem) << "the lattices never touched";
   ASSERT_FALSE(keep.problem->joints.empty());
   const World& world = *p.state.world;
-  const double from_answer = largest_joint_ratio(p.scene, world, *keep.problem, keep.answer.l);
-  double from_feedback = 0;
+  const JointRatios from_answer = joint_ratios(p.scene, world, *keep.problem, keep.answer.l);
+  double largest = 0, nearest = 0;
   for (const IceJoint& joint : world.joints()) {
     double ratio = 0;
     failure_mode(joint_loads(world, joint), joint_capacity(p.scene, joint), ratio);
-    from_feedback = std::max(from_feedback, ratio);
+    largest = std::max(largest, ratio);
+    if (std::abs(ratio - 1) < std::abs(nearest - 1)) nearest = ratio;
   }
-  ASSERT_GT(from_feedback, 0.0);
-  EXPECT_NEAR(from_answer, from_feedback, 1e-9 * from_feedback);
+  ASSERT_GT(largest, 0.0);
+  EXPECT_NEAR(from_answer.largest, largest, 1e-9 * largest);
+  EXPECT_NEAR(from_answer.nearest, nearest, 1e-9 * nearest);
 }
 
 // With the ratio at 0 every island with joints is solved again: the step counts it in
@@ -72,7 +75,9 @@ TEST(BreakingSolve, JointRatioIsTheFractureStagesRatio) {
 // from the first answer; with the ratio above any joint's, none is
 TEST(BreakingSolve, AnIslandNearBreakingIsSolvedToTheTighterMerit) {
   Keep keep;
-  Pushed p = push(keep, {"solver.breaking_ratio=0", "solver.breaking_merit_tolerance=1e-8"});
+  // (the check's band wider than any ratio's distance from 1: never decided at the check)
+  Pushed p = push(keep, {"solver.breaking_ratio=0", "solver.breaking_merit_tolerance=1e-8",
+                         "solver.breaking_check_band=10"});
   ASSERT_TRUE(keep.problem);
   EXPECT_GE(p.state.diagnostics.breaking_solves, 1.0);
   EXPECT_LE(keep.answer.residual, 1e-8);
@@ -92,9 +97,25 @@ TEST(BreakingSolve, AnIslandNearBreakingIsSolvedToTheTighterMerit) {
 TEST(BreakingSolve, TheNewtonMethodFinishesWhatTheCapLeft) {
   Keep keep;
   Pushed p = push(keep, {"solver.breaking_ratio=0", "solver.breaking_merit_tolerance=1e-8",
-                         "solver.breaking_iterations=1"});
+                         "solver.breaking_iterations=1", "solver.breaking_check_band=10"});
   ASSERT_TRUE(keep.problem);
   EXPECT_GE(p.state.diagnostics.breaking_solves, 1.0);
   EXPECT_EQ(p.state.diagnostics.breaking_capped, 0.0);
   EXPECT_LE(keep.answer.residual, 1e-8);
+}
+
+// A break decided at the check's merit stops there: these joints never come near their
+// capacity (every ratio farther than the band from 1), so an island solved again for them (the
+// ratio at 0 sends every one) stops at solver.breaking_check_tolerance, not at the tight merit
+TEST(BreakingSolve, AnIslandWhoseBreaksAreDecidedStopsAtTheCheck) {
+  Keep keep;
+  Pushed p = push(keep, {"solver.breaking_ratio=0", "solver.breaking_merit_tolerance=1e-10"});
+  ASSERT_TRUE(keep.problem);
+  const JointRatios r = joint_ratios(p.scene, *p.state.world, *keep.problem, keep.answer.l);
+  ASSERT_GT(std::abs(r.nearest - 1), 0.04) << "the scene's joints should be far from breaking";
+  EXPECT_GE(p.state.diagnostics.breaking_solves, 1.0);
+  EXPECT_EQ(p.state.diagnostics.breaking_decided, p.state.diagnostics.breaking_solves);
+  EXPECT_LE(keep.answer.residual, 1e-5);
+  EXPECT_GT(keep.answer.residual, 1e-10);
+  EXPECT_EQ(p.state.diagnostics.breaking_capped, 0.0);
 }

@@ -1,0 +1,116 @@
+"""Level ice against the design methods: each finished run of a level-ice sweep
+(sweeps/studies/level_ice.toml, ice.cover = "level") beside ISO 19906's and Ralston's loads for its
+own cone, ice and friction (`icedem cone-load`), and where its sheet broke against the
+characteristic-length estimate of the breaking length. Reported, not tuned: the standards' loads
+are upper references (ISO's over-predicted 50 field events by a factor of about 1.6).
+
+    scripts/level_ice_report SWEEP.toml [--out DIR] [--icedem PATH] [--report PAGE.md]
+
+--out is the sweep's run directory (default sweeps/<name>); finished runs count (or their kept
+records), so it can report while the sweep runs. Without --report the page is printed."""
+import argparse
+import json
+import math
+import os
+import subprocess
+
+import numpy as np
+
+from . import aggregate as agg, execute, output_guard, spec
+
+
+def design_loads(icedem, run):
+    """(`icedem cone-load --json` for the run's scenario and --set's, None) or (None, why not)."""
+    if not icedem or not os.path.isfile(icedem):
+        return None, f"no build at {icedem}"
+    cmd = [icedem, "cone-load", run.scenario_file]
+    for s in run.sets:
+        cmd += ["--set", s]
+    p = subprocess.run(cmd + ["--json"], capture_output=True, text=True)
+    if p.returncode != 0:
+        return None, (p.stderr.strip().splitlines() or ["no message"])[0]
+    return json.loads(p.stdout), None
+
+
+def breaking_lengths(record):
+    """The horizontal distances (m) of the broken joints from the structure's section at their
+    height (/fracture/events distance): how far from the cone the sheet broke."""
+    return np.array([e["distance"] for e in record.get("fracture_events", []) if "distance" in e], dtype=float)
+
+
+def page(sweep, out, icedem):
+    """The page's Markdown lines for the sweep file `sweep` with its runs in `out`."""
+    name, runs = spec.load(sweep)
+    L = [f"# {name}: level ice against ISO 19906 and Ralston", "",
+         f"Runs of `{os.path.relpath(sweep, spec.ROOT)}` finished so far (`scripts/level_ice_report`). "
+         "Loads over each run's analysis window, surge, N. ISO 19906 (Croasdale and Cammaert) and "
+         "Ralston (IEC 61400-3) are `icedem cone-load` for the run's own cone, ice and friction "
+         "(dem/validation/iso19906.hpp, ralston.hpp): loads of level ice failing in bending, the "
+         "references a designer checks against, with about 40 % between methods and ISO's bias of about "
+         "1.6 against field events (docs/model/validation_targets.md, 4a).", ""]
+    rows, lengths, lc = [], [], None
+    for r in runs:
+        if execute.status(r, out).state != "done":
+            continue
+        rec = agg.load_record(r, out)
+        s, w = rec["summary"], rec.get("window", {})
+        loads, why = design_loads(icedem, r)
+        lc = loads["characteristic_length_m"] if loads else lc
+        d = breaking_lengths(rec)
+        lengths.append((r.scenario, d))
+        cpu, sim = s.get("cpu_time_s"), s.get("sim_time_s")
+        rows.append([r.scenario, f"{loads['friction']:g}" if loads else "n/a",
+                     s.get("mean_fx_N"), w.get("p99_fx_N"), s.get("max_fx_N"),
+                     loads["total_N"] if loads else None, loads["ralston_total_N"] if loads else None,
+                     s.get("breaks"), sim / cpu if cpu and sim else None, why])
+    if not rows:
+        return L + ["No finished run yet.", ""]
+
+    def f(v, digits=1):
+        return "n/a" if v is None or (isinstance(v, float) and not math.isfinite(v)) else f"{v:.{digits}f}"
+
+    L += ["| run | mu | mean | p99 | max | ISO 19906 | Ralston | max / ISO | max / Ralston | breaks | real time (CPU) |",
+          "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for name_, mu, mean, p99, mx, iso, ral, breaks, rtf, why in rows:
+        L.append(f"| {name_} | {mu} | {f(mean)} | {f(p99)} | {f(mx)} | {f(iso)} | {f(ral)} | "
+                 f"{f(mx / iso if mx and iso else None, 2)} | {f(mx / ral if mx and ral else None, 2)} | "
+                 f"{breaks} | {f(rtf, 2)} |")
+    for name_, *_, why in rows:
+        if why:
+            L.append(f"\n{name_}: no design loads ({why}).")
+    L += ["", "Where the sheet broke: the broken joints' horizontal distance from the cone's section at their "
+          "height (/fracture/events distance), against the characteristic-length estimate of the breaking "
+          "length, pi/(4 beta) = pi sqrt(2) l_c / 4 = 1.11 l_c for a semi-infinite floating beam under an "
+          "edge load" + (f" ({1.11 * lc:.3f} m, l_c {lc:.3f} m)" if lc else "") + ". A cone's breaking "
+          "front is a wedge, not a beam, and field breaking lengths are shorter.", "",
+          "| run | breaks | median m | quartiles m | median / (1.11 l_c) |", "|---|---|---|---|---|"]
+    for name_, d in lengths:
+        if d.size == 0:
+            L.append(f"| {name_} | 0 | n/a | n/a | n/a |")
+            continue
+        q1, med, q3 = np.quantile(d, [0.25, 0.5, 0.75])
+        L.append(f"| {name_} | {d.size} | {med:.3f} | {q1:.3f}-{q3:.3f} | "
+                 f"{f(med / (1.11 * lc) if lc else None, 2)} |")
+    return L + [""]
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("sweep", help="the sweep file of level-ice runs")
+    ap.add_argument("--out", help="the sweep's run directory (default: sweeps/<name>)")
+    ap.add_argument("--icedem", default=execute.DEFAULT_ICEDEM, help="the build whose `cone-load` gives the "
+                    "design loads (default build/dem/icedem)")
+    ap.add_argument("--report", help="write the page here (Markdown) instead of printing it")
+    args = ap.parse_args(argv)
+    sweep = os.path.abspath(args.sweep)
+    name, _ = spec.load(sweep)
+    out = os.path.abspath(args.out) if args.out else os.path.join(spec.ROOT, "sweeps", name)
+    if args.report:
+        output_guard.guard([("--report", args.report, output_guard.FILE)], [sweep])
+    text = "\n".join(page(sweep, out, args.icedem)) + "\n"
+    if not args.report:
+        print(text, end="")
+        return 0
+    output_guard.write_text(args.report, text)
+    print(f"wrote {args.report}")
+    return 0
