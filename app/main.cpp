@@ -192,8 +192,11 @@ int check_command(const std::string& scenario_path, const std::vector<std::strin
   const Scene scene = load_scene(scenario_path, sets);
   // also validates layout files, concentration, and that breakable floes cut into elements
   const Layout layout = scene_layout(scene);
-  std::cout << fmt::format("{}: ok ({} floes, concentration {:.2f} %, {:.0f} s at dt {} s)\n", scenario_path,
-                           layout.floes.size(), 100 * layout.achieved_concentration, scene.time.duration,
+  const std::string ice = scene.ice.cover == IceCover::kLevel
+                              ? fmt::format("level ice over {:.2f} % of the channel", 100 * layout.achieved_concentration)
+                              : fmt::format("{} floes, concentration {:.2f} %", layout.floes.size(),
+                                            100 * layout.achieved_concentration);
+  std::cout << fmt::format("{}: ok ({}, {:.0f} s at dt {} s)\n", scenario_path, ice, scene.time.duration,
                            scene.time.dt);
   for (const std::string& w : scene_warnings(scene, layout)) std::cout << "warning: " << w << "\n";
   return kExitOk;
