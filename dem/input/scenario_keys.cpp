@@ -354,7 +354,9 @@ std::vector<KeySpec> make_keys() {
   k.push_back(real("fracture.lattice_radius", "m", 0.0, 0.0, 1.0e4,
                    "a breakable floe is its element lattice while some part of it is within this "
                    "horizontal distance of the structure axis, else one rigid body (an intact "
-                   "lattice turns back 0.5 m beyond it; a broken one stays); 0: lattices always"));
+                   "lattice turns back 0.5 m beyond it; a broken one stays); 0: lattices always. Level ice "
+                   "(ice.cover = \"level\"): the sheet moves within this distance and is held where it lies "
+                   "beyond it (required)"));
   k.push_back(real("fracture.load_filter_time", "s", 0.0, 0.0, 100.0,
                    "time constant of a first-order low-pass on each joint's loads before the "
                    "failure check (damps one-step PGS spikes); 0: the raw per-step loads"));
