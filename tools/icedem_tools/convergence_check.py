@@ -10,10 +10,9 @@ report, no other sweep's runs are pooled in: the default is the sweep's own.
 
 --out is the sweep's run directory (default sweeps/<name>); finished runs count, so it can report
 while the sweep runs. Without --report the page is printed."""
-import argparse
 import os
 
-from . import output_guard, spec
+from . import spec
 from .report_convergence import headline_section
 from . import report_sweeps
 from .report_sweeps import cost_table
@@ -32,20 +31,6 @@ def page(sweep, out):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("sweep", help="the sweep file: scenarios named <model>+<numerics>, one numerics \"default\"")
-    ap.add_argument("--out", help="the sweep's run directory (default: sweeps/<name>)")
-    ap.add_argument("--report", help="write the page here (Markdown) instead of printing it")
-    args = ap.parse_args(argv)
-    sweep = os.path.abspath(args.sweep)
-    name, _ = spec.load(sweep)
-    out = os.path.abspath(args.out) if args.out else os.path.join(spec.ROOT, "sweeps", name)
-    if args.report:
-        output_guard.guard([("--report", args.report, output_guard.FILE)], [sweep])
-    text = "\n".join(page(sweep, out)) + "\n"
-    if not args.report:
-        print(text, end="")
-        return 0
-    output_guard.write_text(args.report, text)
-    print(f"wrote {args.report}")
-    return 0
+    return report_sweeps.page_command(
+        argv, __doc__, "the sweep file: scenarios named <model>+<numerics>, one numerics \"default\"",
+        lambda sweep, out, args: page(sweep, out))

@@ -9,6 +9,7 @@ summary.json exists, or when the sweep keeps records and its record exists
 is not 0 (its error is the last "error" line of log.txt); pending otherwise
 (never started, or killed: a rerun resumes it from its checkpoint, run.h5.checkpoint).
 """
+import json
 import os
 import shlex
 import subprocess
@@ -26,6 +27,21 @@ class Status:
     state: str    # "done", "failed" or "pending"
     error: str = ""
     exit_code: object = None  # icedem's exit code when its run directory holds one, else None
+
+
+def cone_load(icedem, scenario, sets=()):
+    """(`icedem cone-load SCENARIO --set ... --json`: the ISO 19906 and Ralston terms, None) or (None,
+    why not): the reports say why rather than dropping their rows."""
+    if not icedem or not os.path.isfile(icedem):
+        return None, f"no build at {icedem}"
+    cmd = [icedem, "cone-load", scenario]
+    for s in sets:
+        cmd += ["--set", s]
+    p = subprocess.run(cmd + ["--json"], capture_output=True, text=True)
+    if p.returncode != 0:
+        first = (p.stderr.strip().splitlines() or ["no message"])[0]
+        return None, f"`{icedem} cone-load --json` failed: {first}"
+    return json.loads(p.stdout), None
 
 
 def command(run, out_dir, icedem):

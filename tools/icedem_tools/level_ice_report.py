@@ -8,28 +8,17 @@ are upper references (ISO's over-predicted 50 field events by a factor of about 
 
 --out is the sweep's run directory (default sweeps/<name>); finished runs count (or their kept
 records), so it can report while the sweep runs. Without --report the page is printed."""
-import argparse
-import json
-import math
 import os
-import subprocess
 
 import numpy as np
 
-from . import aggregate as agg, execute, output_guard, spec
+from . import aggregate as agg, execute, report_sweeps, spec
+from .report_tables import fmt
 
 
 def design_loads(icedem, run):
     """(`icedem cone-load --json` for the run's scenario and --set's, None) or (None, why not)."""
-    if not icedem or not os.path.isfile(icedem):
-        return None, f"no build at {icedem}"
-    cmd = [icedem, "cone-load", run.scenario_file]
-    for s in run.sets:
-        cmd += ["--set", s]
-    p = subprocess.run(cmd + ["--json"], capture_output=True, text=True)
-    if p.returncode != 0:
-        return None, (p.stderr.strip().splitlines() or ["no message"])[0]
-    return json.loads(p.stdout), None
+    return execute.cone_load(icedem, run.scenario_file, run.sets)
 
 
 def breaking_lengths(record):
@@ -66,15 +55,12 @@ def page(sweep, out, icedem):
     if not rows:
         return L + ["No finished run yet.", ""]
 
-    def f(v, digits=1):
-        return "n/a" if v is None or (isinstance(v, float) and not math.isfinite(v)) else f"{v:.{digits}f}"
-
     L += ["| run | mu | mean | p99 | max | ISO 19906 | Ralston | max / ISO | max / Ralston | breaks | real time (CPU) |",
           "|---|---|---|---|---|---|---|---|---|---|---|"]
     for name_, mu, mean, p99, mx, iso, ral, breaks, rtf, why in rows:
-        L.append(f"| {name_} | {mu} | {f(mean)} | {f(p99)} | {f(mx)} | {f(iso)} | {f(ral)} | "
-                 f"{f(mx / iso if mx and iso else None, 2)} | {f(mx / ral if mx and ral else None, 2)} | "
-                 f"{breaks} | {f(rtf, 2)} |")
+        L.append(f"| {name_} | {mu} | {fmt(mean)} | {fmt(p99)} | {fmt(mx)} | {fmt(iso)} | {fmt(ral)} | "
+                 f"{fmt(mx / iso if mx and iso else None, digits=2)} | {fmt(mx / ral if mx and ral else None, digits=2)} | "
+                 f"{breaks} | {fmt(rtf, digits=2)} |")
     for name_, *_, why in rows:
         if why:
             L.append(f"\n{name_}: no design loads ({why}).")
@@ -90,27 +76,13 @@ def page(sweep, out, icedem):
             continue
         q1, med, q3 = np.quantile(d, [0.25, 0.5, 0.75])
         L.append(f"| {name_} | {d.size} | {med:.3f} | {q1:.3f}-{q3:.3f} | "
-                 f"{f(med / (1.11 * lc) if lc else None, 2)} |")
+                 f"{fmt(med / (1.11 * lc) if lc else None, digits=2)} |")
     return L + [""]
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("sweep", help="the sweep file of level-ice runs")
-    ap.add_argument("--out", help="the sweep's run directory (default: sweeps/<name>)")
-    ap.add_argument("--icedem", default=execute.DEFAULT_ICEDEM, help="the build whose `cone-load` gives the "
-                    "design loads (default build/dem/icedem)")
-    ap.add_argument("--report", help="write the page here (Markdown) instead of printing it")
-    args = ap.parse_args(argv)
-    sweep = os.path.abspath(args.sweep)
-    name, _ = spec.load(sweep)
-    out = os.path.abspath(args.out) if args.out else os.path.join(spec.ROOT, "sweeps", name)
-    if args.report:
-        output_guard.guard([("--report", args.report, output_guard.FILE)], [sweep])
-    text = "\n".join(page(sweep, out, args.icedem)) + "\n"
-    if not args.report:
-        print(text, end="")
-        return 0
-    output_guard.write_text(args.report, text)
-    print(f"wrote {args.report}")
-    return 0
+    def options(ap):
+        ap.add_argument("--icedem", default=execute.DEFAULT_ICEDEM, help="the build whose `cone-load` gives the "
+                        "design loads (default build/dem/icedem)")
+    return report_sweeps.page_command(argv, __doc__, "the sweep file of level-ice runs",
+                                      lambda sweep, out, args: page(sweep, out, args.icedem), options)

@@ -3,13 +3,11 @@ rigid floes, rigid floes that split analytically (fracture.mode = "analytic"), a
 0.20 m and 0.15 m square and hexagonal elements, at the ice-structure friction of the paper's Fig. 18
 and both its ice-ice frictions, over the seeds every model with runs has finished; beside the tank's largest load and the
 ISO 19906 load of level ice on the cone, in one table and one figure."""
-import json
 import os
-import subprocess
 
 import numpy as np
 
-from . import aggregate as agg, spec
+from . import aggregate as agg, execute, spec
 from .paper_findings import TARGETS
 from .report_breakage import mechanism_names, mechanism_table
 from .report_sweeps import convergence_section
@@ -77,14 +75,7 @@ def comparison(records):
 def iso19906(icedem):
     """(the ISO 19906 terms at FIS_VALUE from `icedem cone-load --json`, None) or (None, why
     not): the report says why rather than dropping the row."""
-    if not icedem or not os.path.isfile(icedem):
-        return None, f"no build at {icedem}"
-    p = subprocess.run([icedem, "cone-load", os.path.join(spec.ROOT, ISO_SCENARIO), "--set",
-                        f"friction.ice_structure={FIS_VALUE}", "--json"], capture_output=True, text=True)
-    if p.returncode != 0:
-        first = (p.stderr.strip().splitlines() or ["no message"])[0]
-        return None, f"`{icedem} cone-load --json` failed: {first}"
-    return json.loads(p.stdout), None
+    return execute.cone_load(icedem, os.path.join(spec.ROOT, ISO_SCENARIO), [f"friction.ice_structure={FIS_VALUE}"])
 
 
 def _ci(pair, digits=1):

@@ -1,11 +1,12 @@
 """The report's sections on other sweeps beside the grid: the flow models over seeds, the
 convergence of the grid's loads, supplements, and the same grid run with an earlier build
 (tools/icedem_tools/report.py)."""
+import argparse
 import collections
 import math
 import os
 
-from . import aggregate as agg, execute, spec
+from . import aggregate as agg, execute, output_guard, spec
 from .report_convergence import headline_section
 from .report_tables import FII, FIS, ci, fmt, num, pick, ratio_to_first, read_rows, supplement_rows, sweep_about
 
@@ -206,3 +207,30 @@ def convergence_section(conv_sweep, records, title="## Convergence of the grid's
         L += ["", f"The default runs repeat the grid's: {same} of {same + len(differ)} runs give the same max load "
               "to the last digit" + (" (**not**: " + "; ".join(differ) + ")" if differ else "") + "."]
     return L + [""] + headline_section(pooled_numerics(got, records, supplements))
+
+
+def page_command(argv, doc, sweep_help, page, add_options=None):
+    """The main of a command that makes a page of one sweep's finished runs (scripts/convergence_check,
+    scripts/level_ice_report): SWEEP [--out DIR] [--report PAGE] and the command's own options
+    (`add_options(parser)`). `page(sweep, out, args)` gives the page's lines; they are printed, or
+    written to --report, never over the sweep file. --out is the sweep's run directory (default
+    sweeps/<name>)."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("sweep", help=sweep_help)
+    ap.add_argument("--out", help="the sweep's run directory (default: sweeps/<name>)")
+    ap.add_argument("--report", help="write the page here (Markdown) instead of printing it")
+    if add_options:
+        add_options(ap)
+    args = ap.parse_args(argv)
+    sweep = os.path.abspath(args.sweep)
+    name, _ = spec.load(sweep)
+    out = os.path.abspath(args.out) if args.out else os.path.join(spec.ROOT, "sweeps", name)
+    if args.report:
+        output_guard.guard([("--report", args.report, output_guard.FILE)], [sweep])
+    text = "\n".join(page(sweep, out, args)) + "\n"
+    if not args.report:
+        print(text, end="")
+        return 0
+    output_guard.write_text(args.report, text)
+    print(f"wrote {args.report}")
+    return 0
