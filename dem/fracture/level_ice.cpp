@@ -41,11 +41,6 @@ void add_level_sheet(World& world, const Scene& scene, const Floe& floe, int flo
   world.level_sheet() = std::move(sheet);
 }
 
-bool in_level_sheet(const World& world, int index) {
-  const std::optional<LevelSheet>& s = world.level_sheet();
-  return s && index >= s->first_element && index < s->first_element + s->elements;
-}
-
 void sync_level_sheet_joints(World& world) {
   std::optional<LevelSheet>& sheet = world.level_sheet();
   if (!sheet) return;

@@ -46,7 +46,4 @@ void update_level_sheet(const Scene& scene, const Eigen::Vector3d& structure, Wo
 /// (after the build, or a checkpoint's restore, set those states). Does nothing without a sheet.
 void sync_level_sheet_joints(World& world);
 
-/// Whether body `index` (into World::floes()) is an element of the level sheet.
-bool in_level_sheet(const World& world, int index);
-
 }  // namespace icedem

@@ -12,9 +12,9 @@
 #include "dem/core/errors.hpp"
 #include "dem/fracture/lattice_region.hpp"
 #include "dem/fracture/level_ice.hpp"
-#include "dem/output/world_state.hpp"
 #include "dem/step/initial_state.hpp"
 #include "dem/step/step.hpp"
+#include "tests/support/rebuilt_world.hpp"
 #include "tests/support/scenes.hpp"
 
 using namespace icedem;
@@ -87,8 +87,12 @@ TEST(LevelIce, TheSheetMovesWithinTheRadiusOnly) {
     // (0.004 m before this one); none is held again this early (nothing lies beyond radius + 0.5 m
     // that was within the radius)
     const double g = gap(f, state.structure_position);
-    if (g < kRadius - 0.01) EXPECT_FALSE(f.frozen) << i;
-    if (g > kRadius + 0.01) EXPECT_TRUE(f.frozen) << i;
+    if (g < kRadius - 0.01) {
+      EXPECT_FALSE(f.frozen) << i;
+    }
+    if (g > kRadius + 0.01) {
+      EXPECT_TRUE(f.frozen) << i;
+    }
     free += !f.frozen;
   }
   EXPECT_GT(free, 10);
@@ -148,28 +152,13 @@ TEST(LevelIce, TheConeBreaksTheSheetAndPassesThrough) {
 // lattice's rebuilt world parts in the last bit, test_world_state.cpp)
 TEST(LevelIce, ARebuiltSheetContinuesAsTheOriginal) {
   const Scene scene = sheet_scene({"solver.friction_warm_start=false"});
-  State run = start(scene);
-  while (run.step < 250) step(scene, run);  // 5 s: 1 m of tow, joints broken, pieces under the sheet
-  State copy = start(scene);
-  restore_world(*copy.world, capture_world(*run.world));
-  copy.time = run.time;
-  copy.step = run.step;
-  copy.structure_position = run.structure_position;
-  copy.structure_velocity = run.structure_velocity;
-  copy.flow->set_structure(copy.structure_position, copy.structure_velocity);
+  State run = advanced(scene, 250);  // 5 s: 1 m of tow, joints broken, pieces under the sheet
+  State copy = rebuilt(scene, run);
   const LevelSheet &a = *run.world->level_sheet(), &b = *copy.world->level_sheet();
   EXPECT_EQ(a.joint_in_world, b.joint_in_world);
   for (int i = 0; i < a.elements; ++i)
     EXPECT_EQ(run.world->floes()[a.first_element + i].frozen, copy.world->floes()[b.first_element + i].frozen) << i;
-  double gap = 0;
-  for (int k = 0; k < 25; ++k) {
-    step(scene, run);
-    step(scene, copy);
-  }
-  for (std::size_t i = 0; i < run.world->floes().size(); ++i)
-    gap = std::max(gap, (run.world->floes()[i].body->getCenterOfMassPosition() -
-                         copy.world->floes()[i].body->getCenterOfMassPosition())
-                            .length());
+  const double gap = gap_after(scene, run, copy, 25);
   // bit for bit, as the lattices' rebuilt world without friction warm starting
   // (test_world_state.cpp); the broken pieces' broadphase pairs keep their sides
   // (World::refresh_proxy: with Bullet's refresh the paths parted by 2e-8 m in the first step)

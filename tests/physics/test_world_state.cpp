@@ -14,31 +14,16 @@
 #include "dem/input/scene_builder.hpp"
 #include "dem/step/initial_state.hpp"
 #include "dem/step/step.hpp"
+#include "tests/support/rebuilt_world.hpp"
 
 namespace icedem {
 namespace {
 
+using testing::advanced;
+using testing::rebuilt;
+
 Scene short_tow(std::vector<std::string> overrides = {}) {
   return load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/examples/short_tow.toml", overrides);
-}
-
-// a run's state after `steps` steps
-State advanced(const Scene& scene, long steps) {
-  State state = initial_state(scene, scene_layout(scene).floes);
-  while (state.step < steps) step(scene, state);
-  return state;
-}
-
-// a fresh world of the scene with `from`'s state, and the run's clock
-State rebuilt(const Scene& scene, const State& from) {
-  State state = initial_state(scene, scene_layout(scene).floes);
-  restore_world(*state.world, capture_world(*from.world));
-  state.time = from.time;
-  state.step = from.step;
-  state.structure_position = from.structure_position;
-  state.structure_velocity = from.structure_velocity;
-  state.flow->set_structure(state.structure_position, state.structure_velocity);
-  return state;
 }
 
 bool same_bytes(const void* a, const void* b, std::size_t n) { return std::memcmp(a, b, n) == 0; }
@@ -159,19 +144,9 @@ TEST(WorldState, ARebuiltWorldContinuesAsTheOriginal) {
 namespace icedem {
 namespace {
 
-// the largest distance between the bodies of two runs after `steps` more steps
-double gap_after(const Scene& scene, State& run, State& copy, int steps) {
-  for (int k = 0; k < steps; ++k) {
-    step(scene, run);
-    step(scene, copy);
-  }
-  double gap = 0;
-  for (std::size_t i = 0; i < run.world->floes().size(); ++i)
-    gap = std::max(gap, (run.world->floes()[i].body->getCenterOfMassPosition() -
-                         copy.world->floes()[i].body->getCenterOfMassPosition())
-                            .length());
-  return gap;
-}
+using testing::advanced;
+using testing::gap_after;
+using testing::rebuilt;
 
 TEST(WorldState, ARebuiltLatticeWorldContinuesAsTheOriginal) {
   // 0.20 m lattices in the structure's path, some of them woken from their stand-ins; the

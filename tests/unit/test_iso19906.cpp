@@ -6,20 +6,10 @@
 
 #include "dem/core/errors.hpp"
 #include "dem/validation/iso19906.hpp"
-#include "tests/support/scenes.hpp"
+#include "tests/support/paper_cone.hpp"
 
 using namespace icedem;
-
-namespace {
-
-// The paper's cone (Table 2) and ice (Table 3), from the default scenario.
-ConeLoadInputs paper_cone(double friction) {
-  ConeLoadInputs in = cone_load_inputs(icedem::testing::scene_from(""));
-  in.friction = friction;
-  return in;
-}
-
-}  // namespace
+using icedem::testing::paper_cone;
 
 TEST(Iso19906, TheScenariosConeIsTheTable2Cone) {
   const ConeLoadInputs in = paper_cone(0.2);

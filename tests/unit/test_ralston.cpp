@@ -5,19 +5,10 @@
 
 #include "dem/core/errors.hpp"
 #include "dem/validation/ralston.hpp"
-#include "tests/support/scenes.hpp"
+#include "tests/support/paper_cone.hpp"
 
 using namespace icedem;
-
-namespace {
-
-ConeLoadInputs paper_cone(double friction) {
-  ConeLoadInputs in = cone_load_inputs(icedem::testing::scene_from(""));
-  in.friction = friction;
-  return in;
-}
-
-}  // namespace
+using icedem::testing::paper_cone;
 
 // The slope ends at the keel: D_T is the keel's diameter (Table 2: radius 0.171 m)
 TEST(Ralston, TheSlopeEndsAtTheKeel) { EXPECT_NEAR(paper_cone(0.2).end_diameter, 0.342, 1e-9); }
