@@ -301,19 +301,13 @@ void World::enter_world(btRigidBody& body) {
   // Bullet's sweep and prune has a fixed number of handles and writes past them (a crash)
   if (settings_.solver.broadphase == Broadphase::kSweepAndPrune)
     require_sweep_and_prune_room(static_cast<std::size_t>(dynamics_->getNumCollisionObjects()) + 1);
-  if (!dbvt_) {
-    dynamics_->addRigidBody(&body);
-    return;
-  }
   // Bullet orders the two bodies of a pair, and so the sides its collision detection works
   // from, by their broadphase ids, which its dbvt hands out in the order bodies enter. A floe
   // that enters when it is reached (dem/activation/reach.hpp) would then meet its neighbours from the other
   // side than had it been in the world from the start, and their contact points would differ
   // in round-off: the id is the body's index in bodies() instead, its order of making
-  const int next_id = dbvt_->m_gid;
-  dbvt_->m_gid = body.getUserIndex3();  // the broadphase gives the body m_gid + 1
-  dynamics_->addRigidBody(&body);
-  dbvt_->m_gid = std::max(next_id, body.getUserIndex3() + 1);
+  make_proxy(body, true);
+  if (!dbvt_) return;
   // Each box enters the dbvt's tree of moving boxes next to the box nearest it, and a field
   // made row by row, each floe nearest the one before, grows a chain: 96,000 floes took 5 s
   // to enter. Rebuilt balanced every 4 sqrt(N) entries, the chain stays that short, and the
@@ -325,14 +319,17 @@ void World::enter_world(btRigidBody& body) {
   }
 }
 
-void World::refresh_proxy(btRigidBody& body) {
+void World::refresh_proxy(btRigidBody& body) { make_proxy(body, false); }
+
+void World::make_proxy(btRigidBody& body, bool add) {
+  const auto bullet = [&] { add ? dynamics_->addRigidBody(&body) : dynamics_->refreshBroadphaseProxy(&body); };
   if (!dbvt_) {
-    dynamics_->refreshBroadphaseProxy(&body);
+    bullet();
     return;
   }
   const int next_id = dbvt_->m_gid;
-  dbvt_->m_gid = body.getUserIndex3();  // the broadphase gives the body m_gid + 1, as in enter_world
-  dynamics_->refreshBroadphaseProxy(&body);
+  dbvt_->m_gid = body.getUserIndex3();  // the broadphase gives the body m_gid + 1
+  bullet();
   dbvt_->m_gid = std::max(next_id, body.getUserIndex3() + 1);
 }
 

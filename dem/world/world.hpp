@@ -277,6 +277,10 @@ class World {
   int contact_points() const;
 
  private:
+  // Bullet's dbvt proxy of `body` made (add: the body enters Bullet's world; else its proxy is
+  // made again) under the body's index in bodies() as its broadphase id (enter_world says why)
+  void make_proxy(btRigidBody& body, bool add);
+
   WorldSettings settings_;
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
