@@ -1,7 +1,9 @@
 #include "dem/fracture/level_ice.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <vector>
 
 #include "dem/fracture/ice_lattice.hpp"
 #include "dem/fracture/lattice_region.hpp"
@@ -69,14 +71,29 @@ void update_level_sheet(const Scene& scene, const Eigen::Vector3d& structure, Wo
   std::set<int> attached;
   for (int i = 0; i < sheet->elements; ++i)
     if (sheet->edge[i]) attached.insert(floes[sheet->first_element + i].fragment);
+  const double hold_beyond = radius + kLatticeHysteresis;
+  // each element's nearest point is at least gap[i] from the axis and behind[i] behind it along
+  // the travel (negative: ahead); a broken-off piece is as far behind as its nearest element,
+  // indexed by the fragment's name (its first element) less the sheet's first
+  const double travel = (scene.structure.speed > 0) - (scene.structure.speed < 0);
+  std::vector<double> gap(sheet->elements), piece_behind(sheet->elements, INFINITY);
+  for (int i = 0; i < sheet->elements; ++i) {
+    const FloeBody& f = floes[sheet->first_element + i];
+    const btVector3 c = f.body->getCenterOfMassPosition();
+    gap[i] = std::hypot(c.x() - structure.x(), c.z() - structure.z()) - f.shape->radius;
+    const double behind = (structure.x() - c.x()) * travel - f.shape->radius;
+    double& piece = piece_behind[f.fragment - sheet->first_element];
+    piece = std::min(piece, behind);
+  }
   for (int i = 0; i < sheet->elements; ++i) {
     FloeBody& f = floes[sheet->first_element + i];
-    const btVector3 c = f.body->getCenterOfMassPosition();
-    // the element's nearest point is at least this far from the axis
-    const double gap = std::hypot(c.x() - structure.x(), c.z() - structure.z()) - f.shape->radius;
-    if (f.frozen && gap < radius) {
+    // the attached sheet element by element; a broken-off piece whole, once the structure has left
+    // all of it behind
+    const bool hold = attached.count(f.fragment) ? gap[i] > hold_beyond
+                                                 : piece_behind[f.fragment - sheet->first_element] > hold_beyond;
+    if (f.frozen && gap[i] < radius) {
       world.unfreeze(f);  // at rest where it was held, awake
-    } else if (!f.frozen && gap > radius + kLatticeHysteresis && attached.count(f.fragment)) {
+    } else if (!f.frozen && hold) {
       world.freeze(f);  // where it lies now: its joints keep the offsets they hold
     }
   }

@@ -11,7 +11,15 @@
 // part alone. As the structure comes, the elements ahead of it are released; the intact sheet it
 // has passed (along the channel's sides) is held again once it lies kLatticeHysteresis beyond the
 // radius. Pieces that have broken off the sheet (fragments with no element on the sheet's sides or
-// far end, where the ice around it holds it) are floes of their own and are never held again.
+// far end, where the ice around it holds it) move as floes of their own until the structure has
+// left them behind: a piece all of which lies more than the radius plus kLatticeHysteresis behind
+// the axis, along the structure's travel, is held whole where it lies. The structure moves away
+// from it, so nothing it does can reach the structure again; left free, the pieces the tow leaves
+// in the channel stay in one island with the rubble at the structure and awake, and the solve grows
+// with the length towed (700 awake bodies and 1,900 contact points after 120 s of a tow, more than
+// half of them over 2 m behind the axis: docs/model/breakage.md, "Level ice"). Pieces beside the
+// structure or ahead of it stay free however far they are, so no held piece is a wall the
+// structure can push ice against.
 //
 // The approximation is the held edge: a floating sheet bends as exp(-x / (sqrt(2) l_c)) away
 // from its load (l_c, the characteristic length), so a radius of a few l_c leaves the clamp's
@@ -37,7 +45,8 @@ Floe level_sheet_floe(const Scene& scene);
 void add_level_sheet(World& world, const Scene& scene, const Floe& floe, int floe_id, double y);
 
 /// Release the held elements within fracture.lattice_radius of the structure axis at `structure`,
-/// hold again the free elements of the attached sheet beyond the radius plus kLatticeHysteresis,
+/// hold again the free elements of the attached sheet beyond the radius plus kLatticeHysteresis
+/// and the broken-off pieces wholly that far behind it along the travel (scene.structure.speed's sign),
 /// and put in the solver the joints that join a free element (out of it those between two held
 /// ones). Does nothing without a sheet.
 void update_level_sheet(const Scene& scene, const Eigen::Vector3d& structure, World& world);
