@@ -32,6 +32,7 @@ COMMANDS = {
                                "the seed paper's Figure 6 for this solver: elastic modulus against the joints' CFM"),
     "edge_load.py": ("edge_load", "the vertical edge load that breaks a square floe floating on water, in bending"),
     "break_pictures.py": ("break_pictures", "pictures of breaks like the seed paper's Fig. 18"),
+    "piece_sizes": ("pieces", "the sizes of the pieces a run's breakable ice broke into"),
     "fracture_events.py": ("fracture_events", "the joint breaks of one run: count by mode, and where they happened"),
     "compare_flow_models.py": ("compare_flow_models",
                                "the flow models compared on one scenario: still water, analytic and OpenFOAM"),

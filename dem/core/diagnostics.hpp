@@ -27,6 +27,7 @@ struct StepDiagnostics {
   double breaking_capped = 0;       // of those, the ones that stopped at solver.breaking_iterations above their merit
   double boundary_load = 0;         // N, fixed bodies' resistance to the structure's push (dem/world/boundary_load.hpp)
   double locked = 0;                // 1 if the boundaries carry kLockedShare of the surge load or more
+  double held_edge_overloads = 0;   // a level sheet's joints at its held edge over their capacity (never broken)
 };
 
 /// One diagnostic: its dataset name under /diagnostics, unit and meaning.
@@ -87,6 +88,12 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      "1 if the fixed bodies carry half the structure's surge load or more: the pack is locked against a "
      "boundary and the load is the confinement's (docs/model/contact_problems.md, \"Locked packs\")",
      &StepDiagnostics::locked},
+    {"held_edge_overloads", "1",
+     "level ice: the sheet's joints between a free element and a held one that reached their capacity over the "
+     "step (summed over its substeps); they do not break, the held sheet standing in for the ice around, whose "
+     "clamp bends the free sheet harder than the ice would. Many: fracture.lattice_radius too small "
+     "(docs/model/breakage.md, \"Level ice\")",
+     &StepDiagnostics::held_edge_overloads},
 };
 inline constexpr std::size_t kDiagnosticCount = std::size(kDiagnosticColumns);
 

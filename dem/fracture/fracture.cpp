@@ -6,6 +6,7 @@
 
 #include "dem/fracture/break_context.hpp"
 #include "dem/fracture/ice_lattice.hpp"
+#include "dem/fracture/level_ice.hpp"
 #include "dem/world/bullet_eigen.hpp"
 
 namespace icedem {
@@ -58,6 +59,7 @@ JointRatios joint_ratios(const Scene& scene, const World& world, const ContactPr
   JointRatios out;
   for (const auto& [index, w] : on_a) {
     const IceJoint& joint = world.joints()[index];
+    if (at_held_edge(world, joint)) continue;
     double ratio = 0;
     failure_mode(joint_loads(world, joint, w.force, w.torque), joint_capacity(scene, joint), ratio);
     out.largest = std::max(out.largest, ratio);
@@ -83,10 +85,10 @@ void low_pass(JointLoads& y, const JointLoads& x, double a) {
 
 }  // namespace
 
-void check_fracture(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h,
-                    FractureState& fracture) {
+int check_fracture(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h,
+                   FractureState& fracture) {
   std::vector<IceJoint>& joints = world.joints();
-  if (joints.empty()) return;
+  if (joints.empty()) return 0;
   const double tau = scene.fracture.load_filter_time;
   const double a = h / (tau + h);
   if (tau > 0 && fracture.filtered_joint_loads.size() != joints.size())
@@ -97,6 +99,7 @@ void check_fracture(const Scene& scene, World& world, double time, const Eigen::
   // the next collision pass, and the context of the floe's other breaks of the step (its
   // contacts with the structure and with other floes) must be read from those manifolds.
   std::vector<std::size_t> failed;
+  int held_edge_overloads = 0;
   for (std::size_t i = 0; i < joints.size(); ++i) {
     IceJoint& joint = joints[i];
     if (!joint.constraint) continue;  // broken already
@@ -114,6 +117,10 @@ void check_fracture(const Scene& scene, World& world, double time, const Eigen::
     const JointCapacity own = joint_capacity(scene, joint);
     double ratio = 0;
     const FailureMode mode = failure_mode(loads, own, ratio);
+    if (at_held_edge(world, joint)) {  // the clamp's load, not the ice's: counted, never broken
+      held_edge_overloads += mode != FailureMode::kNone;
+      continue;
+    }
     const Eigen::Vector3d at = body_pose(body_a) * joint.midpoint_a;
     if (fracture.floe_margins.size() <= static_cast<std::size_t>(joint.floe))
       fracture.floe_margins.resize(joint.floe + 1);
@@ -134,6 +141,7 @@ void check_fracture(const Scene& scene, World& world, double time, const Eigen::
     failed.push_back(i);
   }
   for (std::size_t i : failed) break_joint(world, joints[i]);
+  return held_edge_overloads;
 }
 
 }  // namespace icedem

@@ -33,7 +33,8 @@ JointCapacity joint_capacity(const Scene& scene, const IceJoint& joint);
 /// The failure ratios (load over capacity, eqs. 1-3) the joints of an island's contact
 /// problem reach with its joint rows' impulses `l` over the problem's step: the measure of
 /// check_fracture, taken on a solve's answer before the step integrates (the contact solver
-/// solves an island again, tighter, when a joint's is near 1: solver.breaking_ratio).
+/// solves an island again, tighter, when a joint's is near 1: solver.breaking_ratio). A level
+/// sheet's joints at its held edge, which do not break, are left out.
 struct JointRatios {
   double largest = 0;       // -, the largest (0 without joints)
   double nearest = 0;       // -, the one nearest to 1 (0 without joints)
@@ -44,7 +45,9 @@ JointRatios joint_ratios(const Scene& scene, const World& world, const ContactPr
 /// Check every intact joint of `world` with an awake element after a Bullet step of `h` seconds
 /// that ended at `time`, the structure's reference point at `structure` (low-passing the loads
 /// if fracture.load_filter_time > 0); break those that fail and add their events to `fracture`.
-void check_fracture(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h,
+/// A level sheet's joints at its held edge (at_held_edge) do not break; returns how many of them
+/// reached their capacity.
+int check_fracture(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h,
                     FractureState& fracture);
 
 }  // namespace icedem

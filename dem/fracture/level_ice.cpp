@@ -43,6 +43,12 @@ void add_level_sheet(World& world, const Scene& scene, const Floe& floe, int flo
   world.level_sheet() = std::move(sheet);
 }
 
+bool at_held_edge(const World& world, const IceJoint& joint) {
+  const std::optional<LevelSheet>& sheet = world.level_sheet();
+  return sheet && joint.floe == sheet->floe_id &&
+         world.floes()[joint.body_a].frozen != world.floes()[joint.body_b].frozen;
+}
+
 void sync_level_sheet_joints(World& world) {
   std::optional<LevelSheet>& sheet = world.level_sheet();
   if (!sheet) return;

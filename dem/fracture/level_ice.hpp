@@ -51,6 +51,13 @@ void add_level_sheet(World& world, const Scene& scene, const Floe& floe, int flo
 /// ones). Does nothing without a sheet.
 void update_level_sheet(const Scene& scene, const Eigen::Vector3d& structure, World& world);
 
+/// Whether `joint` is one of the sheet's that joins a free element to a held one: the clamp the
+/// held sheet stands in for the ice around. It does not break: a rigid clamp bends the free sheet at
+/// it harder than the continuing ice would, so that a sheet free within 1.2 m of the cone's axis
+/// broke 30 % of its joints there (docs/model/breakage.md, "Level ice"); its overloads are counted
+/// (/diagnostics/held_edge_overloads) to show a radius too small. False without a sheet.
+bool at_held_edge(const World& world, const IceJoint& joint);
+
 /// Put the sheet's joints in the solver, or take them out, as its elements' held states ask
 /// (after the build, or a checkpoint's restore, set those states). Does nothing without a sheet.
 void sync_level_sheet_joints(World& world);

@@ -131,6 +131,10 @@ std::string summary_table(const RunSummary& s) {
       out += fmt::format("{}{} {}{}", m ? ", " : "  breaks by mechanism: ",
                          break_mechanism_name(static_cast<BreakMechanism>(m)), s.breaks_by_mechanism[m],
                          m + 1 == kBreakMechanisms ? "\n" : "");
+  if (s.held_edge_overloads > 0)
+    out += fmt::format("  level ice: {:d} times a joint at the held edge reached its capacity (not broken: the held sheet's "
+                       "clamp; many say fracture.lattice_radius is too small; /diagnostics/held_edge_overloads)\n",
+                       s.held_edge_overloads);
   if (!s.near_structure_max_ratio.empty()) {
     const auto& r = s.near_structure_max_ratio;
     const long over_half = std::count_if(r.begin(), r.end(), [](double x) { return x >= 0.5; });
@@ -206,6 +210,10 @@ const std::vector<SummaryField>& summary_fields() {
        "for every breakable floe that came within 1 m of the structure: the largest load / capacity ratio of its "
        "joints over the run (fracture.mode = \"analytic\": every floe the structure touched, its load over its "
        "breaking load)", [](S s) { return json(s.near_structure_max_ratio); }},
+      {"held_edge_overloads", "1", true, false,
+       "level ice: over the run, the sheet's joints at its held edge that reached their capacity, counted each step "
+       "(/diagnostics/held_edge_overloads); they do not break. Many: fracture.lattice_radius too small",
+       [](S s) { return json(s.held_edge_overloads); }},
       {"steps", "1", true, false, "solver steps", [](S s) { return json(s.steps); }},
       {"sim_time_s", "s", true, false, "simulated time", [](S s) { return json(s.sim_time_s); }},
       {"wall_time_s", "s", true, false,

@@ -124,6 +124,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   if (state.drag_exchange) { StageTimer t(times.coupling); state.drag_exchange->update(scene, state); }
   LoadCell cell;
   BoundaryLoad boundary;
+  int held_edge_overloads = 0;  // a level sheet's joints at its held edge over their capacity
   state.world->solver_report().clear();
   // the fracture stage's measure of how near a joint is to breaking, for the contact solver's
   // second, tighter solve of such islands (solver.breaking_ratio)
@@ -151,7 +152,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
     state.time = t_next;
     {
       StageTimer t(times.fracture);
-      check_fracture(scene, *state.world, state.time, state.structure_position, h, state.fracture);
+      held_edge_overloads += check_fracture(scene, *state.world, state.time, state.structure_position, h, state.fracture);
       if (floes_split(scene))
         check_splits(scene, *state.world, state.time, state.structure_position, h, state.fracture);
     }
@@ -166,6 +167,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   { StageTimer t(times.health); state.diagnostics = check_health(scene, state); }
   record_solver_report(state.world->solver_report(), state.diagnostics);
   record_boundary_load(scene, boundary_load, state.load, state.diagnostics);
+  state.diagnostics.held_edge_overloads = held_edge_overloads;
 }
 
 void advance(const Scene& scene, State& state, StepCase* attached) {

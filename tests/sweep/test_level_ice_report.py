@@ -33,11 +33,21 @@ set = ["friction.ice_structure=0.3"]
 """
 
 
-def record(mean, peak, distances):
-    return {"summary": {"mean_fx_N": mean, "max_fx_N": peak, "breaks": len(distances), "cpu_time_s": 400.0,
-                        "sim_time_s": 200.0},
-            "window": {"p99_fx_N": 0.8 * peak},
-            "fracture_events": [{"distance": d} for d in distances]}
+def record(mean, peak, distances, pieces=None, held=None):
+    summary = {"mean_fx_N": mean, "max_fx_N": peak, "breaks": len(distances), "cpu_time_s": 400.0,
+               "sim_time_s": 200.0}
+    if held is not None:
+        summary["held_edge_overloads"] = held
+    rec = {"summary": summary, "window": {"p99_fx_N": 0.8 * peak},
+           "fracture_events": [{"distance": d} for d in distances]}
+    if pieces is not None:
+        rec["pieces"] = pieces
+    return rec
+
+
+PIECES = {"pieces": 12, "area_m2": [0.0225, 0.0225, 0.045], "diameter_m": [0.169, 0.169, 0.239],
+          "area_weighted_diameter_m": 0.25, "elements_median": 1.0, "single_element_share": 0.55,
+          "element_area_m2": 0.0225}
 
 
 with tempfile.TemporaryDirectory() as tmp:
@@ -51,7 +61,8 @@ with tempfile.TemporaryDirectory() as tmp:
 
     execute.status = lambda run, out: execute.Status(run, "done")
     level_ice_report.agg.load_record = lambda run, out: (
-        record(40.0, 120.0, [0.1, 0.2, 0.3, 0.4, 0.5]) if run.scenario == "mu02" else record(50.0, 150.0, []))
+        record(40.0, 120.0, [0.1, 0.2, 0.3, 0.4, 0.5], PIECES, 7) if run.scenario == "mu02"
+        else record(50.0, 150.0, []))
     seen = []
 
     def design(icedem, run):
@@ -69,9 +80,15 @@ with tempfile.TemporaryDirectory() as tmp:
     row = [line for line in text.splitlines() if line.startswith("| mu03 | 0.3 |")]
     check(len(row) == 1 and "| 0.3 |" in row[0] and "| 0.75 |" in row[0], f"mu 0.3 against its own ISO load: {row}")
     lengths = [line for line in text.splitlines() if line.startswith("| mu02 | 5 |")]
-    check(len(lengths) == 1 and "| 0.300 | 0.200-0.400 | 0.68 |" in lengths[0],
-          f"breaking lengths: median 0.3 m against 1.11 x 0.4 m: {lengths}")
-    check(any(line.startswith("| mu03 | 0 | n/a") for line in text.splitlines()), "a run without breaks says n/a")
+    check(len(lengths) == 1 and "| 0.300 | 0.200-0.400 | 0.68 | 7 |" in lengths[0],
+          f"breaking lengths: median 0.3 m against 1.11 x 0.4 m, 7 held-edge overloads: {lengths}")
+    check(any(line.startswith("| mu03 | 0 | n/a") and line.endswith("| n/a |") for line in text.splitlines()),
+          "a run without breaks says n/a, and n/a held-edge overloads when its summary has none")
+    piece_row = [line for line in text.splitlines() if line.startswith("| mu02 | 12 |")]
+    check(len(piece_row) == 1 and "0.0225 (0.0225-0.0450)" in piece_row[0] and "| 55.0 % |" in piece_row[0],
+          f"the pieces' row: 12 pieces, median area and quartiles, 55 % in one-element pieces: {piece_row}")
+    check(any(line.startswith("| mu03 | n/a |") for line in text.splitlines()),
+          "a record kept before pieces were says n/a")
 
     level_ice_report.design_loads = lambda icedem, run: (None, "no build at nowhere")
     text = "\n".join(level_ice_report.page(sweep, out, "nowhere"))

@@ -25,7 +25,7 @@ import h5py
 import numpy as np
 from scipy import signal, stats
 
-from . import results
+from . import pieces, results
 from .results import mode_key
 from .runner import RUN_FILES
 
@@ -278,8 +278,9 @@ def lowpass_maxima(t, x, inside):
 
 def make_record(run_dir):
     """The record of a finished run, from its directory: its summary, the Welch spectrum of its
-    surge load over the analysis window (up to RECORD_MAX_HZ) and its breaks (every field of
-    /fracture/events, mode and mechanism also by name)."""
+    surge load over the analysis window (up to RECORD_MAX_HZ), its breaks (every field of
+    /fracture/events, mode and mechanism also by name) and the sizes of the pieces they broke off
+    (pieces.summary; kept since 2026-11-27)."""
     summary = results.load_summary(os.path.join(run_dir, RUN_FILES["summary"]))
     freq, power, events, window = [], [], [], {}
     run = results.load_run(os.path.join(run_dir, RUN_FILES["h5"]))
@@ -302,7 +303,7 @@ def make_record(run_dir):
             e["mechanism_name"] = str(row["mechanism_name"])
         events.append(e)
     return {"summary": summary, "spectrum": {"frequency_hz": freq, "power_N2_per_hz": power},
-            "fracture_events": events, "window": window}
+            "fracture_events": events, "window": window, "pieces": pieces.summary(*pieces.piece_areas(run))}
 
 
 def load_record(run, out):

@@ -12,7 +12,7 @@ import os
 
 import numpy as np
 
-from . import aggregate as agg, execute, report_sweeps, spec
+from . import aggregate as agg, execute, pieces, report_sweeps, spec
 from .report_tables import fmt
 
 
@@ -37,7 +37,7 @@ def page(sweep, out, icedem):
          "(dem/validation/iso19906.hpp, ralston.hpp): loads of level ice failing in bending, the "
          "references a designer checks against, with about 40 % between methods and ISO's bias of about "
          "1.6 against field events (docs/model/validation_targets.md, 4a).", ""]
-    rows, lengths, lc = [], [], None
+    rows, lengths, piece_rows, lc = [], [], [], None
     for r in runs:
         if execute.status(r, out).state != "done":
             continue
@@ -46,7 +46,8 @@ def page(sweep, out, icedem):
         loads, why = design_loads(icedem, r)
         lc = loads["characteristic_length_m"] if loads else lc
         d = breaking_lengths(rec)
-        lengths.append((r.scenario, d))
+        lengths.append((r.scenario, d, s.get("held_edge_overloads")))
+        piece_rows.append((r.scenario, rec.get("pieces")))
         cpu, sim = s.get("cpu_time_s"), s.get("sim_time_s")
         rows.append([r.scenario, f"{loads['friction']:g}" if loads else "n/a",
                      s.get("mean_fx_N"), w.get("p99_fx_N"), s.get("max_fx_N"),
@@ -68,15 +69,23 @@ def page(sweep, out, icedem):
           "height (/fracture/events distance), against the characteristic-length estimate of the breaking "
           "length, pi/(4 beta) = pi sqrt(2) l_c / 4 = 1.11 l_c for a semi-infinite floating beam under an "
           "edge load" + (f" ({1.11 * lc:.3f} m, l_c {lc:.3f} m)" if lc else "") + ". A cone's breaking "
-          "front is a wedge, not a beam, and field breaking lengths are shorter.", "",
-          "| run | breaks | median m | quartiles m | median / (1.11 l_c) |", "|---|---|---|---|---|"]
-    for name_, d in lengths:
+          "front is a wedge, not a beam, and field breaking lengths are shorter. Held-edge overloads: "
+          "how often a joint between the free sheet and the held sheet reached its capacity (not broken: the "
+          "held sheet's clamp, summary held_edge_overloads); many say the radius is too small.", "",
+          "| run | breaks | median m | quartiles m | median / (1.11 l_c) | held-edge overloads |",
+          "|---|---|---|---|---|---|"]
+    for name_, d, held in lengths:
+        held = "n/a" if held is None else str(held)
         if d.size == 0:
-            L.append(f"| {name_} | 0 | n/a | n/a | n/a |")
+            L.append(f"| {name_} | 0 | n/a | n/a | n/a | {held} |")
             continue
         q1, med, q3 = np.quantile(d, [0.25, 0.5, 0.75])
         L.append(f"| {name_} | {d.size} | {med:.3f} | {q1:.3f}-{q3:.3f} | "
-                 f"{fmt(med / (1.11 * lc) if lc else None, digits=2)} |")
+                 f"{fmt(med / (1.11 * lc) if lc else None, digits=2)} | {held} |")
+    L += ["", "The pieces broken off the sheet at the run's end (every fragment but the sheet, `scripts/piece_sizes`): "
+          "their true areas and equivalent diameters, and the share of the broken-off area in pieces of one "
+          "element, the lattice's grain.", ""]
+    L += pieces.table([(name_, p if p is not None else {"pieces": None}) for name_, p in piece_rows])
     return L + [""]
 
 

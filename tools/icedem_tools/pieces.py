@@ -1,0 +1,137 @@
+"""The pieces a run's breakable ice broke into: the fragments of each lattice at the run's end, from
+its elements' outlines (/bodies), its joints (/joints) and the joints it broke (/fracture/events).
+
+A floe's fragments are the connected parts of its elements over the joints still intact. The piece
+sizes a run reports are those of the fragments broken off: every fragment of a floe that broke but
+its largest, which is what is left of the floe (of a level sheet, the sheet). Areas are the
+elements' true areas (a hexagonal or outline-clipped element keeps its own), so square and
+hexagonal lattices compare on the same footing; the equivalent diameter is sqrt(4 A / pi).
+
+    scripts/piece_sizes RUN.h5 [RUN.h5 ...] [--label NAME ...] [--until T]
+
+prints, per run, the number of pieces, their area's quartiles, the equivalent diameter's quartiles
+and the share of the broken-off area in pieces of one element (the lattice's own grain), so that a
+distribution set by the elements' size shows as such."""
+import argparse
+import sys
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+
+from . import results
+from .report_tables import fmt
+
+
+def polygon_areas(vertices, offsets):
+    """The area (m^2) of each outline vertices[offsets[i]:offsets[i+1]] (shoelace, either winding)."""
+    areas = np.empty(len(offsets) - 1)
+    for i in range(len(areas)):
+        v = vertices[offsets[i]:offsets[i + 1]]
+        x, z = v[:, 0], v[:, 1]
+        areas[i] = 0.5 * abs(np.dot(x, np.roll(z, -1)) - np.dot(z, np.roll(x, -1)))
+    return areas
+
+
+def fragment_areas(run, until=None):
+    """{floe id: areas (m^2) of its fragments, largest first} for every lattice floe that broke, from
+    a results.load_run object, after the breaks up to time `until` (s; None: all of them). Rigid
+    floes (no joints) and lattices that never broke are left out."""
+    joints = run["/joints/bodies"] if "/joints/bodies" in run else np.empty((0, 2), int)
+    if len(joints) == 0:
+        return {}
+    floe_of_joint, index = np.asarray(run["/joints/floe"]), np.asarray(run["/joints/index"])
+    ev = run.events
+    if until is not None and len(ev):
+        ev = ev[ev["time"] <= until]
+    broken_keys = {(int(f), int(j)) for f, j in zip(ev["floe"], ev["joint"]) if j >= 0} if len(ev) else set()
+    if not broken_keys:
+        return {}
+    intact = np.array([(int(f), int(j)) not in broken_keys for f, j in zip(floe_of_joint, index)])
+    areas = polygon_areas(np.asarray(run["/bodies/vertices"]), np.asarray(run["/bodies/vertex_offset"]))
+    n = len(areas)
+    a, b = np.asarray(joints)[intact, 0], np.asarray(joints)[intact, 1]
+    graph = coo_matrix((np.ones(len(a)), (a, b)), shape=(n, n))
+    _, label = connected_components(graph, directed=False)
+    broken_floes = {f for f, _ in broken_keys}
+    lattice_bodies = np.unique(np.asarray(joints).ravel())
+    floe_id = np.asarray(run["/bodies/floe_id"])
+    out = {}
+    for f in sorted(broken_floes):
+        bodies = lattice_bodies[floe_id[lattice_bodies] == f]
+        labels, inverse = np.unique(label[bodies], return_inverse=True)
+        sums = np.bincount(inverse, weights=areas[bodies], minlength=len(labels))
+        out[f] = np.sort(sums)[::-1]
+    return out
+
+
+def piece_areas(run, until=None):
+    """(areas (m^2) of the pieces broken off by time `until` (s; None: the run's end), the lattices'
+    whole element's area (m^2)): every fragment of a floe that broke but its largest."""
+    frags = fragment_areas(run, until)
+    pieces = np.concatenate([a[1:] for a in frags.values()]) if frags else np.empty(0)
+    joints = np.asarray(run["/joints/bodies"]) if "/joints/bodies" in run else np.empty((0, 2), int)
+    element = 0.0
+    if len(joints):
+        areas = polygon_areas(np.asarray(run["/bodies/vertices"]), np.asarray(run["/bodies/vertex_offset"]))
+        # the whole elements' area: the commonest, to the round-off (clipped ones at an outline are smaller)
+        lattice = np.round(areas[np.unique(joints.ravel())], 9)
+        values, counts = np.unique(lattice, return_counts=True)
+        element = float(values[np.argmax(counts)])
+    return pieces, element
+
+
+def summary(pieces, element):
+    """The figures of one run's pieces: count, area and equivalent-diameter quartiles, elements a
+    piece (median) and the share of broken-off area in pieces no larger than one element."""
+    if len(pieces) == 0:
+        return {"pieces": 0}  # (a record's pieces: None when kept before they were)
+    d = np.sqrt(4 * pieces / np.pi)
+    q = lambda x: [float(v) for v in np.quantile(x, [0.25, 0.5, 0.75])]  # noqa: E731
+    single = pieces <= element * 1.001 if element > 0 else np.zeros(len(pieces), bool)
+    return {"pieces": int(len(pieces)), "area_m2": q(pieces), "diameter_m": q(d),
+            "area_weighted_diameter_m": float(np.sum(d * pieces) / np.sum(pieces)),
+            "elements_median": float(np.median(pieces) / element) if element > 0 else None,
+            "single_element_share": float(pieces[single].sum() / pieces.sum()),
+            "element_area_m2": element}
+
+
+def table(rows):
+    """Markdown lines: one row per (label, summary)."""
+    L = ["| run | pieces | area, m^2: median (quartiles) | equivalent diameter, m: median (quartiles) | "
+         "area-weighted diameter, m | elements a piece (median) | area in one-element pieces |",
+         "|---|---|---|---|---|---|---|"]
+    for label, s in rows:
+        if s.get("pieces") is None:  # a record kept before pieces were
+            L.append(f"| {label} | n/a | | | | | |")
+            continue
+        if s["pieces"] == 0:
+            L.append(f"| {label} | 0 | | | | | |")
+            continue
+        a, d = s["area_m2"], s["diameter_m"]
+        L.append(f"| {label} | {s['pieces']} | {fmt(a[1], digits=4)} ({fmt(a[0], digits=4)}-{fmt(a[2], digits=4)}) | "
+                 f"{fmt(d[1], digits=3)} ({fmt(d[0], digits=3)}-{fmt(d[2], digits=3)}) | {fmt(s['area_weighted_diameter_m'], digits=3)} | "
+                 f"{fmt(s['elements_median'], digits=2)} | {fmt(100 * s['single_element_share'], digits=1)} % |")
+    return L
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(prog="scripts/piece_sizes", description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("runs", nargs="+", help="run outputs (OUT.h5) of scenarios with breakable ice")
+    ap.add_argument("--label", action="append", default=[], help="a name for each run, in order (default: its path)")
+    ap.add_argument("--until", type=float, help="the pieces after the breaks up to this time, s (default: the "
+                                                "run's end; a run still going is read as far as it got)")
+    a = ap.parse_args(argv)
+    if a.label and len(a.label) != len(a.runs):
+        ap.error(f"{len(a.label)} --label for {len(a.runs)} runs: give one for each or none")
+    rows = []
+    for i, path in enumerate(a.runs):
+        try:
+            run = results.load_run(path)
+        except OSError as e:
+            print(f"scripts/piece_sizes: {path}: cannot read it as a run's output ({e})", file=sys.stderr)
+            return 2
+        rows.append((a.label[i] if a.label else path, summary(*piece_areas(run, a.until))))
+    print("\n".join(table(rows)))
+    return 0
