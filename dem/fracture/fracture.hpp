@@ -48,6 +48,6 @@ JointRatios joint_ratios(const Scene& scene, const World& world, const ContactPr
 /// A level sheet's joints at its held edge (at_held_edge) do not break; returns how many of them
 /// reached their capacity.
 int check_fracture(const Scene& scene, World& world, double time, const Eigen::Vector3d& structure, double h,
-                    FractureState& fracture);
+                   FractureState& fracture);
 
 }  // namespace icedem
