@@ -343,7 +343,9 @@ class Execution(unittest.TestCase):
             self.assertTrue(os.path.isfile(r.record_file), r.record_file)
         import json
         rec = json.loads(read(runs[0].record_file))
-        self.assertEqual(set(rec), {"summary", "spectrum", "fracture_events", "window"})
+        self.assertEqual(set(rec), {"summary", "spectrum", "fracture_events", "window", "pieces"})
+        # the tiny sweep's floes are rigid: nothing broke off
+        self.assertEqual(rec["pieces"], {"pieces": 0})
         # the window's 99th percentile: within the run's surge load, at most its max
         self.assertLessEqual(rec["window"]["p99_fx_N"], rec["summary"]["max_fx_N"])
         self.assertGreater(len(rec["spectrum"]["frequency_hz"]), 10)

@@ -20,7 +20,6 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
 from . import results
-from .report_tables import fmt
 
 
 def polygon_areas(vertices, offsets):
@@ -98,6 +97,7 @@ def summary(pieces, element):
 
 def table(rows):
     """Markdown lines: one row per (label, summary)."""
+    from .report_tables import fmt  # here: report_tables reads records (aggregate), which use this module
     L = ["| run | pieces | area, m^2: median (quartiles) | equivalent diameter, m: median (quartiles) | "
          "area-weighted diameter, m | elements a piece (median) | area in one-element pieces |",
          "|---|---|---|---|---|---|---|"]
