@@ -129,11 +129,12 @@ std::vector<KeySpec> make_keys() {
                    "solver.method other than \"pgs\": how far from 1 every joint's failure ratio must be at "
                    "solver.breaking_check_tolerance for the solve to stop there: 0.04, twice the 2 % that "
                    "merit's error reached"));
-  k.push_back(integer("solver.breaking_iterations", 20000, 1, 1000000,
-                      "solver.method other than \"pgs\": cap of the method's iterations when an island is solved "
-                      "again for a joint near its capacity (solver.breaking_merit_tolerance; the gradient method "
-                      "needs up to about 7000 on the lattices' breaking steps); what it leaves above that merit, "
-                      "the Newton method finishes (at most 1000 of its steps)"));
+  k.push_back(integer("solver.breaking_iterations", 3000, 1, 1000000,
+                      "solver.method other than \"pgs\": cap of the method's iterations in each stage of an island "
+                      "solved again for a joint near its capacity (solver.breaking_check_tolerance, then "
+                      "solver.breaking_merit_tolerance; the gradient method needs a median of 1000-3000 on the "
+                      "lattices' breaking steps, and far more on a level sheet's, where Newton is the cheaper); what "
+                      "it leaves above that merit, the Newton method finishes (at most 1000 of its steps)"));
   k.push_back(integer("solver.method_iterations", 1000, 1, 100000,
                       "solver.method other than \"pgs\": cap of the method's iterations per island and Bullet "
                       "step (Newton steps, or sweeps); the paper's small-floe run needs at most 589 gradient steps "

@@ -104,7 +104,7 @@ struct ContactSolverSettings {
   double breaking_ratio = 0.9;
   double breaking_check_tolerance = 0.0;
   double breaking_check_band = 0.04;
-  int breaking_iterations = 20000;
+  int breaking_iterations = 3000;
   int method_iterations = 300;
   // cap of the split-impulse position sweeps (pseudo-impulses that push penetrating contacts
   // apart, apart from the contact impulses); they stop earlier at `tolerance`
