@@ -8,17 +8,9 @@ import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
+from checks import ROOT, check, finish  # noqa: E402
 from icedem_tools import convergence_check  # noqa: E402
-
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 SWEEP = """name = "check_test"
@@ -70,7 +62,4 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(sweep) as f:
         check(f.read() == SWEEP, "the sweep file is untouched")
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("all checks passed")
+finish()

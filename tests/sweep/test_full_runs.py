@@ -8,16 +8,9 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
+from checks import check, finish  # noqa: E402
 from icedem_tools.full_runs import TOLERANCE, judge  # noqa: E402
-
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 SEEDS = [1, 2, 3, 4, 5]
@@ -66,4 +59,4 @@ check(not judge(ensemble(floes=1.2), none)[1] and judge(ensemble(floes=1.2), non
 check(judge(ensemble(floes=0.0), none)[1], "none in either: as often")
 three = judge(ensemble(seeds=[1, 2, 3]), ref)
 check(three[3] == 3, "only the seeds both have are paired")
-sys.exit(1 if failures else 0)
+finish()

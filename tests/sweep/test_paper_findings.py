@@ -5,16 +5,9 @@ changed_findings), in a sentence with both numbers, and counts the others."""
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
+from checks import check, finish  # noqa: E402
 from icedem_tools.paper_findings import changed_findings  # noqa: E402
-
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 # (finding, paper, icedem, agrees?, cause)
@@ -48,7 +41,4 @@ check("**size** moved" not in "\n".join(changed_findings(shares[1], shares[0], "
 shares = [("size", "small", "-13.2 %", False, None)], [("size", "small", "1.0 %", True, None)]
 check("now agrees" in "\n".join(changed_findings(shares[1], shares[0], "a", "b")), "agreement first")
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("all checks passed")
+finish()

@@ -8,17 +8,11 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
+from checks import check, finish  # noqa: E402
 from icedem_tools.report_breakage import bootstrap_shares, fig18_shift, interval  # noqa: E402
 
 MECHANISMS = ["on the slope", "pressed under", "in the rubble", "in the pack"]
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def runs(*rows, times=1):
@@ -60,5 +54,4 @@ shares = bootstrap_shares(runs((0, 0, 0, 0), (1, 1, 0, 0), (0, 2, 0, 0)), np.ran
 iv = interval(shares[:, 1])
 check(iv is not None and iv[0] <= 3 / 4 <= iv[1], f"pressed under 3/4 inside its interval {iv}")
 
-print(f"{len(failures)} failure(s)")
-sys.exit(1 if failures else 0)
+finish()

@@ -9,17 +9,10 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
+from checks import check, finish  # noqa: E402
 from icedem_tools.report_convergence import (  # noqa: E402
     MEAN_TOLERANCE, headline_section, log_change, max_bounds, seeds_for_tolerance, verdict)
-
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def summary(mean, peak, breaks=0, mechanisms=None, p99=None):
@@ -125,7 +118,4 @@ check(seeds_for_tolerance((lo, hi), math.expm1(0.1), 5, log=True, student=False)
 big = cells(rows["large_breakable_015 mean load"])
 check(int(big[7]) > 5, f"a mean scattered by 25-30 % per seed needs more than its 5 seeds for +-5 %: {big[7]}")
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("all checks passed")
+finish()

@@ -10,17 +10,11 @@ import collections
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
+from checks import check, finish  # noqa: E402
 from icedem_tools.report_fracture_models import FII, FIS, MODELS, comparison, iso19906  # noqa: E402
 
-failures = []
 Run = collections.namedtuple("Run", "seed labels")
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def record(mean, peak, breaks=0, cpu=10.0, p99=None):
@@ -72,7 +66,4 @@ check(terms is None and "no build at /nonexistent/icedem" in why, f"without a bu
 terms, why = iso19906("/bin/false")
 check(terms is None and "failed" in why, f"a build whose cone-load fails: the row says so: {why}")
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("all checks passed")
+finish()
