@@ -49,7 +49,7 @@ p, element = pieces.piece_areas(run)
 check(len(p) == 0 and pieces.summary(p, element) == {"pieces": 0}, "no break: no piece")
 
 run = strip_run([(1.0, 1), (2.0, 2)])
-frags = pieces.fragment_areas(run)
+frags = pieces.fragment_areas(run, pieces.body_areas(run))
 check(list(frags) == [0] and np.allclose(frags[0], [2 * A, A, A / 2]),
       f"joints 1 and 2 broken: fragments of 2, 1 and a half element, largest first: {frags}")
 p, element = pieces.piece_areas(run)

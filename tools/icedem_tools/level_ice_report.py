@@ -85,7 +85,7 @@ def page(sweep, out, icedem):
     L += ["", "The pieces broken off the sheet at the run's end (every fragment but the sheet, `scripts/piece_sizes`): "
           "their true areas and equivalent diameters, and the share of the broken-off area in pieces of one "
           "element, the lattice's grain.", ""]
-    L += pieces.table([(name_, p if p is not None else {"pieces": None}) for name_, p in piece_rows])
+    L += pieces.table(piece_rows)
     return L + [""]
 
 

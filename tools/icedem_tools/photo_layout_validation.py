@@ -19,7 +19,7 @@ import tempfile
 import numpy as np
 from scipy.spatial import ConvexHull, cKDTree
 
-from . import output_guard, photolayout
+from . import output_guard, photolayout, polygons
 
 from .spec import ROOT
 SUPERSAMPLE = 4
@@ -137,8 +137,8 @@ def run_case(name, scheme, angled, out, rng, m_per_px=0.004, cell=0.3, concentra
     p = subprocess.run(args, check=True, capture_output=True, text=True)
     size_found = next((float(l.split()[3]) for l in p.stdout.splitlines() if l.startswith("typical floe side")), math.nan)
     found = read_csv(layout)
-    true_conc = sum(photolayout.polygon_area(p) for p in floes) / (width * height)
-    found_conc = sum(photolayout.polygon_area(p) for _, p in found) / (width * height)
+    true_conc = sum(polygons.polygon_area(p) for p in floes) / (width * height)
+    found_conc = sum(polygons.polygon_area(p) for _, p in found) / (width * height)
     # centroid error in pixels of the photo: the found centroid mapped back through the scale
     # (or the transform) against the true one
     true_c = np.array([photolayout.polygon_centroid(p) for p in floes])

@@ -27,6 +27,7 @@ from skimage import filters, measure, morphology, segmentation, transform
 from skimage.feature import peak_local_max
 
 from . import output_guard
+from .polygons import polygon_area, signed_area_xz
 
 
 def to_gray(image):
@@ -137,10 +138,6 @@ def pixel_to_tank(metres_per_pixel=None, origin=(0.0, 0.0), reference=None):
         return lambda u, v: tuple(t(np.column_stack([u, v])).T)
     s, (x0, z0) = metres_per_pixel, origin
     return lambda u, v: (x0 + s * np.asarray(u, dtype=float), z0 - s * np.asarray(v, dtype=float))
-
-
-def polygon_area(p):
-    return abs(signed_area_xz(p))
 
 
 def floes_from_labels(labels, to_tank, min_area=0.0, region=None):
@@ -263,12 +260,6 @@ def write_csv(floes, path):
         p = poly if signed_area_xz(poly) > 0 else poly[::-1]
         w.writerow([f"{c[0]:.5f}", f"{c[1]:.5f}", "0", "; ".join(f"{x:.5f} {z:.5f}" for x, z in p)])
     output_guard.write_text(path, out.getvalue())
-
-
-def signed_area_xz(p):
-    """Positive for counter-clockwise seen from above (+y), as icedem's polygon.hpp counts."""
-    x, z = p[:, 0], p[:, 1]
-    return -0.5 * (np.dot(x, np.roll(z, -1)) - np.dot(z, np.roll(x, -1)))
 
 
 def summary(floes, region_area):

@@ -20,23 +20,30 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
 from . import results
+from .polygons import polygon_area
 
 
 def polygon_areas(vertices, offsets):
-    """The area (m^2) of each outline vertices[offsets[i]:offsets[i+1]] (shoelace, either winding)."""
-    areas = np.empty(len(offsets) - 1)
-    for i in range(len(areas)):
-        v = vertices[offsets[i]:offsets[i + 1]]
-        x, z = v[:, 0], v[:, 1]
-        areas[i] = 0.5 * abs(np.dot(x, np.roll(z, -1)) - np.dot(z, np.roll(x, -1)))
-    return areas
+    """The area (m^2) of each outline vertices[offsets[i]:offsets[i+1]]."""
+    return np.array([polygon_area(vertices[offsets[i]:offsets[i + 1]]) for i in range(len(offsets) - 1)])
 
 
-def fragment_areas(run, until=None):
+def body_areas(run):
+    """The area (m^2) of every body of a results.load_run object, from its outline (/bodies)."""
+    return polygon_areas(np.asarray(run["/bodies/vertices"]), np.asarray(run["/bodies/vertex_offset"]))
+
+
+def lattice_joints(run):
+    """The bodies each joint of a breakable floe glues (/joints/bodies, nj x 2; empty without)."""
+    return np.asarray(run["/joints/bodies"]) if "/joints/bodies" in run else np.empty((0, 2), int)
+
+
+def fragment_areas(run, areas, until=None):
     """{floe id: areas (m^2) of its fragments, largest first} for every lattice floe that broke, from
-    a results.load_run object, after the breaks up to time `until` (s; None: all of them). Rigid
-    floes (no joints) and lattices that never broke are left out."""
-    joints = run["/joints/bodies"] if "/joints/bodies" in run else np.empty((0, 2), int)
+    a results.load_run object and its bodies' areas (body_areas), after the breaks up to time
+    `until` (s; None: all of them). Rigid floes (no joints) and lattices that never broke are left
+    out."""
+    joints = lattice_joints(run)
     if len(joints) == 0:
         return {}
     floe_of_joint, index = np.asarray(run["/joints/floe"]), np.asarray(run["/joints/index"])
@@ -47,13 +54,12 @@ def fragment_areas(run, until=None):
     if not broken_keys:
         return {}
     intact = np.array([(int(f), int(j)) not in broken_keys for f, j in zip(floe_of_joint, index)])
-    areas = polygon_areas(np.asarray(run["/bodies/vertices"]), np.asarray(run["/bodies/vertex_offset"]))
     n = len(areas)
-    a, b = np.asarray(joints)[intact, 0], np.asarray(joints)[intact, 1]
+    a, b = joints[intact, 0], joints[intact, 1]
     graph = coo_matrix((np.ones(len(a)), (a, b)), shape=(n, n))
     _, label = connected_components(graph, directed=False)
     broken_floes = {f for f, _ in broken_keys}
-    lattice_bodies = np.unique(np.asarray(joints).ravel())
+    lattice_bodies = np.unique(joints.ravel())
     floe_id = np.asarray(run["/bodies/floe_id"])
     out = {}
     for f in sorted(broken_floes):
@@ -67,17 +73,15 @@ def fragment_areas(run, until=None):
 def piece_areas(run, until=None):
     """(areas (m^2) of the pieces broken off by time `until` (s; None: the run's end), the lattices'
     whole element's area (m^2)): every fragment of a floe that broke but its largest."""
-    frags = fragment_areas(run, until)
+    joints = lattice_joints(run)
+    if len(joints) == 0:  # rigid floes only: no outline read
+        return np.empty(0), 0.0
+    areas = body_areas(run)
+    frags = fragment_areas(run, areas, until)
     pieces = np.concatenate([a[1:] for a in frags.values()]) if frags else np.empty(0)
-    joints = np.asarray(run["/joints/bodies"]) if "/joints/bodies" in run else np.empty((0, 2), int)
-    element = 0.0
-    if len(joints):
-        areas = polygon_areas(np.asarray(run["/bodies/vertices"]), np.asarray(run["/bodies/vertex_offset"]))
-        # the whole elements' area: the commonest, to the round-off (clipped ones at an outline are smaller)
-        lattice = np.round(areas[np.unique(joints.ravel())], 9)
-        values, counts = np.unique(lattice, return_counts=True)
-        element = float(values[np.argmax(counts)])
-    return pieces, element
+    # the whole elements' area: the commonest, to the round-off (clipped ones at an outline are smaller)
+    values, counts = np.unique(np.round(areas[np.unique(joints.ravel())], 9), return_counts=True)
+    return pieces, float(values[np.argmax(counts)])
 
 
 def summary(pieces, element):
@@ -96,13 +100,14 @@ def summary(pieces, element):
 
 
 def table(rows):
-    """Markdown lines: one row per (label, summary)."""
+    """Markdown lines: one row per (label, summary); a summary of None (a record kept before pieces
+    were) is n/a."""
     from .report_tables import fmt  # here: report_tables reads records (aggregate), which use this module
     L = ["| run | pieces | area, m^2: median (quartiles) | equivalent diameter, m: median (quartiles) | "
          "area-weighted diameter, m | elements a piece (median) | area in one-element pieces |",
          "|---|---|---|---|---|---|---|"]
     for label, s in rows:
-        if s.get("pieces") is None:  # a record kept before pieces were
+        if not s or s.get("pieces") is None:  # a record kept before pieces were
             L.append(f"| {label} | n/a | | | | | |")
             continue
         if s["pieces"] == 0:
