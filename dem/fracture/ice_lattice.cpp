@@ -33,7 +33,7 @@ OutlineLattice floe_outline_lattice(const Polygon& shape, const FractureSettings
   yaw0 = principal_yaw(shape) + fracture.lattice_angle;
   Polygon outline;
   for (const Eigen::Vector2d& v : shape) outline.push_back(rotate(v, -yaw0));
-  return fill_outline(outline, fracture.element_size, fracture.element_shape);
+  return fill_outline(outline, fracture.element_size, fracture.element_shape, fracture.tiling);
 }
 
 namespace {

@@ -5,8 +5,9 @@
 // its closing remark expects hexagons to let "ice failure be represented in a form close to
 // a shape having a curved surface". Here the plane is tiled with cells (squares of side
 // element_size, or hexagons whose neighbouring centres are element_size apart, flat faces
-// towards +-z), the grid anchored at the outline's lower corner (x, z least), and each cell is
-// cut to the part of the outline inside it. An element keeps the true area, centroid and
+// towards +-z), the grid anchored at the outline's lower corner (x, z least) or, fitted
+// (fracture.tiling), shifted to where it cuts the fewest parts below a quarter and below half a
+// cell, and each cell is cut to the part of the outline inside it. An element keeps the true area, centroid and
 // second moments of its part (its mass and inertia follow), and two elements are joined
 // where their parts share a stretch of their cells' common face, with that stretch's length
 // (a joint's capacities scale with it, eqs. 1-3). A part smaller than `min_fraction` of a
@@ -57,9 +58,10 @@ struct OutlineLattice {
 /// The area of one cell: element_size^2 for a square, sqrt(3)/2 element_size^2 for a hexagon.
 double cell_area(double element_size, ElementShape shape);
 
-/// Fill `outline` (either orientation, at least three vertices, simple) with elements.
-/// Throws std::invalid_argument for a degenerate outline or a non-positive element size.
+/// Fill `outline` (either orientation, at least three vertices, simple) with elements, the
+/// tiling anchored at the outline's lower corner or fitted (Tiling). Throws
+/// std::invalid_argument for a degenerate outline or a non-positive element size.
 OutlineLattice fill_outline(const Polygon& outline, double element_size, ElementShape shape,
-                            double min_fraction = 0.25);
+                            Tiling tiling = Tiling::kCorner, double min_fraction = 0.25);
 
 }  // namespace icedem

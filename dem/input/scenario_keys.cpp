@@ -323,6 +323,12 @@ std::vector<KeySpec> make_keys() {
                      "a layout file's) and every hexagonal lattice is filled with elements cut at the outline, "
                      "joined across the faces they share, each joint's capacities and springs scaled by its "
                      "face's length (docs/model/breakage.md)"));
+  k.push_back(choice("fracture.tiling", "corner", {"corner", "fitted"},
+                     "where the element tiling of an outline lattice (fracture.element_shape) is anchored: "
+                     "\"corner\", at the outline's lower corner; \"fitted\", shifted to where it cuts the fewest "
+                     "parts below a quarter and below half a cell (a small part's joints have the capacities of "
+                     "its short faces, and broke 1.8-3.5 times as often as whole hexagons' on the paper's floes; "
+                     "docs/model/breakage.md). A rectangle of whole squares keeps the corner"));
   k.push_back(real("fracture.strength_scale", "-", 1.0, 1.0e-3, 1.0e3,
                    "factor on every joint's capacities (eqs. 1-3, each face's): 1 for squares, whose lattice "
                    "breaks at the bending strength along its grid (the cantilevers); a hexagonal lattice is "

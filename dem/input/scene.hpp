@@ -164,10 +164,14 @@ struct CouplingSettings {
 enum class FractureMode { kOff, kOn, kAuto, kAnalytic };
 // the ice elements' shape (dem/fracture/outline_lattice.hpp): squares (the paper's), or hexagons
 enum class ElementShape { kSquare, kHexagon };
+// where the element tiling is anchored on an outline (dem/fracture/outline_lattice.hpp): at its
+// lower corner, or shifted to cut the fewest small parts
+enum class Tiling { kCorner, kFitted };
 struct FractureSettings {
   FractureMode mode;
   double element_size;  // m: a square's side, or the distance between neighbouring hexagons' centres
   ElementShape element_shape;
+  Tiling tiling;
   double lattice_angle;  // rad, the element grid's turn from a floe's principal axes (yaw)
   double cfm;           // -, Bullet units
   double erp;           // -

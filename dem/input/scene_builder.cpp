@@ -319,6 +319,7 @@ Scene make_scene(const Scenario& sc) {
   s.fracture.element_size = real(sc, "fracture.element_size");
   s.fracture.element_shape =
       choice<ElementShape>(sc, "fracture.element_shape", {{"square", ElementShape::kSquare}, {"hexagon", ElementShape::kHexagon}});
+  s.fracture.tiling = choice<Tiling>(sc, "fracture.tiling", {{"corner", Tiling::kCorner}, {"fitted", Tiling::kFitted}});
   s.fracture.lattice_angle = real(sc, "fracture.lattice_angle") * kPi / 180.0;
   s.fracture.cfm = real(sc, "fracture.cfm");
   s.fracture.erp = real(sc, "fracture.erp");

@@ -183,3 +183,51 @@ TEST(OutlineLattice, RefusesWhatIsNoOutline) {
   EXPECT_THROW(fill_outline(square(1.0), 0.0, ElementShape::kSquare), std::invalid_argument);
   EXPECT_STREQ(element_shape_name(ElementShape::kHexagon), "hexagon");
 }
+
+namespace {
+// the elements' shares of a whole cell below `share`
+int parts_below(const OutlineLattice& l, double cell, double share) {
+  int n = 0;
+  for (const OutlineElement& e : l.elements) n += e.moments.area < share * cell - 1e-12;
+  return n;
+}
+}  // namespace
+
+TEST(OutlineLattice, AFittedTilingCutsNoSmallPartsFromThePapersFloe) {
+  // the paper's 0.6 m floe in hexagons 0.15 m across: anchored at its corner, the tiling cuts it
+  // into 14 whole hexagons, 7 halves, 2 quarters and 4 eighths (the eighths cannot join a
+  // neighbour in a convex body, so they stay elements); shifted so that its sides run along the
+  // cells' centre lines and flats, it leaves nothing below a quarter and at most two parts below
+  // half a cell. Either way the floe keeps its area, and joints lie inside the ice
+  const Polygon floe = rectangle(0.6, 0.6);
+  const double w = 0.15, cell = cell_area(w, ElementShape::kHexagon);
+  const OutlineLattice corner = fill_outline(floe, w, ElementShape::kHexagon, Tiling::kCorner);
+  const OutlineLattice fitted = fill_outline(floe, w, ElementShape::kHexagon, Tiling::kFitted);
+  EXPECT_EQ(parts_below(corner, cell, 0.25), 4);
+  EXPECT_EQ(parts_below(fitted, cell, 0.25), 0);
+  EXPECT_LE(parts_below(fitted, cell, 0.5), 2);
+  EXPECT_LT(fitted.elements.size(), corner.elements.size());
+  for (const OutlineLattice* l : {&corner, &fitted}) {
+    EXPECT_NEAR(elements_area(*l) + l->dropped_area, 0.36, 1e-12);
+    EXPECT_EQ(l->dropped_area, 0.0);
+    for (const OutlineJoint& j : l->joints) EXPECT_TRUE(inside_or_on(floe, j.midpoint, 1e-12));
+  }
+  // the 0.20 m hexagons: the corner cuts parts of 1 % of a cell, too small to keep (their ice is
+  // dropped), and its smallest elements are quarters; fitted drops nothing, and its smallest
+  // element is above 0.4 of a cell
+  const double w2 = 0.2, cell2 = cell_area(w2, ElementShape::kHexagon);
+  const OutlineLattice corner2 = fill_outline(floe, w2, ElementShape::kHexagon, Tiling::kCorner);
+  const OutlineLattice fitted2 = fill_outline(floe, w2, ElementShape::kHexagon, Tiling::kFitted);
+  EXPECT_GT(corner2.dropped_area, 0.0);
+  EXPECT_EQ(fitted2.dropped_area, 0.0);
+  EXPECT_EQ(parts_below(corner2, cell2, 0.3), 2);
+  EXPECT_EQ(parts_below(fitted2, cell2, 0.4), 0);
+}
+
+TEST(OutlineLattice, AFittedTilingKeepsARectangleOfWholeSquares) {
+  // no shift cuts fewer parts than none: the rectangle stays the paper's 4 x 3 whole squares
+  const OutlineLattice l = fill_outline(rectangle(0.6, 0.45), 0.15, ElementShape::kSquare, Tiling::kFitted);
+  ASSERT_EQ(l.elements.size(), 12u);
+  for (const OutlineElement& e : l.elements) EXPECT_NEAR(e.moments.area, 0.0225, 1e-12);
+  EXPECT_EQ(l.joints.size(), 17u);
+}
