@@ -30,6 +30,8 @@ def record(mean, peak, distances, pieces=None, held=None):
                "sim_time_s": 200.0}
     if held is not None:
         summary["held_edge_overloads"] = held
+        summary["solver"] = {"capped_window_fraction": 0.25}
+        summary["breaks_by_mode"] = {"bending": len(distances) - 1, "compression": 0, "shear": 1}
     rec = {"summary": summary, "window": {"p99_fx_N": 0.8 * peak},
            "fracture_events": [{"distance": d} for d in distances]}
     if pieces is not None:
@@ -67,15 +69,19 @@ with tempfile.TemporaryDirectory() as tmp:
     text = "\n".join(level_ice_report.page(sweep, out, "unused"))
     check(any("friction.ice_structure=0.3" in s for s in seen), "the design loads are asked at the run's own sets")
     row = [line for line in text.splitlines() if line.startswith("| mu02 | 0.2 |")]
-    check(len(row) == 1 and "| 0.2 | 40.0 | 96.0 | 120.0 | 150.0 | 240.0 | 0.80 | 0.50 | 5 | 0.50 |" in row[0],
-          f"mu 0.2: max 120 over ISO 150 is 0.80, over Ralston 0.50, CPU at half real time: {row}")
+    check(len(row) == 1 and "| 0.2 | 40.0 | 96.0 | 120.0 | 150.0 | 240.0 | 0.80 | 0.50 | 5 | 0.50 | 25.0 % |" in row[0],
+          f"mu 0.2: max 120 over ISO 150 is 0.80, over Ralston 0.50, CPU at half real time, a quarter of "
+          f"the window's steps capped: {row}")
     row = [line for line in text.splitlines() if line.startswith("| mu03 | 0.3 |")]
     check(len(row) == 1 and "| 0.3 |" in row[0] and "| 0.75 |" in row[0], f"mu 0.3 against its own ISO load: {row}")
     lengths = [line for line in text.splitlines() if line.startswith("| mu02 | 5 |")]
-    check(len(lengths) == 1 and "| 0.300 | 0.200-0.400 | 0.68 | 7 |" in lengths[0],
-          f"breaking lengths: median 0.3 m against 1.11 x 0.4 m, 7 held-edge overloads: {lengths}")
-    check(any(line.startswith("| mu03 | 0 | n/a") and line.endswith("| n/a |") for line in text.splitlines()),
-          "a run without breaks says n/a, and n/a held-edge overloads when its summary has none")
+    check(len(lengths) == 1 and "| 0.300 | 0.200-0.400 | 0.68 | 7 | bending 4, shear 1 |" in lengths[0],
+          f"breaking lengths: median 0.3 m against 1.11 x 0.4 m, 7 held-edge overloads, the modes that "
+          f"broke: {lengths}")
+    check(any(line.startswith("| mu03 | 0 | n/a") and line.endswith("| n/a | n/a |") for line in text.splitlines()),
+          "a run without breaks says n/a, and n/a held-edge overloads and modes when its summary has none")
+    check(any(line.startswith("| mu03 | 0.3 |") and line.endswith("| n/a |") for line in text.splitlines()),
+          "a summary without a solver block says n/a capped")
     piece_row = [line for line in text.splitlines() if line.startswith("| mu02 | 12 |")]
     check(len(piece_row) == 1 and "0.0225 (0.0225-0.0450)" in piece_row[0] and "| 55.0 % |" in piece_row[0],
           f"the pieces' row: 12 pieces, median area and quartiles, 55 % in one-element pieces: {piece_row}")

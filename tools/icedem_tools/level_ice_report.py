@@ -46,22 +46,27 @@ def page(sweep, out, icedem):
         loads, why = design_loads(icedem, r)
         lc = loads["characteristic_length_m"] if loads else lc
         d = breaking_lengths(rec)
-        lengths.append((r.scenario, d, s.get("held_edge_overloads")))
+        lengths.append((r.scenario, d, s.get("held_edge_overloads"), s.get("breaks_by_mode")))
         piece_rows.append((r.scenario, rec.get("pieces")))
         cpu, sim = s.get("cpu_time_s"), s.get("sim_time_s")
         rows.append([r.scenario, f"{loads['friction']:g}" if loads else "n/a",
                      s.get("mean_fx_N"), w.get("p99_fx_N"), s.get("max_fx_N"),
                      loads["total_N"] if loads else None, loads["ralston_total_N"] if loads else None,
-                     s.get("breaks"), sim / cpu if cpu and sim else None, why])
+                     s.get("breaks"), sim / cpu if cpu and sim else None,
+                     (s.get("solver") or {}).get("capped_window_fraction"), why])
     if not rows:
         return L + ["No finished run yet.", ""]
 
-    L += ["| run | mu | mean | p99 | max | ISO 19906 | Ralston | max / ISO | max / Ralston | breaks | real time (CPU) |",
-          "|---|---|---|---|---|---|---|---|---|---|---|"]
-    for name_, mu, mean, p99, mx, iso, ral, breaks, rtf, why in rows:
+    L += ["| run | mu | mean | p99 | max | ISO 19906 | Ralston | max / ISO | max / Ralston | breaks | real time (CPU) "
+          "| window steps capped |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for name_, mu, mean, p99, mx, iso, ral, breaks, rtf, capped, why in rows:
         L.append(f"| {name_} | {mu} | {fmt(mean)} | {fmt(p99)} | {fmt(mx)} | {fmt(iso)} | {fmt(ral)} | "
                  f"{fmt(mx / iso if mx and iso else None, digits=2)} | {fmt(mx / ral if mx and ral else None, digits=2)} | "
-                 f"{breaks} | {fmt(rtf, digits=2)} |")
+                 f"{breaks} | {fmt(rtf, digits=2)} | {'n/a' if capped is None else f'{100 * capped:.1f} %'} |")
+    L += ["", "Window steps capped: the share of the analysis window's steps whose solve stopped at "
+          "solver.method_iterations above its merit tolerance (the summary's solver block): the loads of those "
+          "steps are not converged, and a run with many of them is labelled so, not corrected."]
     for name_, *_, why in rows:
         if why:
             L.append(f"\n{name_}: no design loads ({why}).")
@@ -72,16 +77,17 @@ def page(sweep, out, icedem):
           "front is a wedge, not a beam, and field breaking lengths are shorter. Held-edge overloads: "
           "how often a joint between the free sheet and the held sheet reached its capacity (not broken: the "
           "held sheet's clamp, summary held_edge_overloads); many say the radius is too small.", "",
-          "| run | breaks | median m | quartiles m | median / (1.11 l_c) | held-edge overloads |",
-          "|---|---|---|---|---|---|"]
-    for name_, d, held in lengths:
+          "| run | breaks | median m | quartiles m | median / (1.11 l_c) | held-edge overloads | modes |",
+          "|---|---|---|---|---|---|---|"]
+    for name_, d, held, modes in lengths:
         held = "n/a" if held is None else str(held)
+        modes = ", ".join(f"{m} {n}" for m, n in (modes or {}).items() if n) or "n/a"
         if d.size == 0:
-            L.append(f"| {name_} | 0 | n/a | n/a | n/a | {held} |")
+            L.append(f"| {name_} | 0 | n/a | n/a | n/a | {held} | {modes} |")
             continue
         q1, med, q3 = np.quantile(d, [0.25, 0.5, 0.75])
         L.append(f"| {name_} | {d.size} | {med:.3f} | {q1:.3f}-{q3:.3f} | "
-                 f"{fmt(med / (1.11 * lc) if lc else None, digits=2)} | {held} |")
+                 f"{fmt(med / (1.11 * lc) if lc else None, digits=2)} | {held} | {modes} |")
     L += ["", "The pieces broken off the sheet at the run's end (every fragment but the sheet, `scripts/piece_sizes`): "
           "their true areas and equivalent diameters, and the share of the broken-off area in pieces of one "
           "element, the lattice's grain.", ""]
