@@ -171,7 +171,7 @@ struct FractureSettings {
   FractureMode mode;
   double element_size;  // m: a square's side, or the distance between neighbouring hexagons' centres
   ElementShape element_shape;
-  Tiling tiling;
+  Tiling tiling = Tiling::kCorner;
   double lattice_angle;  // rad, the element grid's turn from a floe's principal axes (yaw)
   double cfm;           // -, Bullet units
   double erp;           // -
