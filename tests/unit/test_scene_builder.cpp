@@ -31,6 +31,7 @@ std::string chosen(const Scene& s, const std::string& key) {
   if (key == "validation.case") return std::to_string(static_cast<int>(s.validation.kind));
   if (key == "water.buoyancy") return std::to_string(s.water.linear_buoyancy);
   if (key == "fracture.element_shape") return std::to_string(static_cast<int>(s.fracture.element_shape));
+  if (key == "fracture.tiling") return std::to_string(static_cast<int>(s.fracture.tiling));
   if (key == "ice.cover") return std::to_string(static_cast<int>(s.ice.cover));
   return "";  // a choice key this test does not know: it fails below
 }
