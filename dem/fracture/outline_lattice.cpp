@@ -205,9 +205,8 @@ OutlineLattice fill_outline(const Polygon& outline_in, double element_size, Elem
   const double w = element_size, eps = 1e-9 * std::max(w, (hi - lo).maxCoeff());
 
   // each cell's part of the outline: the tiling anchored at the box's lower corner, or, fitted,
-  // shifted by the one of kShifts x kShifts anchors over a period of the tiling (squares: w by w;
-  // hexagons: 1.5 R by w, as a shift of (1.5 R, w / 2) gives the same tiling) that cuts the
-  // fewest small parts; ties keep the earlier, so a rectangle of whole elements keeps the corner
+  // shifted by the one of anchor_shifts' anchors that cuts least (badness); the corner is tried
+  // first and ties keep the earlier, so a rectangle of whole elements keeps the corner
   Cut cut = cut_outline(outline, lo, hi, Eigen::Vector2d::Zero(), w, shape, eps);
   if (tiling == Tiling::kFitted) {
     const double cell = cell_area(w, shape);

@@ -7,8 +7,8 @@
 // element_size, or hexagons whose neighbouring centres are element_size apart, flat faces
 // towards +-z), the grid anchored at the outline's lower corner (x, z least) or, fitted
 // (fracture.tiling), shifted to where it cuts the fewest parts below a quarter and below half a
-// cell, and each cell is cut to the part of the outline inside it. An element keeps the true area, centroid and
-// second moments of its part (its mass and inertia follow), and two elements are joined
+// cell, and each cell is cut to the part of the outline inside it. An element keeps the true
+// area, centroid and second moments of its part (its mass and inertia follow), and two elements are joined
 // where their parts share a stretch of their cells' common face, with that stretch's length
 // (a joint's capacities scale with it, eqs. 1-3). A part smaller than `min_fraction` of a
 // cell joins the neighbour it shares the longest face with, if the two make a convex body (a
