@@ -152,6 +152,9 @@ Cut cut_outline(const Polygon& outline, const Eigen::Vector2d& lo, const Eigen::
 // or on a line through its vertices (a side there cuts cells into halves or leaves them whole),
 // and a grid of kShifts x kShifts. The aligned ones found the best of a 24 x 12 grid on the
 // paper's 0.6 m floes, which a grid of 8 x 8 alone missed (the best cut is a sharp optimum).
+// Each anchor once, the corner (no shift) left out, since each is a cut of the whole outline: the
+// sides of a box a whole number of cells across give the same anchors, and the grid holds the
+// corner and some aligned ones.
 std::vector<Eigen::Vector2d> anchor_shifts(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double w,
                                            ElementShape shape) {
   const double R = w / std::sqrt(3.0);
@@ -167,10 +170,16 @@ std::vector<Eigen::Vector2d> anchor_shifts(const Eigen::Vector2d& lo, const Eige
   for (double side : {lo.y(), hi.y()})
     for (double k : across_z) zs.push_back(wrap(lo.y() - side + k, period.y()));
   std::vector<Eigen::Vector2d> shifts;
+  auto add = [&](const Eigen::Vector2d& shift) {
+    // exactly the same only: a shift off by round-off cuts the same parts to round-off, and
+    // where two mirror cuts tie, that round-off picks one of them
+    if (shift == Eigen::Vector2d::Zero() || std::find(shifts.begin(), shifts.end(), shift) != shifts.end()) return;
+    shifts.push_back(shift);
+  };
   for (double x : xs)
-    for (double z : zs) shifts.emplace_back(x, z);
+    for (double z : zs) add({x, z});
   for (int i = 0; i < kShifts; ++i)
-    for (int j = 0; j < kShifts; ++j) shifts.emplace_back(period.x() * i / kShifts, period.y() * j / kShifts);
+    for (int j = 0; j < kShifts; ++j) add({period.x() * i / kShifts, period.y() * j / kShifts});
   return shifts;
 }
 
