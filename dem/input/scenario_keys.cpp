@@ -330,11 +330,13 @@ std::vector<KeySpec> make_keys() {
                      "its short faces, and broke 1.8-3.5 times as often as whole hexagons' on the paper's floes; "
                      "docs/model/breakage.md). A rectangle of whole squares keeps the corner"));
   k.push_back(real("fracture.strength_scale", "-", 1.0, 1.0e-3, 1.0e3,
-                   "factor on every joint's capacities (eqs. 1-3, each face's): 1 for squares, whose lattice "
+                   "factor on every joint's bending capacity (eq. 3, each face's): 1 for squares, whose lattice "
                    "breaks at the bending strength along its grid (the cantilevers); a hexagonal lattice is "
-                   "stronger across any line than its faces' capacities say (the wide cantilever: 1.20-1.40 "
-                   "times at 0.15 m), and its calibrated scale brings its bending strength to the ice's in every "
-                   "direction (docs/model/breakage.md, \"Strength by direction\")"));
+                   "stronger in bending across any line than its faces' capacities say (the wide cantilever: "
+                   "1.20-1.40 times at 0.15 m), and its calibrated scale brings its bending strength to the ice's "
+                   "in every direction. Compression and shear (eqs. 1-2) are not scaled: in the plate's plane "
+                   "the unscaled hexagons break at the compressive strength along x as the squares do "
+                   "(docs/model/breakage.md, \"Strength by direction\")"));
   k.push_back(real("fracture.lattice_angle", "deg", 0.0, -180.0, 180.0,
                    "turn of the element grid from each breakable floe's principal axes, about the vertical as a "
                    "yaw: 0 lays the grid along them (the paper's); any other angle makes every breakable floe an "
@@ -439,6 +441,10 @@ std::vector<KeySpec> make_keys() {
   k.push_back(positive("validation.beam_width", "m", 0.45, 100.0,
                        "wide_cantilever: the plate's width along z, the length of the line that breaks"));
   k.push_back(positive("validation.load_rate", "N/s", 0.2, 1.0e4, "cantilever: growth rate of the tip load"));
+  k.push_back(choice("validation.plate_load", "down", {"down", "along"},
+                     "wide_cantilever: down, the far edge's load bends the plate (its bending strength); along, "
+                     "it pushes the plate towards its clamped edge in its plane (its compressive strength, "
+                     "the first joint to break in compression or shear)"));
   k.push_back(real("validation.tip_speed", "m/s", 0.0, 0.0, 10.0,
                    "cantilever: > 0 floats the beam and pushes its tip down at this speed (the "
                    "paper's test, eq. 6 with the fragment's buoyancy); 0: a load ramp in air"));

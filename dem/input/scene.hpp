@@ -177,7 +177,7 @@ struct FractureSettings {
   double erp;           // -
   bool elastic_joints;  // joint rows are springs of the ice's modulus (fracture.joint_stiffness = "elastic")
   double stiffness_scale;  // -, factor on the elastic rows' stiffness
-  double strength_scale;   // -, factor on every joint's capacities
+  double strength_scale;   // -, factor on every joint's bending capacity (eq. 3)
   double characteristic_length;  // m, l_c = (D / (rho_w g))^(1/4) of the ice ("auto")
   int joint_iterations;          // PGS iterations of the joints; 0: solver.iterations
   double load_filter_time;       // s, low-pass time constant of joint loads; 0: raw
@@ -212,6 +212,9 @@ struct StatsSettings {
 };
 
 enum class ValidationKind { kNone, kPlateDeflection, kCantilever, kWideCantilever };
+/// Where the wide cantilever's load points: down (the plate bends) or along the plate towards
+/// its clamped edge (in-plane compression)
+enum class PlateLoad { kDown, kAlong };
 struct ValidationSettings {
   ValidationKind kind;
   double plate_size;  // m
@@ -222,6 +225,7 @@ struct ValidationSettings {
   double beam_width;   // m, wide cantilever: across (z)
   double load_rate;   // N/s, cantilever tip load growth
   double tip_speed;   // m/s, floating cantilever pushed down at the tip; 0: load ramp in air
+  PlateLoad plate_load;  // wide cantilever: bending (down) or in-plane compression (along)
 };
 
 /// Everything one run needs, validated and in SI units.

@@ -346,6 +346,8 @@ Scene make_scene(const Scenario& sc) {
   s.validation.beam_width = real(sc, "validation.beam_width");
   s.validation.load_rate = real(sc, "validation.load_rate");
   s.validation.tip_speed = real(sc, "validation.tip_speed");
+  s.validation.plate_load =
+      choice<PlateLoad>(sc, "validation.plate_load", {{"down", PlateLoad::kDown}, {"along", PlateLoad::kAlong}});
 
   // a lattice is a whole number of elements across; floes of any size stay rigid
   if (s.ice.cover == IceCover::kFloes && s.layout.size_spread > 0 && generated_floes_breakable(s))

@@ -11,6 +11,13 @@
 // root line's joints hold B T^2 sigma_b / 6 between them (eq. 3 summed), so sigma is the
 // bending strength; a hexagonal grid's root line zig-zags, and sigma / sigma_b is how much of
 // the squares' strength it keeps in that direction (docs/model/breakage.md).
+//
+// With validation.plate_load = "along" the far edge's load pushes the plate towards its clamped
+// edge in its plane instead: every section across the plate carries the load P, and the plate's
+// compressive strength in that direction is sigma = P / (B T) at the first break, wherever it is.
+// For squares along the grid each face of a section holds L_e T_e sigma_c (eq. 1), so sigma is
+// the compressive strength; a hexagonal grid's faces lie at 30 degrees to the load or along it,
+// and carry the load partly in shear (eq. 2).
 #pragma once
 
 #include <vector>

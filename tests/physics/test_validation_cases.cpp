@@ -203,3 +203,55 @@ TEST(WideCantilever, CalibratedHexagonsBreakAtTheBendingStrengthInEveryDirection
     EXPECT_EQ(r.details["failure_mode"].get<std::string>(), "bending") << a << " deg";
   }
 }
+
+// The wide cantilever pushed along its plane (validation.plate_load = "along";
+// scenarios/validation/plate_compression_015.toml): every section across the plate carries the
+// load, and sigma = P / (B T) at the first break is the plate's compressive strength in that
+// direction of the grid
+namespace {
+
+double compression_ratio(const std::string& scenario, const std::string& shape, double angle_deg,
+                         std::vector<std::string> sets = {}) {
+  sets.insert(sets.end(), {"validation.plate_load=\"along\"", "fracture.element_shape=\"" + shape + "\"",
+                           "fracture.lattice_angle=" + std::to_string(angle_deg)});
+  const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/" + scenario, sets);
+  const ValidationResult r = run_validation_case(scene);
+  EXPECT_TRUE(r.value) << shape << " at " << angle_deg << " deg: " << r.note;
+  return r.value ? strength_ratio(r.to_json()) : 0.0;
+}
+
+}  // namespace
+
+// Squares along the grid: the root line's three faces hold L_e T_e sigma_c each (eq. 1), so the
+// plate breaks there, in compression, at the compressive strength: within 3 % (the load grows
+// 2 N a step, 0.1 % of the 2,162 N at the break; measured +0.1 %)
+TEST(PlateCompression, SquaresAlongTheGridBreakAtTheCompressiveStrength) {
+  const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/plate_compression_015.toml");
+  const ValidationResult r = run_validation_case(scene);
+  ASSERT_TRUE(r.value) << r.note;
+  EXPECT_NEAR(strength_ratio(r.to_json()), 1.0, 0.03) << r.to_json().dump();
+  EXPECT_EQ(r.details["failure_mode"].get<std::string>(), "compression");
+  EXPECT_TRUE(r.details["at_root"].get<bool>());
+}
+
+// The hexagons at their calibrated scales (wide_cantilever_015_hexagon.toml: the strength scale
+// 0.787 is on the bending capacity only) meet the compressive strength along x, the direction the
+// structure pushes them, as the squares do along their grid: within the cantilevers' 10 %
+// (measured 0.95 on this 1.2 x 0.9 m plate, 1.07 on the 0.9 x 0.45 m one; with the scale on
+// every capacity, as before, 0.75). Off the grid the first break comes earlier, in shear, for
+// both lattices (docs/model/breakage.md, "In the plate's plane": squares 0.49-0.75 at 10-45
+// degrees on this plate, hexagons 0.60-0.71 at 10-30); the hexagons' weakest direction is no
+// weaker than the squares' (a margin of 0.05 against the measured 0.11, far beyond the 0.1 % of
+// a step's load growth)
+TEST(PlateCompression, CalibratedHexagonsBreakAtTheCompressiveStrengthAlongXAndNoWeakerThanSquaresOffIt) {
+  const std::vector<std::string> hexagon_plate{"validation.load_rate=200"};
+  const std::string file = "wide_cantilever_015_hexagon.toml";
+  EXPECT_NEAR(compression_ratio(file, "hexagon", 0, hexagon_plate), 1.0, 0.10);
+  double hexagons = 1e9, squares = 1e9;
+  for (double a : {10.0, 20.0, 30.0}) hexagons = std::min(hexagons, compression_ratio(file, "hexagon", a, hexagon_plate));
+  for (double a : {10.0, 20.0, 30.0, 45.0})
+    squares = std::min(squares, compression_ratio(file, "square", a, {"validation.load_rate=200", "fracture.strength_scale=1"}));
+  EXPECT_GT(hexagons, squares + 0.05);
+  std::printf("plate in compression, weakest direction's strength / sigma_c: hexagons %.2f, squares %.2f\n", hexagons,
+              squares);
+}

@@ -55,6 +55,13 @@ with tempfile.TemporaryDirectory() as tmp:
     rows = [line for line in text.splitlines() if line.startswith("| lattice max load")]
     check(len(rows) == 1 and "**beyond**" in rows[0] and "+40 %" in rows[0],
           f"the max moved by 40 % in every seed is beyond its tolerance: {rows}")
+    # against dt/2 as the baseline, the scenario's default is 40 % / 1.4 lower: -29 %
+    text = "\n".join(convergence_check.page(sweep, os.path.join(tmp, "runs"), baseline="dt_half"))
+    rows = [line for line in text.splitlines() if line.startswith("| lattice max load")]
+    check('Baseline: "dt_half"' in text and len(rows) == 1 and "-29 %" in rows[0] and "scenario_default" in rows[0],
+          f"--baseline judges the other numerics against it: {rows}")
+    text = "\n".join(convergence_check.page(sweep, os.path.join(tmp, "runs"), baseline="dt_tenth"))
+    check('No finished run of the baseline numerics "dt_tenth"' in text, "a baseline without runs: the page says so")
     # the guard: the page is not written over the sweep file
     r = subprocess.run([os.path.join(ROOT, "scripts", "convergence_check"), sweep, "--report", sweep],
                        capture_output=True, text=True)

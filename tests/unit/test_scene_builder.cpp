@@ -29,6 +29,7 @@ std::string chosen(const Scene& s, const std::string& key) {
   if (key == "fracture.mode") return std::to_string(static_cast<int>(s.fracture.mode));
   if (key == "activation.islands") return std::to_string(static_cast<int>(s.activation.islands));
   if (key == "validation.case") return std::to_string(static_cast<int>(s.validation.kind));
+  if (key == "validation.plate_load") return std::to_string(static_cast<int>(s.validation.plate_load));
   if (key == "water.buoyancy") return std::to_string(s.water.linear_buoyancy);
   if (key == "fracture.element_shape") return std::to_string(static_cast<int>(s.fracture.element_shape));
   if (key == "fracture.tiling") return std::to_string(static_cast<int>(s.fracture.tiling));
