@@ -421,6 +421,13 @@ Scene make_scene(const Scenario& sc) {
     if (const double n = s.validation.plate_size / s.fracture.element_size; !whole(n))
       fail_key(sc, "validation.plate_size", fmt::format("is not a whole number of elements of fracture.element_size = {} m "
                                                         "({:.3f})", s.fracture.element_size, n));
+  } else if (s.validation.kind == ValidationKind::kPlateDeflection &&
+             s.validation.plate_size < s.fracture.element_size * (1 - 1e-9)) {
+    // hexagons or a turned grid: the plate is cut from the tiling at its outline, which needs room
+    // for an element's centre at least (smaller, the cut has no element to load)
+    fail_key(sc, "validation.plate_size",
+             fmt::format("at least fracture.element_size = {:g} m for a plate of hexagons or of a turned grid",
+                         s.fracture.element_size));
   }
   if (s.stats.lowpass_hz > 0 && s.stats.lowpass_hz >= 0.5 / s.time.dt)
     fail_key(sc, "stats.lowpass_hz", fmt::format("must be below the Nyquist frequency 1/(2 dt) = {} Hz", 0.5 / s.time.dt));
