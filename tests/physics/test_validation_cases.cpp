@@ -136,10 +136,12 @@ TEST(Breakable, FloatingCantileverWithElasticJointsBreaksAtTheRootInBending) {
 // by the direction of the element grid (fracture.lattice_angle)
 namespace {
 
-nlohmann::json wide_cantilever(const std::string& shape, double angle_deg) {
-  const Scene scene =
-      load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/wide_cantilever_015.toml",
-                 {"fracture.element_shape=\"" + shape + "\"", "fracture.lattice_angle=" + std::to_string(angle_deg)});
+// `scenario` (in scenarios/validation/) with the grid's shape and angle, and `sets` beside them
+nlohmann::json wide_cantilever(const std::string& shape, double angle_deg,
+                               const std::string& scenario = "wide_cantilever_015.toml",
+                               std::vector<std::string> sets = {}) {
+  sets.insert(sets.end(), {"fracture.element_shape=\"" + shape + "\"", "fracture.lattice_angle=" + std::to_string(angle_deg)});
+  const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/" + scenario, sets);
   const ValidationResult r = run_validation_case(scene);
   EXPECT_TRUE(r.value) << shape << " at " << angle_deg << " deg: " << r.note;
   return r.to_json();
@@ -212,12 +214,8 @@ namespace {
 
 double compression_ratio(const std::string& scenario, const std::string& shape, double angle_deg,
                          std::vector<std::string> sets = {}) {
-  sets.insert(sets.end(), {"validation.plate_load=\"along\"", "fracture.element_shape=\"" + shape + "\"",
-                           "fracture.lattice_angle=" + std::to_string(angle_deg)});
-  const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/validation/" + scenario, sets);
-  const ValidationResult r = run_validation_case(scene);
-  EXPECT_TRUE(r.value) << shape << " at " << angle_deg << " deg: " << r.note;
-  return r.value ? strength_ratio(r.to_json()) : 0.0;
+  sets.push_back("validation.plate_load=\"along\"");
+  return strength_ratio(wide_cantilever(shape, angle_deg, scenario, sets));
 }
 
 }  // namespace
