@@ -1,13 +1,16 @@
 // A lattice's folded mass matrix (dem/contact/lattice_mass.hpp), dense against sparse, at
 // the sizes runs meet: what a step of the contact solve pays for it. Per island and step
-// the method factorises Mt once (the dense form also inverts it) and then applies Mt^-1
-// once per gradient step (tens to hundreds a step). The lattice is a grid of square
+// the method factorises Mt once and then applies Mt^-1 once per gradient step (tens to
+// hundreds a step): through a solve over the lattice, or through W, Mt^-1's block on the
+// elements contacts touch (computed once, then a small dense product a step). The lattice is a grid of square
 // elements of 0.15 m joined to their four neighbours, each joint a stiff 6 x 6 block as a
 // fixed joint's rows fold in (J^T C^-1 J). Its pattern is what the cost follows.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "dem/contact/lattice_mass.hpp"
 
@@ -46,7 +49,7 @@ void fill(LatticeMass& mass, int side) {
 
 LatticeMass::Form form_of(int64_t f) { return f ? LatticeMass::Form::kSparse : LatticeMass::Form::kDense; }
 
-// the set-up of a step: Mt assembled and factorised (the dense form inverted)
+// the set-up of a step: Mt assembled and factorised
 void BM_LatticeMassFactorise(benchmark::State& s) {
   const int side = static_cast<int>(s.range(0));
   for (auto _ : s) {
@@ -74,6 +77,51 @@ void BM_LatticeMassSolve(benchmark::State& s) {
   s.SetLabel(std::to_string(side * side) + (s.range(1) ? " elements, sparse" : " elements, dense"));
 }
 
+// the touched elements of a lattice: k spread over it (every n/k-th)
+std::vector<int> touched(int n, int k) {
+  std::vector<int> t;
+  for (int e = 0; e < k; ++e) t.push_back(e * n / k);
+  return t;
+}
+
+// W of k touched elements, once per island and step (after the factorisation)
+void BM_LatticeMassRestrictedSetup(benchmark::State& s) {
+  const int side = static_cast<int>(s.range(0)), k = static_cast<int>(s.range(2));
+  LatticeMass mass(side * side, form_of(s.range(1)));
+  fill(mass, side);
+  mass.factorise();
+  const std::vector<int> t = touched(side * side, k);
+  for (auto _ : s) benchmark::DoNotOptimize(mass.restricted_inverse(t).data());
+  s.SetLabel(std::to_string(side * side) + (s.range(1) ? " elements, sparse, " : " elements, dense, ") +
+             std::to_string(k) + " touched");
+}
+
+// one gradient step's W J^T x on the touched elements
+void BM_LatticeMassRestrictedApply(benchmark::State& s) {
+  const int side = static_cast<int>(s.range(0)), k = static_cast<int>(s.range(2));
+  LatticeMass mass(side * side, form_of(s.range(1)));
+  fill(mass, side);
+  mass.factorise();
+  const Eigen::MatrixXd w = mass.restricted_inverse(touched(side * side, k));
+  std::mt19937 random(1);
+  std::normal_distribution<double> g;
+  Eigen::VectorXd impulse(6 * k), velocity(6 * k);
+  for (int i = 0; i < impulse.size(); ++i) impulse(i) = g(random);
+  for (auto _ : s) {
+    velocity.noalias() = w * impulse;
+    benchmark::DoNotOptimize(velocity.data());
+  }
+  s.SetLabel(std::to_string(side * side) + " elements, " + std::to_string(k) + " touched");
+}
+
+// the 0.15 m squares' floe (16 elements, dense) and a hexagon floe or plate (sparse), with
+// 1 to 16 elements touched
+void touched_sizes(benchmark::internal::Benchmark* b) {
+  for (int side : {4, 6, 18})
+    for (int k : {1, 2, 4, 8, 16})
+      if (k <= side * side) b->Args({side, side > 4 ? 1 : 0, k});
+}
+
 // sides 3, 4 (the 0.15 m squares' 16), 5 (25, just above the dense limit), 6, 7, 10, 18 (the
 // 2.7 m validation plate's 324; dense only up to 10: its inverse alone is 0.9 GB a second)
 void sizes(benchmark::internal::Benchmark* b) {
@@ -86,3 +134,5 @@ void sizes(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_LatticeMassFactorise)->Apply(sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LatticeMassSolve)->Apply(sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LatticeMassRestrictedSetup)->Apply(touched_sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LatticeMassRestrictedApply)->Apply(touched_sizes)->Unit(benchmark::kMicrosecond);

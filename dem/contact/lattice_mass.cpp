@@ -5,8 +5,9 @@
 
 namespace icedem {
 
-struct LatticeMass::Sparse {
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> cholesky;
+struct LatticeMass::Factor {
+  Eigen::LLT<Eigen::MatrixXd> dense;
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> sparse;
 };
 
 LatticeMass::LatticeMass(int elements, Form form)
@@ -33,34 +34,46 @@ void LatticeMass::add(int i, int j, const Eigen::Matrix<double, 6, 6>& m) {
 }
 
 bool LatticeMass::factorise() {
+  factor_ = std::make_unique<Factor>();
   if (!sparse()) {
-    const Eigen::LLT<Eigen::MatrixXd> llt(dense_);
-    if (llt.info() != Eigen::Success) return false;
-    dense_ = llt.solve(Eigen::MatrixXd::Identity(6 * n_, 6 * n_));
-    return true;
+    factor_->dense.compute(dense_);
+    dense_.resize(0, 0);  // the factor holds what is needed
+    return factor_->dense.info() == Eigen::Success;
   }
   Eigen::SparseMatrix<double> Mt(6 * n_, 6 * n_);
   Mt.setFromTriplets(entries_.begin(), entries_.end());  // sums the joints' contributions
   entries_.clear();
   entries_.shrink_to_fit();
-  sparse_ = std::make_unique<Sparse>();
-  sparse_->cholesky.compute(Mt);
-  return sparse_->cholesky.info() == Eigen::Success;
+  factor_->sparse.compute(Mt);
+  return factor_->sparse.info() == Eigen::Success;
 }
 
 void LatticeMass::solve(const Eigen::VectorXd& impulse, Eigen::VectorXd& velocity) const {
   if (!sparse())
-    velocity.noalias() = dense_ * impulse;
+    velocity = factor_->dense.solve(impulse);
   else
-    velocity = sparse_->cholesky.solve(impulse);
+    velocity = factor_->sparse.solve(impulse);
 }
 
-Eigen::Matrix<double, 6, 6> LatticeMass::inverse_block(int k) const {
-  if (!sparse()) return dense_.block<6, 6>(6 * k, 6 * k);
-  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(6 * n_, 6);
-  unit.block<6, 6>(6 * k, 0).setIdentity();
-  const Eigen::MatrixXd columns = sparse_->cholesky.solve(unit);
-  return columns.block<6, 6>(6 * k, 0);
+Eigen::MatrixXd LatticeMass::restricted_inverse(const std::vector<int>& elements) const {
+  const int k = static_cast<int>(elements.size());
+  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(6 * n_, 6 * k);
+  for (int e = 0; e < k; ++e) unit.block<6, 6>(6 * elements[e], 6 * e).setIdentity();
+  if (!sparse()) {
+    // Mt = L L^T, so E^T Mt^-1 E = (L^-1 E)^T (L^-1 E): one forward solve, half of a
+    // solve's work, and W symmetric by construction
+    factor_->dense.matrixL().solveInPlace(unit);
+    Eigen::MatrixXd w(6 * k, 6 * k);
+    w.setZero();
+    w.selfadjointView<Eigen::Lower>().rankUpdate(unit.transpose());
+    return w.selfadjointView<Eigen::Lower>();
+  }
+  const Eigen::MatrixXd columns = factor_->sparse.solve(unit);
+  Eigen::MatrixXd w(6 * k, 6 * k);
+  for (int e = 0; e < k; ++e) w.middleRows<6>(6 * e) = columns.middleRows<6>(6 * elements[e]);
+  return w;
 }
+
+Eigen::Matrix<double, 6, 6> LatticeMass::inverse_block(int k) const { return restricted_inverse({k}); }
 
 }  // namespace icedem

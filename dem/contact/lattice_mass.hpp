@@ -4,12 +4,16 @@
 // The contact methods fold a lattice's joints this way so that their stiff rows are not
 // iterated (dem/contact/apgd.cpp says what it saves). Mt changes every step (the joints'
 // rows follow the elements), so it is factorised every step. A small lattice (up to
-// kDenseElements) keeps a dense inverse: one product a step of the method, as fast as a
-// factor's two triangular solves at that size and bit for bit what the runs have computed
-// since folding came in. A larger one is factorised sparse (Eigen's simplicial Cholesky,
-// AMD ordering): Mt has a 6 x 6 block for each element and each joined pair, so a floe of
-// many elements (a 0.6 m floe of 0.15 m hexagons, a validation plate of 324 elements)
-// costs about the square of its elements' neighbours per element, not the cube of its size.
+// kDenseElements) is factorised dense (Cholesky); a larger one sparse (Eigen's simplicial
+// Cholesky, AMD ordering): Mt has a 6 x 6 block for each element and each joined pair, so a
+// floe of many elements (a 0.6 m floe of 0.15 m hexagons, a validation plate of 324
+// elements) costs about the square of its elements' neighbours per element, not the cube of
+// its size.
+//
+// A contact method needs Mt^-1 only where contacts act: the impulses of an iteration fall
+// on the elements contacts touch, and only those elements' velocities enter the contacts'
+// rows. restricted_inverse() gives that block of Mt^-1 (6 k rows for k touched elements),
+// which an iteration applies in place of a solve over the whole lattice.
 #pragma once
 
 #include <memory>
@@ -22,7 +26,7 @@ namespace icedem {
 
 class LatticeMass {
  public:
-  // the largest lattice kept dense: 144 rows (a 0.6 m floe of 0.15 m squares has 16
+  // the largest lattice factorised dense: 144 rows (a 0.6 m floe of 0.15 m squares has 16
   // elements)
   static constexpr int kDenseElements = 24;
 
@@ -45,17 +49,21 @@ class LatticeMass {
   bool factorise();
   // velocity = Mt^-1 impulse, stacked per element
   void solve(const Eigen::VectorXd& impulse, Eigen::VectorXd& velocity) const;
+  // the block of Mt^-1 on the listed elements (rows and columns in their order, six per
+  // element): W with v_k = W i_k when the impulse i falls on those elements alone. Dense:
+  // Y = L^-1 E (one triangular solve of 6 k columns), W = Y^T Y; sparse: 6 k solves.
+  Eigen::MatrixXd restricted_inverse(const std::vector<int>& elements) const;
   // element k's 6 x 6 block on the diagonal of Mt^-1 (what a contact on it sees of the
-  // lattice's mass); a sparse factor solves for its six columns
+  // lattice's mass)
   Eigen::Matrix<double, 6, 6> inverse_block(int k) const;
 
  private:
-  struct Sparse;
+  struct Factor;
   int n_;
   bool sparse_form_;
-  Eigen::MatrixXd dense_;  // Mt, then Mt^-1 (dense lattices)
+  Eigen::MatrixXd dense_;                        // Mt (dense lattices), until factorised
   std::vector<Eigen::Triplet<double>> entries_;  // Mt's entries (sparse lattices)
-  std::unique_ptr<Sparse> sparse_;
+  std::unique_ptr<Factor> factor_;
 };
 
 }  // namespace icedem

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <vector>
 
 #include <Eigen/Cholesky>
 
@@ -62,6 +63,18 @@ void expect_the_inverse(int n) {
     const Eigen::Matrix<double, 6, 6> block = inverse.block<6, 6>(6 * k, 6 * k);
     EXPECT_LT((mass.inverse_block(k) - block).norm(), 1e-5 * block.norm()) << "element " << k;
   }
+  // the block on a few elements, in the order asked (not the elements'), off-diagonal
+  // blocks included: what an iteration applies in place of a solve over the lattice
+  const std::vector<int> touched{n - 1, 0, n / 2};
+  const Eigen::MatrixXd w = mass.restricted_inverse(touched);
+  ASSERT_EQ(w.rows(), 18);
+  ASSERT_EQ(w.cols(), 18);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Eigen::Matrix<double, 6, 6> block = inverse.block<6, 6>(6 * touched[i], 6 * touched[j]);
+      const double size = inverse.block<6, 6>(6 * touched[i], 6 * touched[i]).norm();
+      EXPECT_LT((w.block<6, 6>(6 * i, 6 * j) - block).norm(), 1e-5 * size) << "elements " << touched[i] << ", " << touched[j];
+    }
 }
 
 TEST(LatticeMass, SmallLatticesAreDense) {
