@@ -165,7 +165,7 @@ void contact_products(const std::vector<ContactRows>& contacts, const std::vecto
 // stays an unknown.
 class DualProblem {
  public:
-  DualProblem(const ContactProblem& p, MeritKind merit_kind)
+  DualProblem(const ContactProblem& p, MeritKind merit_kind, LatticePatterns& patterns)
       : nb_(static_cast<int>(p.bodies.size())), nc_(static_cast<int>(p.contacts.size())), nj_all_(p.joint_rows()) {
     inv_mass_.resize(nb_);
     for (int i = 0; i < nb_; ++i) inv_mass_[i] = inverse_mass(p.bodies[i]);
@@ -174,7 +174,7 @@ class DualProblem {
     for (int i = 0; i < nb_; ++i) body_velocity_.segment<6>(6 * i) = p.bodies[i].free_velocity;
     const bool soft = nj_all_ > 0 && std::all_of(p.joints.begin(), p.joints.end(),
                                                  [](const ProblemJointRow& j) { return j.compliance > 0; });
-    folded_ = soft && fold(p);  // also puts each folded body's v_free_t in body_velocity_
+    folded_ = soft && fold(p, patterns);  // also puts each folded body's v_free_t in body_velocity_
     nj_ = folded_ ? 0 : nj_all_;
     start_velocity_ = body_velocity_;
     // the inverse masses the contacts' scaling sees: a folded body's block of Mt^-1 (a copy
@@ -387,10 +387,11 @@ class DualProblem {
     mutable Eigen::VectorXd impulse, velocity;  // scratch of row_velocities
   };
 
-  // A sparse lattice is iterated through its touched block when it has at most this many
-  // touched elements: W costs 6 solves per element once, a solve over the lattice costs one
-  // per gradient step (tens to hundreds an island). A dense one always is: W = Y^T Y costs a
-  // part of the inverse the dense form computed before, and applying it a part of its product.
+  // A sparse lattice is iterated through its touched block when at most this many of its
+  // elements, or at most half of them, are touched: W costs a forward solve of 6 columns per
+  // touched element once, a solve over the lattice costs one per gradient step (tens to
+  // hundreds an island). A dense one always is: W = Y^T Y costs a part of the inverse, and
+  // applying it a part of the product with the inverse.
   static constexpr int kRestrictedSparseElements = 8;
 
   // each group's touched elements, and W where it pays: a 0.6 m floe of 0.15 m squares (16
@@ -406,12 +407,13 @@ class DualProblem {
     for (const ProblemContact& k : p.contacts) touch(k.a), touch(k.b);
     for (Group& g : groups_) {
       std::sort(g.touched.begin(), g.touched.end());  // the elements' order, not the contacts'
-      g.restricted = !g.mass.sparse() || static_cast<int>(g.touched.size()) <= kRestrictedSparseElements;
+      const int touched = static_cast<int>(g.touched.size());
+      g.restricted = !g.mass.sparse() || touched <= kRestrictedSparseElements || 2 * touched <= g.mass.elements();
       if (g.restricted) g.w = g.mass.restricted_inverse(g.touched);
     }
   }
   // false (and nothing folded) if a group's Mt is not positive definite
-  bool fold(const ContactProblem& p) {
+  bool fold(const ContactProblem& p, LatticePatterns& patterns) {
     // the groups: bodies joined by joint rows (union-find)
     std::vector<int> parent(nb_);
     for (int i = 0; i < nb_; ++i) parent[i] = i;
@@ -476,13 +478,21 @@ class DualProblem {
         }
       }
     }
-    for (std::size_t g = 0; g < groups_.size(); ++g)
-      if (!groups_[g].mass.factorise()) {
+    // a lattice is known between solves by its first element's id (its bodies are in
+    // the order of their ids); a problem without ids (-1), or two lattices under one
+    // (a problem file's), factorises afresh, since a kept factor serves one lattice at a time
+    std::vector<long long> keys;
+    for (std::size_t g = 0; g < groups_.size(); ++g) {
+      const long long key = p.bodies[groups_[g].bodies.front()].id;
+      const bool keyed = key >= 0 && std::find(keys.begin(), keys.end(), key) == keys.end();
+      if (keyed) keys.push_back(key);
+      if (!groups_[g].mass.factorise(keyed ? &patterns : nullptr, key)) {
         groups_.clear();
         group_of_.clear();
         local_.clear();
         return false;
       }
+    }
     for (std::size_t g = 0; g < groups_.size(); ++g) {
       Group& group = groups_[g];
       Eigen::VectorXd v(ft[g].size());
@@ -559,7 +569,7 @@ bool model_above(const DualProblem& dual, const Eigen::VectorXd& change, const E
 }  // namespace
 
 SolverAnswer AcceleratedProjectedGradient::solve(const ContactProblem& p, const MethodOptions& options) {
-  const DualProblem dual(p, options.merit);
+  const DualProblem dual(p, options.merit, lattice_patterns_);
   const int n = dual.size(), nc = dual.contacts();
 
   Eigen::VectorXd x(n);

@@ -21,6 +21,7 @@
 // answer is the iterate with the lowest merit seen.
 #pragma once
 
+#include "dem/contact/lattice_mass.hpp"
 #include "dem/contact/method.hpp"
 
 namespace icedem {
@@ -30,6 +31,12 @@ class AcceleratedProjectedGradient : public ContactMethod {
   /// `sweeps` of the answer counts gradient steps (each one product with J M^-1 J^T,
   /// plus one per backtracking trial).
   SolverAnswer solve(const ContactProblem& problem, const MethodOptions& options) override;
+
+ private:
+  // the lattices' analysed patterns, kept from one solve to the next (a cache: the
+  // answers are those of a fresh analysis, so a run resumed from a checkpoint, which
+  // starts without it, repeats the run bit for bit)
+  LatticePatterns lattice_patterns_;
 };
 
 }  // namespace icedem

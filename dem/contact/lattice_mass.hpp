@@ -3,12 +3,12 @@
 //
 // The contact methods fold a lattice's joints this way so that their stiff rows are not
 // iterated (dem/contact/apgd.cpp says what it saves). Mt changes every step (the joints'
-// rows follow the elements), so it is factorised every step. A small lattice (up to
-// kDenseElements) is factorised dense (Cholesky); a larger one sparse (Eigen's simplicial
-// Cholesky, AMD ordering): Mt has a 6 x 6 block for each element and each joined pair, so a
-// floe of many elements (a 0.6 m floe of 0.15 m hexagons, a validation plate of 324
-// elements) costs about the square of its elements' neighbours per element, not the cube of
-// its size.
+// rows follow the elements), so it is factorised every step. A lattice of a few elements
+// (up to kDenseElements) is factorised dense (Cholesky); a larger one sparse (Eigen's
+// simplicial Cholesky, AMD ordering): Mt has a 6 x 6 block for each element and each
+// joined pair, so a floe of many elements costs about the square of its elements'
+// neighbours per element, not the cube of its size, and its pattern's analysis can be kept
+// from step to step (LatticePatterns).
 //
 // A contact method needs Mt^-1 only where contacts act: the impulses of an iteration fall
 // on the elements contacts touch, and only those elements' velocities enter the contacts'
@@ -17,6 +17,7 @@
 #pragma once
 
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,11 +25,34 @@
 
 namespace icedem {
 
+// The symbolic analyses of the sparse lattices a contact method has factorised (the
+// fill-reducing ordering and the factor's pattern), kept between its solves, one per
+// lattice. Mt's pattern follows the lattice's joints alone, which hold for many steps, so a
+// step pays the numeric factorisation alone (a 0.6 m floe of 0.15 m squares: about a fifth
+// of the whole factorisation, bench/micro/lattice_mass.cpp). A pattern that changed (a
+// joint broke, another problem under the same key) is analysed again: the factor is the
+// one a fresh analysis gives, bit for bit.
+class LatticePatterns {
+ public:
+  LatticePatterns();
+  ~LatticePatterns();
+  LatticePatterns(const LatticePatterns&) = delete;
+  LatticePatterns& operator=(const LatticePatterns&) = delete;
+  std::size_t size() const { return kept_.size(); }
+
+ private:
+  friend class LatticeMass;
+  struct Kept;
+  std::unordered_map<long long, std::unique_ptr<Kept>> kept_;
+};
+
 class LatticeMass {
  public:
-  // the largest lattice factorised dense: 144 rows (a 0.6 m floe of 0.15 m squares has 16
-  // elements)
-  static constexpr int kDenseElements = 24;
+  // the largest lattice factorised dense. With the pattern kept, a grid of 0.15 m squares
+  // costs (assembly and factorisation, bench/micro/lattice_mass.cpp, 2026-11-27): 4
+  // elements 2.4 us dense, 5.1 us sparse; 9 (a 0.6 m floe of 0.20 m squares) 16 and 17 us;
+  // 16 (of 0.15 m squares) 71 and 36 us. Until then it was 24, the limit for a dense inverse.
+  static constexpr int kDenseElements = 9;
 
   // which form: by size (kDenseElements), or one of the two (the benchmark that chose
   // kDenseElements measures both at every size: bench/micro/lattice_mass.cpp)
@@ -45,8 +69,11 @@ class LatticeMass {
   // Mt's block of elements i and j += m (i == j: the element's own; a joint adds both
   // (i, j) and (j, i)). Before factorise().
   void add(int i, int j, const Eigen::Matrix<double, 6, 6>& m);
-  // factorise Mt; false if it is not positive definite
-  bool factorise();
+  // factorise Mt; false if it is not positive definite. A sparse Mt reuses the analysis
+  // kept in `patterns` under `key` (the caller's name for the lattice, say its first
+  // element's id) when its pattern is the same, and keeps its own there; `patterns` must
+  // outlive this object.
+  bool factorise(LatticePatterns* patterns = nullptr, long long key = 0);
   // velocity = Mt^-1 impulse, stacked per element
   void solve(const Eigen::VectorXd& impulse, Eigen::VectorXd& velocity) const;
   // the block of Mt^-1 on the listed elements (rows and columns in their order, six per
@@ -58,12 +85,23 @@ class LatticeMass {
   Eigen::Matrix<double, 6, 6> inverse_block(int k) const;
 
  private:
+  friend class LatticePatterns;
   struct Factor;
   int n_;
   bool sparse_form_;
   Eigen::MatrixXd dense_;                        // Mt (dense lattices), until factorised
-  std::vector<Eigen::Triplet<double>> entries_;  // Mt's entries (sparse lattices)
+  // Mt's blocks (sparse lattices): each element's own, and each joined pair's below the
+  // diagonal (i > j), summed as add() comes; stored whole, zeros too, so that the pattern
+  // is the lattice's joints' and holds from step to step
+  struct Below {
+    int i, j;
+    Eigen::Matrix<double, 6, 6> m;
+  };
+  std::vector<Eigen::Matrix<double, 6, 6>> own_;
+  std::vector<Below> below_;
+  std::unordered_map<long long, int> below_index_;  // i * n + j -> its place in below_
   std::unique_ptr<Factor> factor_;
+  const Factor* sparse_factor_ = nullptr;  // factor_, or the one kept in a LatticePatterns
 };
 
 }  // namespace icedem

@@ -24,9 +24,11 @@ struct Pushed {
   State state;
 };
 
-// the two lattices stepped until they have touched for a few steps (at first touch the
-// answer is trivial: the contacts open); `keep` then holds that step's largest island's
-// problem (its run's warm start) and the answer the run kept
+// the two lattices stepped until they have touched for a step (at first touch the answer is
+// trivial: the contacts open; a few steps later the elastic lattices may have parted again,
+// as they do at the default merit since 2026-11-27, when the round-off of the lattices'
+// solve changed); `keep` then holds that step's largest island's problem (its run's warm
+// start) and the answer the run kept
 Pushed push(Keep& keep, std::vector<std::string> set) {
   set.push_back("friction.ice_ice=0");
   Pushed p{bench(set), State{}};
@@ -38,7 +40,7 @@ Pushed push(Keep& keep, std::vector<std::string> set) {
     keep.capture = true;
     step(p.scene, p.state);
   }
-  for (int s = 0; s < 3 && keep.problem; ++s) {
+  if (keep.problem) {
     keep.problem.reset();
     step(p.scene, p.state);
   }
@@ -79,6 +81,7 @@ TEST(BreakingSolve, AnIslandNearBreakingIsSolvedToTheTighterMerit) {
   Pushed p = push(keep, {"solver.breaking_ratio=0", "solver.breaking_merit_tolerance=1e-8",
                          "solver.breaking_check_band=10"});
   ASSERT_TRUE(keep.problem);
+  ASSERT_GT(keep.answer.r.norm(), 0.0) << "the lattices do not press: a trivial problem";
   EXPECT_GE(p.state.diagnostics.breaking_solves, 1.0);
   EXPECT_LE(keep.answer.residual, 1e-8);
   EXPECT_FALSE(keep.answer.capped);
@@ -86,6 +89,7 @@ TEST(BreakingSolve, AnIslandNearBreakingIsSolvedToTheTighterMerit) {
   Keep loose;
   Pushed q = push(loose, {"solver.breaking_ratio=10"});
   ASSERT_TRUE(loose.problem);
+  ASSERT_GT(loose.answer.r.norm(), 0.0) << "the lattices do not press: a trivial problem";
   EXPECT_EQ(q.state.diagnostics.breaking_solves, 0.0);
   EXPECT_GT(loose.answer.residual, 1e-8);
   std::printf("pushed lattices: merit %.2e solved again, %.2e at the joints' tolerance\n", keep.answer.residual,
@@ -99,6 +103,7 @@ TEST(BreakingSolve, TheNewtonMethodFinishesWhatTheCapLeft) {
   Pushed p = push(keep, {"solver.breaking_ratio=0", "solver.breaking_merit_tolerance=1e-8",
                          "solver.breaking_iterations=1", "solver.breaking_check_band=10"});
   ASSERT_TRUE(keep.problem);
+  ASSERT_GT(keep.answer.r.norm(), 0.0) << "the lattices do not press: a trivial problem";
   EXPECT_GE(p.state.diagnostics.breaking_solves, 1.0);
   EXPECT_EQ(p.state.diagnostics.breaking_capped, 0.0);
   EXPECT_LE(keep.answer.residual, 1e-8);
