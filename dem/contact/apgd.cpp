@@ -387,12 +387,20 @@ class DualProblem {
     mutable Eigen::VectorXd impulse, velocity;  // scratch of row_velocities
   };
 
-  // A sparse lattice is iterated through its touched block when at most this many of its
-  // elements, or at most half of them, are touched: W costs a forward solve of 6 columns per
-  // touched element once, a solve over the lattice costs one per gradient step (tens to
-  // hundreds an island). A dense one always is: W = Y^T Y costs a part of the inverse, and
-  // applying it a part of the product with the inverse.
-  static constexpr int kRestrictedSparseElements = 8;
+  // Whether a lattice is iterated through its touched block W or through a solve over it,
+  // by their flops over an island's gradient steps (kTypicalSteps: the lattice runs take
+  // 90-180 a step; over a level sheet's thousands only the per-step terms count). A solve
+  // costs about 4 nnz(L) a step; W costs 2 nnz(L) per column once (6 t columns for t touched
+  // elements) and 2 (6 t)^2 a step. So a floe of 16 elements (nnz(L) 1,848) takes W up to 8
+  // touched elements, and a level sheet of hundreds touched at a hundred takes the solve: its
+  // W would be 600 rows a side. A dense lattice always takes W: its solve is a product with
+  // (6 n)^2 entries as well.
+  static constexpr double kTypicalSteps = 100;
+  static bool iterate_through_w(const LatticeMass& mass, int touched) {
+    if (!mass.sparse()) return true;
+    const double nnz = static_cast<double>(mass.factor_nonzeros()), columns = 6.0 * touched;
+    return 2 * nnz * columns + kTypicalSteps * 2 * columns * columns < kTypicalSteps * 4 * nnz;
+  }
 
   // each group's touched elements, and W where it pays: a 0.6 m floe of 0.15 m squares (16
   // elements, 96 rows) in contact at two or three of them is iterated through 12-18 rows
@@ -407,8 +415,7 @@ class DualProblem {
     for (const ProblemContact& k : p.contacts) touch(k.a), touch(k.b);
     for (Group& g : groups_) {
       std::sort(g.touched.begin(), g.touched.end());  // the elements' order, not the contacts'
-      const int touched = static_cast<int>(g.touched.size());
-      g.restricted = !g.mass.sparse() || touched <= kRestrictedSparseElements || 2 * touched <= g.mass.elements();
+      g.restricted = iterate_through_w(g.mass, static_cast<int>(g.touched.size()));
       if (g.restricted) g.w = g.mass.restricted_inverse(g.touched);
     }
   }

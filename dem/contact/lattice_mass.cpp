@@ -153,6 +153,11 @@ Eigen::MatrixXd LatticeMass::restricted_inverse(const std::vector<int>& elements
   return w.selfadjointView<Eigen::Lower>();
 }
 
+long long LatticeMass::factor_nonzeros() const {
+  if (!sparse()) return 6LL * n_ * (6LL * n_ + 1) / 2;
+  return sparse_factor_->sparse.matrixL().nestedExpression().nonZeros();
+}
+
 Eigen::Matrix<double, 6, 6> LatticeMass::inverse_block(int k) const { return restricted_inverse({k}); }
 
 }  // namespace icedem

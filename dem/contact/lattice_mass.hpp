@@ -80,6 +80,9 @@ class LatticeMass {
   // element): W with v_k = W i_k when the impulse i falls on those elements alone. Dense:
   // Y = L^-1 E (one triangular solve of 6 k columns), W = Y^T Y; sparse: 6 k solves.
   Eigen::MatrixXd restricted_inverse(const std::vector<int>& elements) const;
+  // the factor's nonzeros (a solve costs about four flops each: both triangles, multiply
+  // and add); after factorise()
+  long long factor_nonzeros() const;
   // element k's 6 x 6 block on the diagonal of Mt^-1 (what a contact on it sees of the
   // lattice's mass)
   Eigen::Matrix<double, 6, 6> inverse_block(int k) const;
