@@ -54,6 +54,17 @@ std::vector<std::string> step_size_warnings(const Scene& scene) {
         "time.substeps): above {:.0f} % ice is pushed into the hull and the load comes out low "
         "(scenarios/stress/fast_tow.toml); {}",
         100 * travel, 100 * kMaxTravelPerStep, advice(dt, kMaxTravelPerStep * scene.ice.thickness / scene.structure.speed)));
+  // lattices: any scene whose fracture.mode can make them (generated floes, a level sheet, a
+  // layout's lattice region); smaller elements than the 0.15 m measured are stiffer still
+  const bool lattices = scene.fracture.mode == FractureMode::kOn || scene.fracture.mode == FractureMode::kAuto;
+  if (lattices && scene.fracture.element_size < kConvergedElementSize - 1e-9 && h > kMaxLatticeStep * (1 + 1e-9))
+    out.push_back(fmt::format(
+        "Bullet step {:.3g} s (time.dt / time.substeps) with breakable elements of {:.3g} m "
+        "(fracture.element_size): lattices of 0.15 m elements break with the step above {:.3g} s (at 0.02 s "
+        "their mean of maxima is 38 % lower and breaks in the rubble are missing; from 0.01 s to 0.005 s "
+        "nothing moves resolvably: docs/model/step_convergence_dt_half.md), and smaller elements are "
+        "stiffer; {}",
+        h, scene.fracture.element_size, kMaxLatticeStep, advice(dt, kMaxLatticeStep)));
   return out;
 }
 

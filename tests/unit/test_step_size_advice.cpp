@@ -3,6 +3,9 @@
 // the stress suite measured (dem/input/step_size_advice.hpp).
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "dem/input/scene_builder.hpp"
 #include "dem/input/step_size_advice.hpp"
 #include "tests/support/scenes.hpp"
 
@@ -47,4 +50,25 @@ TEST(StepSizeAdvice, WaterDampingTheStepCannotIntegrateIsABlowUpWarned) {
   EXPECT_TRUE(step_size_warnings(scene_from("", {"water.roll_pitch_damping_ratio=10", "time.substeps=4"})).empty());
   // the bound itself: damping ratio 0.5 warns of accuracy (0.6) long before omega h = 1.24
   EXPECT_EQ(step_size_warnings(scene_from("", {"water.heave_damping_ratio=5"})).size(), 1u);  // 0.13 + 7.2
+}
+
+// Lattices of elements below 0.20 m at a Bullet step above 0.01 s break with the step (the
+// 0.15 m squares' step study): warned, with the substeps; the 0.20 m squares, rigid floes and
+// the 0.15 m paper scenario (two substeps) are not
+TEST(StepSizeAdvice, SmallElementsAtTheFullStepWarnThatBreaksMoveWithTheStep) {
+  const auto w = step_size_warnings(scene_from("", {"fracture.mode=\"on\"", "fracture.element_size=0.15"}));
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("break with the step"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("use time.substeps >= 2"), std::string::npos) << w[0];
+  EXPECT_TRUE(step_size_warnings(
+                  scene_from("", {"fracture.mode=\"on\"", "fracture.element_size=0.15", "time.substeps=2"}))
+                  .empty());
+  EXPECT_TRUE(step_size_warnings(scene_from("", {"fracture.mode=\"on\"", "ice.floe_size=0.6", "fracture.element_size=0.2"})).empty());
+  EXPECT_TRUE(step_size_warnings(scene_from("", {"fracture.element_size=0.15"})).empty()) << "rigid floes";
+  EXPECT_TRUE(step_size_warnings(load_scene(std::string(ICEDEM_SOURCE_DIR) +
+                                            "/scenarios/paper/large_floes_breakable_015.toml"))
+                  .empty());
+  const auto level = step_size_warnings(
+      load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/level_ice/level_ice_015.toml"));
+  EXPECT_EQ(level.size(), 1u) << "the level sheet of 0.15 m elements at one step";
 }
