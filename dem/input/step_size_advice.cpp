@@ -61,7 +61,7 @@ std::vector<std::string> step_size_warnings(const Scene& scene) {
     out.push_back(fmt::format(
         "Bullet step {:.3g} s (time.dt / time.substeps) with breakable elements of {:.3g} m "
         "(fracture.element_size): lattices of 0.15 m elements break with the step above {:.3g} s (at 0.02 s "
-        "their mean of maxima is 38 % lower and breaks in the rubble are missing; from 0.01 s to 0.005 s "
+        "their mean of maxima is 28 % below 0.01 s's and breaks in the rubble are missing; from 0.01 s to 0.005 s "
         "nothing moves resolvably: docs/model/step_convergence_dt_half.md), and smaller elements are "
         "stiffer; {}",
         h, scene.fracture.element_size, kMaxLatticeStep, advice(dt, kMaxLatticeStep)));

@@ -1,7 +1,7 @@
 // Advice on the Bullet step h = time.dt / time.substeps, from the stress suite
 // (scripts/stress, scenarios/stress) and the lattices' step study: limits a
-// scenario can cross while every key is legal. `icedem check` prints the warnings and `icedem run` puts
-// them in the summary.
+// scenario can cross while every key is legal. `icedem check` prints the
+// warnings and `icedem run` puts them in the summary.
 #pragma once
 
 #include <string>
@@ -27,8 +27,8 @@ constexpr double kMaxTravelPerStep = 0.12;
 
 /// The Bullet step above which lattices of elements smaller than kConvergedElementSize
 /// break with the step: over 10 seeds of the paper's 0.6 m floes of 0.15 m squares, the mean
-/// of maxima at 0.02 s was 38 % below that at 0.01 s (+6 to +78 %) and breaks in the rubble
-/// were missing; from 0.01 s to 0.005 s, and with a fourfold tighter solve at 0.01 s,
+/// of maxima at 0.01 s was 38 % above that at 0.02 s (+6 to +78 %), and the breaks in the
+/// rubble that 0.01 s has were missing at 0.02 s; from 0.01 s to 0.005 s, and with a fourfold tighter solve at 0.01 s,
 /// nothing moved resolvably (docs/model/step_convergence_dt_half.md). The 0.20 m squares'
 /// findings at 0.02 s were not seen to move at 0.01 s (max +10 %, -22 to +54 %).
 constexpr double kMaxLatticeStep = 0.01;
