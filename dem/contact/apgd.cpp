@@ -576,6 +576,7 @@ bool model_above(const DualProblem& dual, const Eigen::VectorXd& change, const E
 }  // namespace
 
 SolverAnswer AcceleratedProjectedGradient::solve(const ContactProblem& p, const MethodOptions& options) {
+  lattice_patterns_.next_solve();
   const DualProblem dual(p, options.merit, lattice_patterns_);
   const int n = dual.size(), nc = dual.contacts();
 

@@ -4,6 +4,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <iterator>
 
 namespace icedem {
 
@@ -17,6 +18,7 @@ struct LatticeMass::Factor {
 struct LatticePatterns::Kept {
   LatticeMass::Factor factor;
   std::vector<int> starts, rows;
+  long long used = 0;  // the solve it was last used in
 
   bool same_pattern(const Eigen::SparseMatrix<double>& m) const {
     return starts.size() == static_cast<std::size_t>(m.outerSize() + 1) &&
@@ -32,6 +34,12 @@ struct LatticePatterns::Kept {
 
 LatticePatterns::LatticePatterns() = default;
 LatticePatterns::~LatticePatterns() = default;
+
+void LatticePatterns::next_solve() {
+  if (++solve_ % kIdleSolves) return;
+  for (auto it = kept_.begin(); it != kept_.end();)
+    it = it->second->used < solve_ - kIdleSolves ? kept_.erase(it) : std::next(it);
+}
 
 LatticeMass::LatticeMass(int elements, Form form)
     : n_(elements), sparse_form_(form == Form::kSparse || (form == Form::kBySize && elements > kDenseElements)) {
@@ -113,6 +121,7 @@ bool LatticeMass::factorise(LatticePatterns* patterns, long long key) {
   }
   std::unique_ptr<LatticePatterns::Kept>& kept = patterns->kept_[key];
   if (!kept) kept = std::make_unique<LatticePatterns::Kept>();
+  kept->used = patterns->solve_;
   if (!kept->same_pattern(Mt)) {
     kept->factor.sparse.analyzePattern(Mt);
     kept->keep_pattern(Mt);

@@ -39,11 +39,17 @@ class LatticePatterns {
   LatticePatterns(const LatticePatterns&) = delete;
   LatticePatterns& operator=(const LatticePatterns&) = delete;
   std::size_t size() const { return kept_.size(); }
+  // one solve more: every kIdleSolves, the analyses no lattice used in the last kIdleSolves
+  // are dropped (a lattice that broke, or a level sheet whose free part changed, leaves its
+  // old one behind; one of a few hundred elements holds about a megabyte)
+  void next_solve();
+  static constexpr long long kIdleSolves = 2000;
 
  private:
   friend class LatticeMass;
   struct Kept;
   std::unordered_map<long long, std::unique_ptr<Kept>> kept_;
+  long long solve_ = 0;
 };
 
 class LatticeMass {

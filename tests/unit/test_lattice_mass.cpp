@@ -113,6 +113,17 @@ TEST(LatticeMass, AKeptPatternGivesTheFreshFactor) {
     EXPECT_EQ(kept.restricted_inverse({0, elements - 1}), fresh.restricted_inverse({0, elements - 1}));
   }
   EXPECT_EQ(patterns.size(), 1u);
+  // an analysis no lattice uses is dropped after kIdleSolves to 2 kIdleSolves solves, one in use
+  // is not
+  for (long long s = 0; s < 2 * LatticePatterns::kIdleSolves; ++s) {
+    patterns.next_solve();
+    if (s % 100 == 0) {
+      LatticeMass again(4 * LatticeMass::kDenseElements);
+      chain(4 * LatticeMass::kDenseElements, again, 9u);
+      ASSERT_TRUE(again.factorise(&patterns, 8));
+    }
+  }
+  EXPECT_EQ(patterns.size(), 1u) << "the idle analysis (key 7) is dropped, the used one (key 8) kept";
 }
 
 // a lattice whose matrix is not positive definite (an element without mass or joint, as a
