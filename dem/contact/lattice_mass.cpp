@@ -140,24 +140,19 @@ void LatticeMass::solve(const Eigen::VectorXd& impulse, Eigen::VectorXd& velocit
 
 Eigen::MatrixXd LatticeMass::restricted_inverse(const std::vector<int>& elements) const {
   const int k = static_cast<int>(elements.size());
-  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(6 * n_, 6 * k);
-  for (int e = 0; e < k; ++e) unit.block<6, 6>(6 * elements[e], 6 * e).setIdentity();
+  Eigen::MatrixXd y = Eigen::MatrixXd::Zero(6 * n_, 6 * k);  // E, the listed elements' unit columns
+  for (int e = 0; e < k; ++e) y.block<6, 6>(6 * elements[e], 6 * e).setIdentity();
+  // Mt = L L^T (dense), or P^T L L^T P with the sparse factor's fill-reducing ordering, so
+  // E^T Mt^-1 E = Y^T Y with Y = L^-1 E, or L^-1 P E: one forward solve, half of a solve's
+  // work, and W symmetric by construction
   if (!sparse()) {
-    // Mt = L L^T, so E^T Mt^-1 E = (L^-1 E)^T (L^-1 E): one forward solve, half of a
-    // solve's work, and W symmetric by construction
-    factor_->dense.matrixL().solveInPlace(unit);
-    Eigen::MatrixXd w(6 * k, 6 * k);
-    w.setZero();
-    w.selfadjointView<Eigen::Lower>().rankUpdate(unit.transpose());
-    return w.selfadjointView<Eigen::Lower>();
+    factor_->dense.matrixL().solveInPlace(y);
+  } else {
+    const auto& llt = sparse_factor_->sparse;
+    if (llt.permutationP().size()) y = Eigen::MatrixXd(llt.permutationP() * y);
+    llt.matrixL().solveInPlace(y);
   }
-  // the same with the fill-reducing ordering: Mt = P^T L L^T P, so W = Y^T Y with
-  // Y = L^-1 P E
-  const auto& llt = sparse_factor_->sparse;
-  Eigen::MatrixXd y = llt.permutationP().size() ? Eigen::MatrixXd(llt.permutationP() * unit) : unit;
-  llt.matrixL().solveInPlace(y);
-  Eigen::MatrixXd w(6 * k, 6 * k);
-  w.setZero();
+  Eigen::MatrixXd w = Eigen::MatrixXd::Zero(6 * k, 6 * k);
   w.selfadjointView<Eigen::Lower>().rankUpdate(y.transpose());
   return w.selfadjointView<Eigen::Lower>();
 }
