@@ -100,7 +100,7 @@ void add_outline_lattice_floe(World& world, const Floe& floe, int floe_id, doubl
   if (dormant) {
     DormantLattice& d = add_stand_in(world, floe, floe_id, y, friction, static_cast<int>(lattice.elements.size()),
                                      static_cast<int>(lattice.joints.size()), stand_in_pose);
-    d.equal_elements = false;  // make_dormant's mean motion is for equal elements
+    d.equal_elements = false;  // make_dormant weighs its elements' motion by their masses
   }
   const int first = static_cast<int>(world.floes().size());
   std::vector<double> element_yaw;  // each element's body axes against the floe's principal frame
@@ -253,23 +253,45 @@ void wake_lattice(World& world, DormantLattice& lattice) {
 }
 
 bool make_dormant(World& world, DormantLattice& lattice) {
-  if (!lattice.replaced || lattice.broken || !lattice.equal_elements) return false;
+  if (!lattice.replaced || lattice.broken) return false;
   std::vector<FloeBody>& floes = world.floes();
   for (int i = 0; i < lattice.elements; ++i)
     if (floes[lattice.first_element + i].frozen) return false;
-  // the floe's motion: centre of mass and mean velocities of its (equal) elements,
-  // orientation from the first element through its offset
+  // the floe's motion, orientation from the first element through its offset. Equal squares:
+  // centre of mass and mean velocities of the elements. Elements of unequal masses (an
+  // outline's or hexagons', cut at the outline): the stand-in's centre where the elements'
+  // poses put it, and the rigid motion of the same momentum, each element's velocity taken
+  // back to that centre (v_i + omega x (X - x_i)) and weighed by its mass; exact for a lattice
+  // moving as one body, whatever its elements' shapes
   btVector3 v(0, 0, 0), omega(0, 0, 0);
   bool awake = false;
-  for (int i = 0; i < lattice.elements; ++i) {
-    const btRigidBody& e = *floes[lattice.first_element + i].body;
-    v += e.getLinearVelocity();
-    omega += e.getAngularVelocity();
-    awake = awake || liveness(e) == Liveness::kAwake;
-  }
-  const double n = lattice.elements;
+  for (int i = 0; i < lattice.elements; ++i)
+    awake = awake || liveness(*floes[lattice.first_element + i].body) == Liveness::kAwake;
   btTransform T = floes[lattice.first_element].body->getCenterOfMassTransform() * lattice.offsets[0].inverse();
   T.setOrigin(lattice_centre(world, lattice));
+  if (lattice.equal_elements) {
+    for (int i = 0; i < lattice.elements; ++i) {
+      const btRigidBody& e = *floes[lattice.first_element + i].body;
+      v += e.getLinearVelocity();
+      omega += e.getAngularVelocity();
+    }
+    v /= lattice.elements;
+    omega /= lattice.elements;
+  } else {
+    double mass = 0;
+    for (int i = 0; i < lattice.elements; ++i) {
+      const btRigidBody& e = *floes[lattice.first_element + i].body;
+      const double m = 1.0 / e.getInvMass();
+      omega += m * e.getAngularVelocity();
+      mass += m;
+    }
+    omega /= mass;
+    for (int i = 0; i < lattice.elements; ++i) {
+      const btRigidBody& e = *floes[lattice.first_element + i].body;
+      v += (e.getLinearVelocity() + omega.cross(T.getOrigin() - e.getCenterOfMassPosition())) / e.getInvMass();
+    }
+    v /= mass;
+  }
 
   for (int j = 0; j < lattice.joints; ++j)
     world.dynamics().removeConstraint(world.joints()[lattice.first_joint + j].constraint.get());
@@ -281,8 +303,8 @@ bool make_dormant(World& world, DormantLattice& lattice) {
   btRigidBody& w = *floes[lattice.stand_in].body;
   w.setCenterOfMassTransform(T);
   w.getMotionState()->setWorldTransform(T);
-  w.setLinearVelocity(v / n);
-  w.setAngularVelocity(omega / n);
+  w.setLinearVelocity(v);
+  w.setAngularVelocity(omega);
   world.enter_world(w);
   w.forceActivationState(!world.settings().activation.sleeping ? DISABLE_DEACTIVATION
                          : awake                                ? ACTIVE_TAG
@@ -296,7 +318,14 @@ btVector3 lattice_centre(const World& world, const DormantLattice& lattice) {
   const std::vector<FloeBody>& floes = world.floes();
   if (!lattice.replaced) return floes[lattice.stand_in].body->getCenterOfMassPosition();
   btVector3 centre(0, 0, 0);
-  for (int i = 0; i < lattice.elements; ++i) centre += floes[lattice.first_element + i].body->getCenterOfMassPosition();
+  if (lattice.equal_elements) {
+    for (int i = 0; i < lattice.elements; ++i) centre += floes[lattice.first_element + i].body->getCenterOfMassPosition();
+  } else {
+    // unequal elements: the stand-in's centre as each element's pose puts it (pose_i offset_i^-1),
+    // the mean of those; a mean of the elements' centres would not be the floe's centre of mass
+    for (int i = 0; i < lattice.elements; ++i)
+      centre += (floes[lattice.first_element + i].body->getCenterOfMassTransform() * lattice.offsets[i].inverse()).getOrigin();
+  }
   return centre / lattice.elements;
 }
 

@@ -53,13 +53,15 @@ void add_lattice_floe(World& world, const Floe& floe, int floe_id, double y, con
 void wake_lattice(World& world, DormantLattice& lattice);
 
 /// The reverse, for a lattice with every joint intact and no frozen element:
-/// the stand-in returns at the elements' centre of mass with their mean motion,
-/// and the elements and joints leave the world. Returns false (and does
-/// nothing) if the lattice is broken or frozen.
+/// the stand-in returns at the elements' centre of mass with the rigid motion of
+/// their momentum (their mean motion for equal squares), and the elements and
+/// joints leave the world. Returns false (and does nothing) if the lattice is
+/// broken or frozen.
 bool make_dormant(World& world, DormantLattice& lattice);
 
 /// Centre of mass of a breakable floe with a lattice region: its stand-in's while
-/// dormant, else the mean of its (equal) elements' centres.
+/// dormant, else the mean of its (equal) elements' centres, or for unequal elements
+/// the mean of the stand-in centres their poses imply.
 btVector3 lattice_centre(const World& world, const DormantLattice& lattice);
 
 /// Remove a joint from the solver and recompute its floe's fragments, so that

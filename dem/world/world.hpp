@@ -104,7 +104,7 @@ struct DormantLattice {
   double radius;                      // m, farthest outline vertex from the floe's centroid
   bool replaced = false;              // the lattice is in the world, the stand-in is not
   bool broken = false;                // a joint has broken: it stays a lattice
-  bool equal_elements = true;         // its elements are equal squares (else, once woken, it stays a lattice)
+  bool equal_elements = true;         // its elements are equal squares (else their motion is weighed by mass)
 };
 
 /// Level ice (dem/fracture/level_ice.hpp): one breakable sheet whose elements are held where they

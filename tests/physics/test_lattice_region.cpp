@@ -137,3 +137,53 @@ TEST(LatticeRegion, AnIntactLatticeThatLeavesTheRegionIsOneBodyAgainABrokenOneSt
   EXPECT_FALSE(make_dormant(*s2.world, d2));
   EXPECT_TRUE(d2.replaced);
 }
+
+TEST(LatticeRegion, AHexagonalLatticeThatLeavesTheRegionIsOneBodyAgainWithItsMomentum) {
+  // hexagons cut at the outline are of unequal masses: the stand-in takes the rigid motion of
+  // the elements' momentum, at the centre their poses put it (a plain mean of the elements'
+  // centres and velocities would be off by the cut elements' share). Tolerances: round-off.
+  const Scene scene = bench({"fracture.lattice_radius=1.2", "structure.start_x=11.5", "fracture.element_shape=\"hexagon\""});
+  State state = initial_state(scene, {strip(0.6, 0.6)});
+  World& world = *state.world;
+  DormantLattice& d = world.lattices()[0];
+  ASSERT_FALSE(d.equal_elements);
+  btRigidBody& whole = *world.floes()[d.stand_in].body;
+  const btTransform T = whole.getCenterOfMassTransform();
+  update_lattice_region(scene, state.structure_position, world, state.fracture);
+  ASSERT_TRUE(d.replaced);
+  // unequal elements (the point of the test)
+  double lightest = 1e9, heaviest = 0;
+  for (int i = 0; i < d.elements; ++i) {
+    const double m = 1.0 / world.floes()[d.first_element + i].body->getInvMass();
+    lightest = std::min(lightest, m), heaviest = std::max(heaviest, m);
+  }
+  ASSERT_LT(lightest, 0.8 * heaviest);
+  EXPECT_LT((lattice_centre(world, d) - T.getOrigin()).length(), 1e-12);
+
+  // a rigid motion about a point off the centre: the elements' momentum is the stand-in's
+  const btVector3 v(-0.05, 0, 0.02), w(0, 0.1, 0), pivot = T.getOrigin() + btVector3(0.3, 0, -0.2);
+  btVector3 momentum(0, 0, 0);
+  double mass = 0;
+  for (int i = 0; i < d.elements; ++i) {
+    btRigidBody& e = *world.floes()[d.first_element + i].body;
+    e.setLinearVelocity(v + w.cross(e.getCenterOfMassPosition() - pivot));
+    e.setAngularVelocity(w);
+    momentum += e.getLinearVelocity() / e.getInvMass();
+    mass += 1.0 / e.getInvMass();
+  }
+  ASSERT_TRUE(make_dormant(world, d));
+  EXPECT_FALSE(d.replaced);
+  EXPECT_TRUE(whole.isInWorld());
+  EXPECT_EQ(world.dynamics().getNumConstraints(), 0);
+  EXPECT_LT((whole.getCenterOfMassPosition() - T.getOrigin()).length(), 1e-12);
+  EXPECT_LT((whole.getLinearVelocity() - (v + w.cross(T.getOrigin() - pivot))).length(), 1e-12);
+  EXPECT_LT((whole.getAngularVelocity() - w).length(), 1e-12);
+  EXPECT_LT((whole.getLinearVelocity() * mass - momentum).length(), 1e-12 * momentum.length());
+  // the stand-in weighs what its elements weigh, so the momentum is the same
+  EXPECT_NEAR(1.0 / whole.getInvMass(), mass, 1e-9 * mass);
+  // and its elements' output poses are where the elements were
+  for (int i = 0; i < d.elements; ++i) {
+    const FloeBody& e = world.floes()[d.first_element + i];
+    EXPECT_LT((output_pose(world, e).translation() - body_pose(*e.body).translation()).norm(), 1e-12);
+  }
+}
