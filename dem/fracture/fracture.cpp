@@ -106,6 +106,8 @@ int check_fracture(const Scene& scene, World& world, double time, const Eigen::V
   for (std::size_t i = 0; i < joints.size(); ++i) {
     IceJoint& joint = joints[i];
     if (!joint.constraint) continue;  // broken already
+    // a dormant lattice's elements are out of the world, not awake: skipped below as well
+    if (scene.activation.skip_asleep && world.in_dormant_lattice(world.floes()[joint.body_a])) continue;
     const btRigidBody& body_a = *world.floes()[joint.body_a].body;
     const btRigidBody& body_b = *world.floes()[joint.body_b].body;
     // asleep: the feedback is stale (docs/model/bullet.md) and the filter keeps its last value

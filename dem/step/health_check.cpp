@@ -87,8 +87,9 @@ StepDiagnostics check_health(const Scene& scene, const State& state) {
   const Eigen::AlignedBox3d tank = tank_box(scene);
 
   for (const FloeBody& floe : state.world->floes()) {
+    if (state.world->in_dormant_lattice(floe)) continue;  // its stand-in counts
     const btRigidBody& body = *floe.body;
-    if (liveness(body) == Liveness::kOutside) continue;  // an element of a dormant lattice: its stand-in counts
+    if (liveness(body) == Liveness::kOutside) continue;  // any other body out of the world (a split floe)
     if (tank.contains(to_eigen(body.getCenterOfMassPosition()))) d.ice_mass += floe.shape->mass;
   }
   // the awake ones (a sleeping body does not move), in the floes' order
@@ -109,7 +110,8 @@ StepDiagnostics check_health(const Scene& scene, const State& state) {
       d.max_contact_penetration = std::max(d.max_contact_penetration, -double(manifold.getContactPoint(p).getDistance()));
   }
   for (const IceJoint& joint : state.world->joints())
-    if (joint.constraint && liveness(*state.world->floes()[joint.body_a].body) != Liveness::kOutside)
+    if (joint.constraint && !state.world->in_dormant_lattice(state.world->floes()[joint.body_a]) &&
+        liveness(*state.world->floes()[joint.body_a].body) != Liveness::kOutside)
       d.max_joint_gap = std::max(d.max_joint_gap, joint_gap(joint));
 
   if (!state.load.force.allFinite() || !state.load.moment.allFinite())

@@ -205,6 +205,13 @@ class World {
   /// Breakable floes that start as one rigid body (fracture.lattice_radius > 0).
   std::vector<DormantLattice>& lattices() { return lattices_; }
   const std::vector<DormantLattice>& lattices() const { return lattices_; }
+  /// An element of a dormant lattice (its stand-in is in the world in its place): out of the
+  /// world, so liveness() is kOutside, but known without reading the body. The per-step loops over
+  /// every body or joint skip these first: on the 0.15 m hexagons' field (5,800 bodies, about
+  /// 10,000 joints, most dormant) reading each body took 2.6 % of the run.
+  bool in_dormant_lattice(const FloeBody& floe) const {
+    return floe.lattice >= 0 && !floe.stand_in && !lattices_[floe.lattice].replaced;
+  }
 
   /// The level sheet (ice.cover = "level"), if the scene has one.
   std::optional<LevelSheet>& level_sheet() { return level_sheet_; }
