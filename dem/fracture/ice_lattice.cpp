@@ -318,13 +318,12 @@ btVector3 lattice_centre(const World& world, const DormantLattice& lattice) {
   const std::vector<FloeBody>& floes = world.floes();
   if (!lattice.replaced) return floes[lattice.stand_in].body->getCenterOfMassPosition();
   btVector3 centre(0, 0, 0);
-  if (lattice.equal_elements) {
-    for (int i = 0; i < lattice.elements; ++i) centre += floes[lattice.first_element + i].body->getCenterOfMassPosition();
-  } else {
+  for (int i = 0; i < lattice.elements; ++i) {
+    const btRigidBody& e = *floes[lattice.first_element + i].body;
     // unequal elements: the stand-in's centre as each element's pose puts it (pose_i offset_i^-1),
     // the mean of those; a mean of the elements' centres would not be the floe's centre of mass
-    for (int i = 0; i < lattice.elements; ++i)
-      centre += (floes[lattice.first_element + i].body->getCenterOfMassTransform() * lattice.offsets[i].inverse()).getOrigin();
+    centre += lattice.equal_elements ? e.getCenterOfMassPosition()
+                                     : (e.getCenterOfMassTransform() * lattice.offsets[i].inverse()).getOrigin();
   }
   return centre / lattice.elements;
 }

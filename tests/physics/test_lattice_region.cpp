@@ -142,7 +142,8 @@ TEST(LatticeRegion, AHexagonalLatticeThatLeavesTheRegionIsOneBodyAgainWithItsMom
   // hexagons cut at the outline are of unequal masses: the stand-in takes the rigid motion of
   // the elements' momentum, at the centre their poses put it (a plain mean of the elements'
   // centres and velocities would be off by the cut elements' share). Tolerances: round-off.
-  const Scene scene = bench({"fracture.lattice_radius=1.2", "structure.start_x=11.5", "fracture.element_shape=\"hexagon\""});
+  const Scene scene =
+      bench({"fracture.lattice_radius=1.2", "structure.start_x=11.5", "fracture.element_shape=\"hexagon\""});
   State state = initial_state(scene, {strip(0.6, 0.6)});
   World& world = *state.world;
   DormantLattice& d = world.lattices()[0];
