@@ -262,7 +262,9 @@ bool make_dormant(World& world, DormantLattice& lattice) {
   // outline's or hexagons', cut at the outline): the stand-in's centre where the elements'
   // poses put it, and the rigid motion of the same momentum, each element's velocity taken
   // back to that centre (v_i + omega x (X - x_i)) and weighed by its mass; exact for a lattice
-  // moving as one body, whatever its elements' shapes
+  // moving as one body, whatever its elements' shapes. For equal elements the two are the same
+  // motion; the squares keep the plain means only so that their runs (and the golden runs) stay
+  // bit for bit what they were: the weighted sums round differently
   btVector3 v(0, 0, 0), omega(0, 0, 0);
   bool awake = false;
   for (int i = 0; i < lattice.elements; ++i)
@@ -322,6 +324,7 @@ btVector3 lattice_centre(const World& world, const DormantLattice& lattice) {
     const btRigidBody& e = *floes[lattice.first_element + i].body;
     // unequal elements: the stand-in's centre as each element's pose puts it (pose_i offset_i^-1),
     // the mean of those; a mean of the elements' centres would not be the floe's centre of mass
+    // (equal squares keep that mean, the same point, for their bit-for-bit runs: make_dormant)
     centre += lattice.equal_elements ? e.getCenterOfMassPosition()
                                      : (e.getCenterOfMassTransform() * lattice.offsets[i].inverse()).getOrigin();
   }
