@@ -1,7 +1,9 @@
 // contact_problems: tools on contact problem files (dem/contact/problem_file.hpp).
 //
 //   contact_problems solve FILE... [--method M ...] [--tolerance T] [--max-iterations N] [--cold]
-//       solve each problem with each method; print iterations, merit and CPU time
+//       solve each problem with each method; print iterations, merit and CPU time. A method
+//       "A+B" is A for at most --first-iterations (default 1000), then B from A's answer
+//       where A ended above the tolerance (iterations printed as A's+B's)
 //   contact_problems reference FILE...
 //       solve each problem to a merit of 1e-10 with Siconos numerics, cross-check the
 //       answer with a second method, and write it into the file as FCLIB's /solution
@@ -44,8 +46,29 @@ double cpu_seconds() {
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
+// `name`'s answer: a method, or "A+B", A to at most `first` iterations and B from A's answer
+SolverAnswer solve_with(const std::string& name, const ContactProblem& p, const MethodOptions& o, int first,
+                        std::string& iterations) {
+  const auto plus = name.find('+');
+  if (plus == std::string::npos) {
+    const SolverAnswer a = make_contact_method(name)->solve(p, o);
+    iterations = std::to_string(a.sweeps);
+    return a;
+  }
+  MethodOptions head = o;
+  head.max_iterations = first;
+  const SolverAnswer a = make_contact_method(name.substr(0, plus))->solve(p, head);
+  iterations = std::to_string(a.sweeps);
+  if (a.residual <= o.tolerance) return a;
+  MethodOptions tail = o;
+  tail.warm_start = true;
+  const SolverAnswer b = make_contact_method(name.substr(plus + 1))->solve(started_from(p, a), tail);
+  iterations += "+" + std::to_string(b.sweeps);
+  return b.residual <= a.residual ? b : a;
+}
+
 int solve_command(const std::vector<std::string>& files, std::vector<std::string> methods, double tolerance,
-                  int max_iterations, bool cold) {
+                  int max_iterations, bool cold, int first_iterations) {
   if (methods.empty())  // every method on a problem (the in-run sweeps are not one)
     for (const ContactMethodEntry& e : contact_methods())
       if (e.make) methods.push_back(e.name);
@@ -61,11 +84,12 @@ int solve_command(const std::vector<std::string>& files, std::vector<std::string
       o.max_iterations = max_iterations;
       o.warm_start = !cold;
       const double t0 = cpu_seconds();
-      const SolverAnswer a = make_contact_method(name)->solve(p, o);
+      std::string iterations;
+      const SolverAnswer a = solve_with(name, p, o, first_iterations, iterations);
       const double cpu = cpu_seconds() - t0;
       std::cout << fmt::format("{:<40} {:>7} {:>6} {:<16} {:>7} {:>10.3e} {:>9.2f}\n",
                                std::filesystem::path(path).filename().string(), p.contacts.size(), p.joint_rows(), name,
-                               a.sweeps, natural_map_residual(local, a.r), 1e3 * cpu);
+                               iterations, natural_map_residual(local, a.r), 1e3 * cpu);
     }
   }
   return 0;
@@ -291,6 +315,8 @@ int main(int argc, char** argv) {
   solve->add_option("--tolerance", tolerance, "merit to stop at (default 1e-6)");
   solve->add_option("--max-iterations", max_iterations, "iteration cap (default 200)");
   solve->add_flag("--cold", cold, "start from zero, not the warm start");
+  int first_iterations = 1000;
+  solve->add_option("--first-iterations", first_iterations, "cap of A in a method A+B (default 1000)");
   CLI::App* reference = app.add_subcommand("reference", "write reference solutions into problem files");
   reference->add_option("files", files, "problem files")->required();
   CLI::App* errors = app.add_subcommand("errors", "load errors of a method's answers against a tight solution");
@@ -308,7 +334,7 @@ int main(int argc, char** argv) {
   errors->add_flag("--loaded-only", loaded_only, "only islands that touch the structure or hold joints");
   CLI11_PARSE(app, argc, argv);
   try {
-    if (*solve) return solve_command(files, methods, tolerance, max_iterations, cold);
+    if (*solve) return solve_command(files, methods, tolerance, max_iterations, cold, first_iterations);
     if (*errors) return errors_command(files, method, merit_kind(merit_name), tolerances, max_iterations, csv_path, loaded_only);
     return reference_command(files);
   } catch (const std::exception& e) {

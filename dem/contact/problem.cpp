@@ -55,6 +55,13 @@ std::vector<std::vector<int>> joined_groups(const ContactProblem& p) {
 
 }  // namespace
 
+ContactProblem started_from(const ContactProblem& p, const SolverAnswer& a) {
+  ContactProblem from = p;
+  for (std::size_t c = 0; c < from.contacts.size(); ++c) from.contacts[c].guess = a.r.segment<3>(3 * c);
+  for (std::size_t j = 0; j < from.joints.size(); ++j) from.joints[j].guess = a.l(static_cast<int>(j));
+  return from;
+}
+
 Eigen::Matrix<double, 6, 6> inverse_mass(const ProblemBody& body) {
   Eigen::Matrix<double, 6, 6> inv = Eigen::Matrix<double, 6, 6>::Zero();
   inv.topLeftCorner<3, 3>().diagonal() = (Eigen::Vector3d::Constant(body.mass) + body.added_mass).cwiseInverse();

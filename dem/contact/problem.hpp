@@ -93,6 +93,9 @@ struct SolverAnswer {
   bool capped = false;    // stopped at the cap above its tolerance
 };
 
+/// `p` with `a`'s impulses as its warm start: a method goes on from another's answer.
+ContactProblem started_from(const ContactProblem& p, const SolverAnswer& a);
+
 /// A body's 6x6 inverse mass matrix: 1/m on the linear block, the inverse inertia on the angular.
 Eigen::Matrix<double, 6, 6> inverse_mass(const ProblemBody& body);
 

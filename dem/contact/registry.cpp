@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "dem/contact/apgd.hpp"
+#include "dem/contact/interior_point.hpp"
 #include "dem/contact/newton.hpp"
 #include "dem/contact/pgs.hpp"
 
@@ -27,6 +28,10 @@ std::vector<ContactMethodEntry>& registry() {
        maker<PrimalNewton>(), true},
       {"apgd", "accelerated projected gradient on the island's problem, as Project Chrono's (dem/contact/apgd.hpp)",
        maker<AcceleratedProjectedGradient>(), true},
+      {"ipm",
+       "primal-dual interior-point method on the island's whole problem, joints included "
+       "(dem/contact/interior_point.hpp)",
+       maker<InteriorPoint>(), true},
       {"pgs_square",
        "projected Gauss-Seidel on the island's problem, friction clamped per direction as Bullet's rows: the "
        "in-run sweeps' twin on a problem file",

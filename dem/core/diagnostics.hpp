@@ -25,6 +25,7 @@ struct StepDiagnostics {
   double breaking_solves = 0;       // islands solved again for a joint near its capacity (solver.breaking_ratio)
   double breaking_decided = 0;      // of those, the ones every break of which was decided at solver.breaking_check_tolerance
   double breaking_capped = 0;       // of those, the ones that stopped at solver.breaking_iterations above their merit
+  double handovers = 0;             // islands handed over at solver.method_iterations to solver.handover_method
   double boundary_load = 0;         // N, fixed bodies' resistance to the structure's push (dem/world/boundary_load.hpp)
   double locked = 0;                // 1 if the boundaries carry kLockedShare of the surge load or more
   double held_edge_overloads = 0;   // a level sheet's joints at its held edge over their capacity (never broken)
@@ -80,6 +81,10 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      "of the step's breaking_solves, the islands that stopped at solver.breaking_iterations above "
      "solver.breaking_merit_tolerance: their joints' loads are no better known than at the joints' merit",
      &StepDiagnostics::breaking_capped},
+    {"handovers", "1",
+     "islands the method left at solver.method_iterations above their merit in the step, which "
+     "solver.handover_method went on with from that answer (solver_capped says whether it reached the merit)",
+     &StepDiagnostics::handovers},
     {"boundary_load", "N",
      "load the fixed bodies (walls, mother ice, frozen floes) take off the structure: their contact impulses on "
      "the ice of the islands touching the structure, along its travel, over the step (dem/world/boundary_load.hpp)",

@@ -135,6 +135,22 @@ std::vector<KeySpec> make_keys() {
                       "solver.breaking_merit_tolerance; the gradient method needs a median of 1000-3000 on the "
                       "lattices' breaking steps, and far more on a level sheet's, where Newton is the cheaper); what "
                       "it leaves above that merit, the Newton method finishes (at most 1000 of its steps)"));
+  std::vector<std::string> handover{"none"};
+  for (const std::string& name : contact_method_names(true))
+    if (name != kBulletSweeps) handover.push_back(name);
+  k.push_back(choice("solver.handover_method", "ipm", handover,
+                     "solver.method other than \"pgs\": an island the method leaves at solver.method_iterations "
+                     "above its merit goes on from that answer with this method, for at most "
+                     "solver.handover_iterations of its iterations; it also finishes an island solved again for a "
+                     "joint near its capacity that the method left above solver.breaking_merit_tolerance (at most "
+                     "1000 iterations). \"ipm\", the interior-point method, whose count of iterations hardly grows "
+                     "with the stiffness of a lattice's joints: on a level sheet's islands it reaches the joints' "
+                     "merit in about 10 iterations from the gradient method's capped answer where that method "
+                     "takes 16,000 steps (docs/model/contact_problems.md). \"none\": the island stays capped, "
+                     "labelled, and the Newton method finishes the breaking solves (as before 2026-11-28)"));
+  k.push_back(integer("solver.handover_iterations", 100, 1, 100000,
+                      "solver.method other than \"pgs\": cap of solver.handover_method's iterations on an island "
+                      "handed over at solver.method_iterations"));
   k.push_back(integer("solver.method_iterations", 1000, 1, 100000,
                       "solver.method other than \"pgs\": cap of the method's iterations per island and Bullet "
                       "step (Newton steps, or sweeps); the paper's small-floe run needs at most 589 gradient steps "

@@ -61,6 +61,8 @@ struct SolverSettings {
   double breaking_check_band;       // -, how far from 1 every ratio must then be to stop there
   int breaking_iterations;          // cap of the method's iterations then
   int method_iterations;      // cap of the method's iterations per island and Bullet step
+  std::string handover_method;  // what goes on with an island capped there ("none": nothing)
+  int handover_iterations;      // its cap
   int position_iterations;    // cap of the split-impulse position sweeps per island and Bullet step
 };
 

@@ -180,6 +180,8 @@ Scene make_scene(const Scenario& sc) {
   s.solver.breaking_check_band = real(sc, "solver.breaking_check_band");
   s.solver.breaking_iterations = integer(sc, "solver.breaking_iterations");
   s.solver.method_iterations = integer(sc, "solver.method_iterations");
+  s.solver.handover_method = get<std::string>(sc, "solver.handover_method");
+  s.solver.handover_iterations = integer(sc, "solver.handover_iterations");
   s.solver.position_iterations = integer(sc, "solver.position_iterations");
 
   // structure profile: y strictly increasing, radii >= 0, some radius > 0

@@ -50,6 +50,10 @@ std::string solver_line(const SolverSummary& v) {
                        "and {} stopped at solver.breaking_iterations above it (/diagnostics/breaking_solves, "
                        "breaking_decided, breaking_capped)\n",
                        v.breaking_solves, v.breaking_tolerance, v.breaking_decided, v.breaking_capped);
+  if (v.handovers > 0)
+    out += fmt::format("  {} islands left at the cap above their merit went on with {} from that answer (their "
+                       "iterations count above; /diagnostics/handovers)\n",
+                       v.handovers, v.handover_method);
   if (v.tolerance > 0 && v.capped_window_fraction > SolverSummary::kCappedWarning)
     out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached {} = {:d} before "
                        "{} = {:g}: their loads are not converged; raise the cap "
@@ -255,7 +259,8 @@ const std::vector<SummaryField>& summary_fields() {
        "breaking_solves (islands solved again to breaking_tolerance, solver.breaking_merit_tolerance, for a joint "
        "near its capacity; 0 for pgs), breaking_decided (of those, the ones every break of which was decided at "
        "solver.breaking_check_tolerance), breaking_capped (of those, the ones stopped at solver.breaking_iterations above "
-       "it)",
+       "it), handovers (islands left at the cap above their merit that handover_method, solver.handover_method, went "
+       "on with)",
        [](S s) {
          return json{{"method", s.solver.method},
                      {"cap", s.solver.cap},
@@ -270,7 +275,9 @@ const std::vector<SummaryField>& summary_fields() {
                      {"breaking_solves", s.solver.breaking_solves},
                      {"breaking_decided", s.solver.breaking_decided},
                      {"breaking_capped", s.solver.breaking_capped},
-                     {"breaking_tolerance", s.solver.breaking_tolerance}};
+                     {"breaking_tolerance", s.solver.breaking_tolerance},
+                     {"handovers", s.solver.handovers},
+                     {"handover_method", s.solver.handover_method}};
        }},
       {"boundary", "", false, false,
        "the fixed boundaries (mother ice, walls, frozen floes) over the analysis window: share_of_surge (their "

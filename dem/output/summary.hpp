@@ -33,6 +33,8 @@ struct SolverSummary {
   long breaking_decided = 0;      // of those, the ones decided at solver.breaking_check_tolerance
   long breaking_capped = 0;       // of those, the ones that stopped at their cap above the tighter merit
   double breaking_tolerance = 0;  // the merit they were solved to (0: off)
+  long handovers = 0;             // islands handed over at the cap to solver.handover_method
+  std::string handover_method;    // solver.handover_method
   /// More than this fraction of capped steps in the window: the summary warns.
   static constexpr double kCappedWarning = 0.01;
 };

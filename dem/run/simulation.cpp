@@ -122,6 +122,7 @@ SolverSummary solver_summary(const Scene& scene, const RunHistory& h, const RunS
   v.method = scene.solver.method;
   const bool sweeps = scene.solver.method == kBulletSweeps;
   v.cap = sweeps ? scene.solver.iterations : scene.solver.method_iterations;
+  v.handover_method = sweeps ? "none" : scene.solver.handover_method;
   v.tolerance = sweeps ? scene.solver.tolerance : scene.solver.merit_tolerance;
   v.joint_tolerance = sweeps ? 0.0 : std::min(scene.solver.merit_tolerance, scene.solver.joint_merit_tolerance);
   v.structure_tolerance = sweeps ? 0.0 : std::min(scene.solver.merit_tolerance, scene.solver.structure_merit_tolerance);
@@ -139,6 +140,7 @@ SolverSummary solver_summary(const Scene& scene, const RunHistory& h, const RunS
     v.breaking_solves += static_cast<long>(d.breaking_solves);
     v.breaking_decided += static_cast<long>(d.breaking_decided);
     v.breaking_capped += static_cast<long>(d.breaking_capped);
+    v.handovers += static_cast<long>(d.handovers);
     const bool in_window = !s.has_statistics || (h.time[i] >= s.surge.window_start && h.time[i] <= s.surge.window_end);
     window_steps += in_window;
     window_capped += in_window && d.solver_capped > 0;

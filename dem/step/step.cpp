@@ -99,6 +99,7 @@ void record_solver_report(const SolverReport& report, StepDiagnostics& d) {
   d.breaking_solves = report.breaking_solves;
   d.breaking_decided = report.breaking_decided;
   d.breaking_capped = report.breaking_capped;
+  d.handovers = report.handovers;
 }
 
 }  // namespace

@@ -29,6 +29,8 @@ double ContactSolver::remaining_error(double change, double previous_change, int
 ContactSolver::ContactSolver(const ContactSolverSettings& settings)
     : settings_(settings), merit_(merit_kind(settings.merit)) {
   if (settings_.method != kBulletSweeps) method_ = make_contact_method(settings_.method);
+  // the Newton method finishes the breaking solves when nothing is handed over (as before it)
+  if (method_) handover_ = make_contact_method(settings_.handover_method == "none" ? "newton" : settings_.handover_method);
 }
 
 // A manifold's place in the canonical order: the pair of bodies it joins (their user index 2:
@@ -418,6 +420,22 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   options.merit = merit_;
   options.warm_start = true;  // from the rows' warm start (solver.warm_start of the last step's)
   SolverAnswer answer = method_->solve(problem, options);
+  // the gradient method's count of steps grows with the island's stiffness (a lattice's
+  // joints, a level sheet's above all), the interior-point method's hardly: an island left at
+  // the cap goes on from that answer (docs/model/contact_problems.md, "The interior-point method")
+  // (both second-order methods fold the joints into the mass matrix: not with a rigid joint row)
+  const bool foldable = std::all_of(problem.joints.begin(), problem.joints.end(),
+                                    [](const ProblemJointRow& j) { return j.compliance > 0; });
+  if (settings_.handover_method != "none" && settings_.handover_method != settings_.method && foldable &&
+      answer.residual > options.tolerance && answer.sweeps >= options.max_iterations) {
+    MethodOptions more = options;
+    more.max_iterations = settings_.handover_iterations;
+    SolverAnswer next = handover_->solve(started_from(problem, answer), more);
+    next.sweeps += answer.sweeps;
+    if (next.residual <= answer.residual) answer = std::move(next);
+    answer.capped = answer.residual > options.tolerance;
+    ++report_.handovers;
+  }
   // A joint breaks when its load reaches its capacity, and at the joints' merit its load is
   // uncertain by a few per cent of the capacity (docs/model/contact_problems.md, "What the
   // merit leaves in the joints' loads"): an island whose answer puts a joint's failure ratio
@@ -456,15 +474,16 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
     if (!decided) {
       options.tolerance = settings_.breaking_merit_tolerance;
       keep_better(method_->solve(from_answer, options));
-      // the gradient method's tail can be long where the Newton method's is not (on the lattices'
-      // breaking steps one island in 17 stayed at 2e-5 after 20,000 gradient steps, where Newton
-      // reached 3e-6 in 327 of its steps): what the first method leaves above the tolerance, the
-      // Newton method finishes from its best answer
-      if (answer.residual > settings_.breaking_merit_tolerance && settings_.method != "newton") {
-        if (!newton_) newton_ = make_contact_method("newton");
+      // the gradient method's tail can be long where a second-order method's is not (on the
+      // lattices' breaking steps one island in 17 stayed at 2e-5 after 20,000 gradient steps,
+      // where Newton reached 3e-6 in 327 of its steps): what the first method leaves above the
+      // tolerance, the hand-over method (else Newton) finishes from its best answer
+      if (answer.residual > settings_.breaking_merit_tolerance && foldable &&
+          settings_.method != settings_.handover_method &&
+          !(settings_.handover_method == "none" && settings_.method == "newton")) {
         start_from(answer);
-        options.max_iterations = kBreakingNewtonSteps;
-        keep_better(newton_->solve(from_answer, options));
+        options.max_iterations = kBreakingFinishIterations;
+        keep_better(handover_->solve(from_answer, options));
       }
     }
     answer.capped = answer.residual > tolerance;  // the step's own tolerance: a tighter one is extra

@@ -106,6 +106,12 @@ struct ContactSolverSettings {
   double breaking_check_band = 0.04;
   int breaking_iterations = 3000;
   int method_iterations = 300;
+  // what goes on, from the method's answer, with an island the method left at
+  // method_iterations above its merit (at most handover_iterations of its iterations), and
+  // finishes a breaking solve left above breaking_merit_tolerance; "none": the island stays
+  // capped, and the Newton method finishes the breaking solves
+  std::string handover_method = "none";
+  int handover_iterations = 100;
   // cap of the split-impulse position sweeps (pseudo-impulses that push penetrating contacts
   // apart, apart from the contact impulses); they stop earlier at `tolerance`
   int position_iterations = 10;
@@ -120,6 +126,7 @@ struct SolverReport {
   int breaking_solves = 0;  // islands solved again for a joint near its capacity
   int breaking_decided = 0;  // of those, the ones that stopped at breaking_check_tolerance, every break decided
   int breaking_capped = 0;  // of those, the ones that stopped at the cap above the tighter merit
+  int handovers = 0;        // islands handed over at the method's cap (ContactSolverSettings::handover_method)
 
   void clear() { *this = SolverReport{}; }
   /// One island solved: its iterations, the residual it ended with, whether the cap stopped it.
@@ -254,9 +261,10 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   ContactSolverSettings settings_;
   const btCollisionObject* structure_ = nullptr;
   JointRatio joint_ratio_;
-  std::unique_ptr<ContactMethod> newton_;  // finishes a breaking solve the method left above its merit
-  // Newton steps then: the lattices' breaking steps needed at most 485 to 3e-6
-  static constexpr int kBreakingNewtonSteps = 1000;
+  std::unique_ptr<ContactMethod> handover_;  // goes on with what the method left at its cap; finishes breaking solves
+  // the finishing method's iterations then: Newton needed at most 485 of its steps to 3e-6 on
+  // the lattices' breaking steps, the interior-point method 26-571 on a level sheet's
+  static constexpr int kBreakingFinishIterations = 1000;
   ProblemObserver* observer_ = nullptr;
   MeritKind merit_;                            // settings_.merit
   std::unique_ptr<ContactMethod> method_;     // null: the sweeps

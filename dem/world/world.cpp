@@ -90,6 +90,8 @@ World::World(const WorldSettings& settings)
   contact.breaking_check_band = solver.breaking_check_band;
   contact.breaking_iterations = solver.breaking_iterations;
   contact.method_iterations = solver.method_iterations;
+  contact.handover_method = solver.handover_method;
+  contact.handover_iterations = solver.handover_iterations;
   contact.position_iterations = solver.position_iterations;
   solver_ = std::make_unique<ContactSolver>(contact);
   dynamics_ = std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),

@@ -38,9 +38,10 @@ class Keep : public ProblemObserver {
 
 // `method`: "pgs", the sweeps to `tolerance`; another contact method: to a merit of
 // `tolerance` (`structure_tolerance` on an island touching the structure, if smaller);
-// either at most `cap` sweeps or iterations
+// either at most `cap` sweeps or iterations, then `handover` from that answer (at most 100)
 inline std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, double tolerance = 1e-9,
-                                                   const std::string& method = "pgs", double structure_tolerance = 1.0) {
+                                                   const std::string& method = "pgs", double structure_tolerance = 1.0,
+                                                   const std::string& handover = "none") {
   ContactSolverSettings s;
   s.iterations = cap;
   s.tolerance = tolerance;
@@ -49,6 +50,7 @@ inline std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, d
   s.merit_tolerance = tolerance;
   s.structure_merit_tolerance = structure_tolerance;
   s.method_iterations = cap;
+  s.handover_method = handover;
   auto solver = std::make_unique<ContactSolver>(s);
   solver->set_observer(&keep);
   return solver;
@@ -130,11 +132,12 @@ struct RowStep {
   double plate_impulse = 0;      // N s, the normal impulse Bullet's contact points on the plate hold after the step
   double box_speed_min = 0, box_speed_max = 0;  // m/s, surge velocity of the boxes after the step
   double boundary_load = 0;      // N, what the fixed floor and walls take off the plate (dem/world/boundary_load.hpp)
+  int handovers = 0;             // islands handed over at the cap (ContactSolverSettings::handover_method)
 };
 inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e-9, double structure_tolerance = 1.0,
-                                int cap = 2000) {
+                                int cap = 2000, const std::string& handover = "none") {
   Keep keep;
-  Bench bench(tight_solver(keep, cap, tolerance, method, structure_tolerance));
+  Bench bench(tight_solver(keep, cap, tolerance, method, structure_tolerance, handover));
   auto* solver = static_cast<ContactSolver*>(bench.world().getConstraintSolver());
   bench.world().getSolverInfo().m_numIterations = cap;
   bench.world().getSolverInfo().m_warmstartingFactor = 1.0;
@@ -153,6 +156,7 @@ inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e
   keep.capture = true;
   bench.world().stepSimulation(kDt, 0);
   RowStep out{*keep.problem, keep.answer};
+  out.handovers = solver->report().handovers;
   btDispatcher& dispatcher = *bench.world().getDispatcher();
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);

@@ -20,6 +20,7 @@ std::string chosen(const Scene& s, const std::string& key) {
   if (key == "solver.order") return std::to_string(static_cast<int>(s.solver.order));
   if (key == "solver.method") return s.solver.method;
   if (key == "solver.merit") return s.solver.merit;
+  if (key == "solver.handover_method") return s.solver.handover_method;
   if (key == "fracture.joint_stiffness") return std::to_string(s.fracture.elastic_joints);
   if (key == "solver.broadphase") return std::to_string(static_cast<int>(s.solver.broadphase));
   if (key == "flow.model") return std::to_string(static_cast<int>(s.flow.model));
