@@ -83,8 +83,9 @@ std::vector<KeySpec> make_keys() {
                      "Bullet's rows (solver.iterations, solver.tolerance; friction clamped per direction, a "
                      "square); \"pgs_cone\", the same sweeps with Coulomb's disc on the island's problem; "
                      "\"newton\", the primal Newton method on the island's whole problem, joints included; "
-                     "\"apgd\", accelerated projected gradient on the same problem; these three to "
-                     "solver.merit_tolerance (docs/model/contact_problems.md)"));
+                     "\"apgd\", accelerated projected gradient on the same problem; \"ipm\", the primal-dual "
+                     "interior-point method on it; these four to solver.merit_tolerance (docs/model/"
+                     "contact_problems.md)"));
   k.push_back(real("solver.merit_tolerance", "-", 1e-3, 1e-14, 1.0,
                    "solver.method other than \"pgs\": an island is solved when its natural-map residual, the "
                    "merit every contact method is judged by (docs/model/contact_problems.md), is below this"));
@@ -133,8 +134,9 @@ std::vector<KeySpec> make_keys() {
                       "solver.method other than \"pgs\": cap of the method's iterations in each stage of an island "
                       "solved again for a joint near its capacity (solver.breaking_check_tolerance, then "
                       "solver.breaking_merit_tolerance; the gradient method needs a median of 1000-3000 on the "
-                      "lattices' breaking steps, and far more on a level sheet's, where Newton is the cheaper); what "
-                      "it leaves above that merit, the Newton method finishes (at most 1000 of its steps)"));
+                      "lattices' breaking steps, and far more on a level sheet's); what it leaves above that merit, "
+                      "solver.handover_method finishes (the Newton method with \"none\"; at most 1000 of its "
+                      "iterations)"));
   std::vector<std::string> handover{"none"};
   for (const std::string& name : contact_method_names(true))
     if (name != kBulletSweeps) handover.push_back(name);
