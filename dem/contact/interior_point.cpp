@@ -6,6 +6,7 @@
 
 #include <Eigen/SparseCholesky>
 
+#include "dem/contact/contact_hessian.hpp"
 #include "dem/contact/second_order_cone.hpp"
 
 namespace icedem {
@@ -14,14 +15,6 @@ namespace {
 using namespace soc;
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
-
-// position of (row, col) in the compressed values of H
-int slot(const SparseMatrix& H, int row, int col) {
-  const int* begin = H.innerIndexPtr() + H.outerIndexPtr()[col];
-  const int* end = H.innerIndexPtr() + H.outerIndexPtr()[col + 1];
-  return static_cast<int>(std::lower_bound(begin, end, row) - H.innerIndexPtr());
-}
 
 }  // namespace
 
@@ -43,38 +36,8 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
     return y;
   };
 
-  // H's pattern: the lower triangle of Mt and of every contact's body blocks
-  SparseMatrix H;
-  std::vector<std::vector<int>> slots(nc);
-  {
-    std::vector<Eigen::Triplet<double>> t;
-    for (int col = 0; col < folded.Mt.outerSize(); ++col)
-      for (SparseMatrix::InnerIterator it(folded.Mt, col); it; ++it)
-        if (it.row() >= it.col()) t.emplace_back(it.row(), it.col(), 0.0);
-    for (const ProblemContact& k : p.contacts)
-      for (int i : {k.a, k.b})
-        for (int j : {k.a, k.b})
-          if (i >= 0 && j >= 0 && i >= j)
-            for (int r = 0; r < 6; ++r)
-              for (int s = 0; s < 6; ++s)
-                if (6 * i + r >= 6 * j + s) t.emplace_back(6 * i + r, 6 * j + s, 0.0);
-    H.resize(n, n);
-    H.setFromTriplets(t.begin(), t.end());
-    H.makeCompressed();
-    for (int c = 0; c < nc; ++c) {
-      const ProblemContact& k = p.contacts[c];
-      for (int i : {k.a, k.b})
-        for (int j : {k.a, k.b}) {
-          if (i < 0 || j < 0 || i < j) continue;
-          for (int r = 0; r < 6; ++r)
-            for (int s = 0; s < 6; ++s) slots[c].push_back(6 * i + r >= 6 * j + s ? slot(H, 6 * i + r, 6 * j + s) : -1);
-        }
-    }
-  }
-  Eigen::VectorXd base = Eigen::VectorXd::Zero(H.nonZeros());
-  for (int col = 0; col < folded.Mt.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(folded.Mt, col); it; ++it)
-      if (it.row() >= it.col()) base(slot(H, static_cast<int>(it.row()), static_cast<int>(it.col()))) = it.value();
+  // H = Mt + G^T W^-2 G: its pattern once, its values every iteration
+  ContactHessian hessian(p, folded.Mt);
 
   // the start: the warm start's impulses and the velocities they give, pushed into the cones
   const Eigen::VectorXd r0 = options.warm_start ? contact_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(m));
@@ -176,7 +139,7 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
     if (best.residual <= options.tolerance || iteration >= options.max_iterations) break;
     // the scaling and H = Mt + G^T W^-2 G
     double mu_gap = 0.0;
-    Eigen::Map<Eigen::VectorXd>(H.valuePtr(), H.nonZeros()) = base;
+    hessian.reset();
     bool interior = true;
     for (int c = 0; c < nc && interior; ++c) {
       const Eigen::Vector3d sc = s.segment<3>(3 * c), zc = z.segment<3>(3 * c);
@@ -186,23 +149,12 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
       mu_gap += sc.dot(zc);
       const Eigen::Vector3d d = scale.segment<3>(3 * c);
       const Eigen::Matrix3d B = d.asDiagonal() * (scalings[c].W_inv * scalings[c].W_inv) * d.asDiagonal();
-      const ProblemContact& k = p.contacts[c];
-      int at = 0;
-      for (int i : {k.a, k.b})
-        for (int j : {k.a, k.b}) {
-          if (i < 0 || j < 0 || i < j) continue;
-          const ContactJacobian& Ji = i == k.a ? k.ja : k.jb;
-          const ContactJacobian& Jk = j == k.a ? k.ja : k.jb;
-          const Matrix6d block = Ji.transpose() * B * Jk;
-          for (int rr = 0; rr < 6; ++rr)
-            for (int ss = 0; ss < 6; ++ss, ++at)
-              if (slots[c][at] >= 0) H.valuePtr()[slots[c][at]] += block(rr, ss);
-        }
+      hessian.add(c, B);
     }
     if (!interior) break;  // round-off put a point on a cone's boundary: keep the best answer
     mu_gap /= std::max(nc, 1);
-    if (!analysed) cholesky.analyzePattern(H), analysed = true;
-    cholesky.factorize(H);
+    if (!analysed) cholesky.analyzePattern(hessian.matrix()), analysed = true;
+    cholesky.factorize(hessian.matrix());
     if (cholesky.info() != Eigen::Success) break;  // H is positive definite unless a mass matrix is not
 
     // predictor: the affine direction (d = -lambda)
@@ -211,13 +163,12 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
     const double a_affine = std::min(1.0, longest_step());
     const double gap = s.dot(z), gap_affine = (s + a_affine * ds).dot(z + a_affine * dz);
     const double sigma = std::clamp(std::pow(std::max(gap_affine, 0.0) / gap, 3), 0.0, 1.0);
-    const double target_gap = sigma * mu_gap;
     // corrector: d = -lambda + lambda^-1 o (sigma mu e - (W^-1 ds_a) o (W dz_a))
     dsa = ds, dza = dz;
     for (int c = 0; c < nc; ++c) {
       const Scaling& sc = scalings[c];
       Eigen::Vector3d rhs = -jordan(sc.W_inv * dsa.segment<3>(3 * c), sc.W * dza.segment<3>(3 * c));
-      rhs(0) += target_gap;
+      rhs(0) += sigma * mu_gap;
       target.segment<3>(3 * c) = -sc.lambda + jordan_solve(sc.lambda, rhs);
     }
     direction(target);
@@ -238,7 +189,7 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
     }
     update_shift();
   }
-  if (!best.r.size()) {  // nothing judged (cannot happen: the loop judges before it leaves)
+  if (!best.r.size()) {  // no merit was a number (a blow-up): no impulses
     best.r = Eigen::VectorXd::Zero(m);
     best.l = Eigen::VectorXd::Zero(p.joint_rows());
   }

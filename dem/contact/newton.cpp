@@ -6,6 +6,8 @@
 
 #include <Eigen/SparseCholesky>
 
+#include "dem/contact/contact_hessian.hpp"
+
 namespace icedem {
 namespace {
 
@@ -38,21 +40,16 @@ Eigen::Matrix3d cone_projection_jacobian(const Eigen::Vector3d& x, double mu, in
   return d;
 }
 
-// position of (row, col) in the compressed values of H
-int slot(const SparseMatrix& H, int row, int col) {
-  const int* begin = H.innerIndexPtr() + H.outerIndexPtr()[col];
-  const int* end = H.innerIndexPtr() + H.outerIndexPtr()[col + 1];
-  return static_cast<int>(std::lower_bound(begin, end, row) - H.innerIndexPtr());
-}
-
 // The inner problem's data and its function, gradient and Hessian pieces.
 class InnerProblem {
  public:
   InnerProblem(const ContactProblem& p, double rho_fraction)
-      : p_(p), g_(global_form(p)), nb_(static_cast<int>(p.bodies.size())), nc_(static_cast<int>(p.contacts.size())) {
-    // the part of the Hessian that does not change: the mass with the soft joints folded
-    // in (throws if a joint row is rigid)
-    const SparseMatrix Hc = folded_mass_matrix(g_).Mt;
+      : g_(global_form(p)),
+        nb_(static_cast<int>(p.bodies.size())),
+        nc_(static_cast<int>(p.contacts.size())),
+        // the part of the Hessian that does not change: the mass with the soft joints folded
+        // in (throws if a joint row is rigid), and every contact's body blocks
+        hessian_(p, folded_mass_matrix(g_).Mt) {
     c_inv_ = g_.compliance.cwiseInverse();
     Jj_t_ = g_.Jj.transpose();
     Jc_ = g_.Jc;
@@ -69,34 +66,6 @@ class InnerProblem {
       if (k.b >= 0) trace += (k.jb * inv_mass_[k.b] * k.jb.transpose()).trace();
       rho_(c) = rho_fraction * trace / 3.0;
     }
-
-    // the Hessian's lower triangle: Hc and every contact's body blocks
-    std::vector<Eigen::Triplet<double>> t;
-    for (int col = 0; col < Hc.outerSize(); ++col)
-      for (SparseMatrix::InnerIterator it(Hc, col); it; ++it)
-        if (it.row() >= it.col()) t.emplace_back(it.row(), it.col(), it.value());
-    auto each_block = [&](const ProblemContact& k, auto&& visit) {
-      for (int i : {k.a, k.b})
-        for (int j : {k.a, k.b})
-          if (i >= 0 && j >= 0 && i >= j) visit(i, j);
-    };
-    for (const ProblemContact& k : p.contacts)
-      each_block(k, [&](int i, int j) {
-        for (int r = 0; r < 6; ++r)
-          for (int s = 0; s < 6; ++s)
-            if (6 * i + r >= 6 * j + s) t.emplace_back(6 * i + r, 6 * j + s, 0.0);
-      });
-    H_.resize(6 * nb_, 6 * nb_);
-    H_.setFromTriplets(t.begin(), t.end());
-    H_.makeCompressed();
-    base_ = Eigen::Map<const Eigen::VectorXd>(H_.valuePtr(), H_.nonZeros());
-    slots_.resize(nc_);
-    for (int c = 0; c < nc_; ++c)
-      each_block(p.contacts[c], [&](int i, int j) {
-        for (int r = 0; r < 6; ++r)
-          for (int s = 0; s < 6; ++s)
-            slots_[c].push_back(6 * i + r >= 6 * j + s ? slot(H_, 6 * i + r, 6 * j + s) : -1);
-      });
   }
 
   const GlobalForm& global() const { return g_; }
@@ -130,26 +99,14 @@ class InnerProblem {
   // H = Hc + Jc^T diag(dP_c / rho_c) Jc at the current arguments; `kinds` gets where each went
   const SparseMatrix& hessian(const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s,
                               std::vector<int>& kinds) {
-    Eigen::Map<Eigen::VectorXd>(H_.valuePtr(), H_.nonZeros()) = base_;
+    hessian_.reset();
     kinds.resize(nc_);
     for (int c = 0; c < nc_; ++c) {
-      const ProblemContact& k = p_.contacts[c];
       const Eigen::Matrix3d B =
           cone_projection_jacobian(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), kinds[c]) / rho_(c);
-      if (kinds[c] == 0) continue;
-      int at = 0;
-      for (int i : {k.a, k.b})
-        for (int j : {k.a, k.b}) {
-          if (i < 0 || j < 0 || i < j) continue;
-          const ContactJacobian& Ji = i == k.a ? k.ja : k.jb;
-          const ContactJacobian& Jk = j == k.a ? k.ja : k.jb;
-          const Matrix6d block = Ji.transpose() * B * Jk;
-          for (int rr = 0; rr < 6; ++rr)
-            for (int ss = 0; ss < 6; ++ss, ++at)
-              if (slots_[c][at] >= 0) H_.valuePtr()[slots_[c][at]] += block(rr, ss);
-        }
+      if (kinds[c] != 0) hessian_.add(c, B);
     }
-    return H_;
+    return hessian_.matrix();
   }
 
   // The derivative of f along d at step a: phi'(a) = G(v + a d) . d, from the pieces
@@ -195,16 +152,13 @@ class InnerProblem {
   }
 
  private:
-  const ContactProblem& p_;
   GlobalForm g_;
   int nb_, nc_;
   Eigen::VectorXd c_inv_, rho_;
   SparseMatrix Jj_t_, Jc_t_;
   Eigen::SparseMatrix<double, Eigen::RowMajor> Jc_;
   std::vector<Matrix6d> inv_mass_;
-  SparseMatrix H_;
-  Eigen::VectorXd base_;
-  std::vector<std::vector<int>> slots_;
+  ContactHessian hessian_;
 };
 
 // The step length a > 0 where phi'(a) = 0 (phi convex: phi' nondecreasing, phi'(0) < 0),

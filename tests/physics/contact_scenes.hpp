@@ -177,6 +177,56 @@ inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e
 }
 inline ContactProblem sliding_row() { return sliding_row_step("pgs").problem; }
 
+// The sliding row's known answer: the plate carries all the boxes' friction, n mu m g h over
+// the step. A method's answer on the captured problem, cold (the whole chain's load from zero
+// impulses), to `merit`: not capped, the merit reached, and the plate's impulse within 1e-6 of
+// n mu m g h (a merit of 1e-8 or below is relative to the row's largest impulse or velocity,
+// which bounds the plate's error to about 1e-6 of it). Returns the answer.
+inline SolverAnswer expect_all_friction_on_the_plate(const std::string& method, double merit, int cap) {
+  const ContactProblem p = sliding_row();
+  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;  // N s over the step
+  const SolverAnswer a = solve_with(method, p, merit, cap, false);
+  EXPECT_FALSE(a.capped) << method << ": merit " << a.residual << " after " << a.sweeps << " iterations";
+  EXPECT_LT(natural_map_residual(local_form(p), a.r), merit);
+  EXPECT_NEAR(normal_impulse(p, a.r, [](const ProblemContact& c) { return c.on_structure; }), expected,
+              1e-6 * expected);
+  std::printf("sliding row: %s, %d iterations to a merit of %.1e\n", method.c_str(), a.sweeps, a.residual);
+  return a;
+}
+
+// The same after a step of a run: the answer went back into Bullet's rows, so the plate's
+// contact points hold n mu m g h and every box keeps the plate's speed, both to 1e-6
+inline void expect_the_row_holds(const RowStep& s) {
+  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;
+  EXPECT_FALSE(s.answer.capped) << "merit " << s.answer.residual;
+  EXPECT_NEAR(s.plate_impulse, expected, 1e-6 * expected);
+  EXPECT_NEAR(s.box_speed_min, kPlateSpeed, 1e-6 * kPlateSpeed);
+  EXPECT_NEAR(s.box_speed_max, kPlateSpeed, 1e-6 * kPlateSpeed);
+}
+
+// the pushed lattices' problem solved to 1e-8 against Siconos' reference on the folded
+// form, by `method` in at most `cap` iterations; returns the iterations taken
+inline int expect_the_folded_answer(const ContactProblem& p, const std::string& method, int cap) {
+  const GlobalForm g = global_form(p);
+  const SolverAnswer folded = reference(p, 1e-11);
+  const SolverAnswer a = solve_with(method, p, 1e-8, cap);
+  EXPECT_FALSE(a.capped) << method << ": merit " << a.residual << " after " << a.sweeps << " iterations";
+  // judged on the folded form too (the joint rows exact): the same answer
+  EXPECT_LT(natural_map_residual(local_form(p), a.r), 1e-7);
+  const Eigen::VectorXd v_folded = velocities(g, folded.r, folded.l), v = velocities(g, a.r, a.l);
+  // at a merit of 1e-8, the bodies' velocities within 1e-5 of the reference (the joint
+  // rows are stiff: C ~ 1e-3 of the rows' inverse mass, so a velocity error carries a
+  // thousandfold into the joint impulses, which are left to the merit)
+  EXPECT_LT((v - v_folded).norm(), 1e-5 * v_folded.norm());
+  // the joints are folded into the lattices' mass matrices and their impulses follow from the
+  // velocities: the joint rows J v + b + C l = 0 hold to round-off, whatever the merit
+  const Eigen::VectorXd Jv = g.Jj * v, Cl = g.compliance.cwiseProduct(a.l);
+  EXPECT_LT((Jv + g.b + Cl).norm(), 1e-9 * std::max({g.b.norm(), Jv.norm(), Cl.norm()}));
+  std::printf("pushed lattices: %zu bodies, %zu contacts, %d joint rows; %s, %d iterations to %.1e\n",
+              p.bodies.size(), p.contacts.size(), p.joint_rows(), method.c_str(), a.sweeps, a.residual);
+  return a.sweeps;
+}
+
 // Two lattices of 0.15 m elements (a strip, 0.6 x 0.3 m unless given, and a 0.3 x 0.3 m
 // square), frictionless, the square pushed into the strip's end at 0.2 m/s; joints soft
 // (the 0.15 m paper CFM) and unbreakable; solved to 1e-9 by Bullet's rows. `keep` gets the

@@ -19,32 +19,13 @@
 using namespace icedem;
 using namespace icedem::testing;
 
-TEST(ContactApgd, SlidingRowPutsAllTheFrictionOnThePlate) {
-  const ContactProblem p = sliding_row();
-  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;  // N s over the step
-  // cold, from zero impulses: the whole chain's load has to travel 20 boxes
-  const SolverAnswer a = solve_with("apgd", p, 1e-8, 5000, false);
-  EXPECT_FALSE(a.capped) << "merit " << a.residual << " after " << a.sweeps << " steps";
-  EXPECT_LT(natural_map_residual(local_form(p), a.r), 1e-8);
-  // the merit is relative to the problem's largest impulse or velocity: 1e-8 of the
-  // row's total impulse bounds the plate's error to about 1e-6 of it
-  EXPECT_NEAR(normal_impulse(p, a.r, [](const ProblemContact& c) { return c.on_structure; }), expected,
-              1e-6 * expected);
-  std::printf("sliding row: %d gradient steps to a merit of %.1e\n", a.sweeps, a.residual);
-}
+// cold, from zero impulses: the whole chain's load has to travel 20 boxes
+TEST(ContactApgd, SlidingRowPutsAllTheFrictionOnThePlate) { expect_all_friction_on_the_plate("apgd", 1e-8, 5000); }
 
 // solver.method = "apgd" in a run: the island's answer goes back into Bullet's rows, so
 // the plate's contact points hold n mu m g h after the step and the boxes move with it
-TEST(ContactApgd, InTheRunTheRowsHoldTheAnswer) {
-  // to a merit of 1e-8: a first-order method needs about 2500 steps for 1e-9 here
-  const RowStep s = sliding_row_step("apgd", 1e-8);
-  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;
-  EXPECT_FALSE(s.answer.capped) << "merit " << s.answer.residual;
-  // 1e-8 of the row's largest impulse or velocity: within 1e-6 of the plate's impulse and speed
-  EXPECT_NEAR(s.plate_impulse, expected, 1e-6 * expected);
-  EXPECT_NEAR(s.box_speed_min, kPlateSpeed, 1e-6 * kPlateSpeed);
-  EXPECT_NEAR(s.box_speed_max, kPlateSpeed, 1e-6 * kPlateSpeed);
-}
+// (to a merit of 1e-8: a first-order method needs about 2500 steps for 1e-9 here)
+TEST(ContactApgd, InTheRunTheRowsHoldTheAnswer) { expect_the_row_holds(sliding_row_step("apgd", 1e-8)); }
 
 // solver.structure_merit_tolerance: an island touching the structure (the row touches the
 // plate) is solved to that merit when it is below solver.merit_tolerance
@@ -64,34 +45,11 @@ TEST(ContactApgd, TheIslandOnTheStructureIsSolvedToItsOwnTolerance) {
               std::abs(loose.plate_impulse - expected) / expected, std::abs(tight.plate_impulse - expected) / expected);
 }
 
-// the pushed lattices' problem solved to 1e-8 against Siconos' reference on the folded
-// form; returns the gradient steps taken
-int expect_the_folded_answer(const ContactProblem& p) {
-  const GlobalForm g = global_form(p);
-  const SolverAnswer folded = reference(p, 1e-11);
-  const SolverAnswer a = solve_with("apgd", p, 1e-8, 20000);
-  EXPECT_FALSE(a.capped) << "merit " << a.residual << " after " << a.sweeps << " steps";
-  // judged on the folded form too (the joint rows exact): the same answer
-  EXPECT_LT(natural_map_residual(local_form(p), a.r), 1e-7);
-  const Eigen::VectorXd v_folded = velocities(g, folded.r, folded.l), v = velocities(g, a.r, a.l);
-  // at a merit of 1e-8, the bodies' velocities within 1e-5 of the reference (the joint
-  // rows are stiff: C ~ 1e-3 of the rows' inverse mass, so a velocity error carries a
-  // thousandfold into the joint impulses, which are left to the merit)
-  EXPECT_LT((v - v_folded).norm(), 1e-5 * v_folded.norm());
-  // the joints are folded into the lattices' mass matrices and their impulses follow from the
-  // velocities: the joint rows J v + b + C l = 0 hold to round-off, whatever the merit
-  const Eigen::VectorXd Jv = g.Jj * v, Cl = g.compliance.cwiseProduct(a.l);
-  EXPECT_LT((Jv + g.b + Cl).norm(), 1e-9 * std::max({g.b.norm(), Jv.norm(), Cl.norm()}));
-  std::printf("pushed lattices: %zu bodies, %zu contacts, %d joint rows; %d gradient steps to %.1e\n",
-              p.bodies.size(), p.contacts.size(), p.joint_rows(), a.sweeps, a.residual);
-  return a.sweeps;
-}
-
 TEST(ContactApgd, LatticeJointRowsGiveTheFoldedAnswer) {
   Keep keep;
   pushed_lattices(keep);
   ASSERT_TRUE(keep.problem) << "the lattices never touched";
-  expect_the_folded_answer(*keep.problem);
+  expect_the_folded_answer(*keep.problem, "apgd", 20000);
 }
 
 // A lattice of more than LatticeMass::kDenseElements elements (a 1.2 x 0.9 m strip of 48)
@@ -105,7 +63,7 @@ TEST(ContactApgd, LargeLatticeIsFoldedThroughASparseFactor) {
   ASSERT_EQ(keep.problem->bodies.size(), 48u + 4u);
   // measured: 247 gradient steps to 1e-8 folded, 1067 with the joint rows iterated (as
   // before the sparse factor), which also leaves the joint rows' equations off by 6e-9
-  EXPECT_LT(expect_the_folded_answer(*keep.problem), 600);
+  EXPECT_LT(expect_the_folded_answer(*keep.problem, "apgd", 20000), 600);
 }
 
 // Islands of the paper run's jams, where the run's sweeps stopped at 1e-2: APGD reaches

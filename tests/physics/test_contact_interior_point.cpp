@@ -53,69 +53,37 @@ TEST(SecondOrderCone, TheStepToTheBoundaryEndsOnIt) {
   EXPECT_LT((soc::jordan(l, soc::jordan_solve(l, b)) - b).norm(), 1e-12);
 }
 
+// cold: the chain's whole load from zero impulses, every contact sliding (De Saxce's shift)
 TEST(ContactInteriorPoint, SlidingRowPutsAllTheFrictionOnThePlate) {
-  const ContactProblem p = sliding_row();
-  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;  // N s over the step
-  // cold: the chain's whole load from zero impulses
-  const SolverAnswer a = solve_with("ipm", p, 1e-9, 200, false);
-  EXPECT_FALSE(a.capped) << "merit " << a.residual << " after " << a.sweeps << " iterations";
-  EXPECT_LT(natural_map_residual(local_form(p), a.r), 1e-9);
-  // the plate's impulse is n mu m g h: at a merit of 1e-9 within 1e-6 of it
-  EXPECT_NEAR(normal_impulse(p, a.r, [](const ProblemContact& c) { return c.on_structure; }), expected,
-              1e-6 * expected);
-  std::printf("sliding row: %d interior-point iterations to a merit of %.1e\n", a.sweeps, a.residual);
+  expect_all_friction_on_the_plate("ipm", 1e-9, 200);
 }
 
-// The method in a run (solver.method = "ipm"): its impulses go back to Bullet's rows, so the
-// plate's contact points hold n mu m g h after the step and every box keeps the plate's speed
-TEST(ContactInteriorPoint, InTheRunTheRowsHoldTheAnswer) {
-  const RowStep s = sliding_row_step("ipm");
-  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;
-  EXPECT_FALSE(s.answer.capped) << "merit " << s.answer.residual;
-  EXPECT_NEAR(s.plate_impulse, expected, 1e-6 * expected);
-  EXPECT_NEAR(s.box_speed_min, kPlateSpeed, 1e-6 * kPlateSpeed);
-  EXPECT_NEAR(s.box_speed_max, kPlateSpeed, 1e-6 * kPlateSpeed);
-}
+// The method in a run (solver.method = "ipm"): its impulses go back to Bullet's rows
+TEST(ContactInteriorPoint, InTheRunTheRowsHoldTheAnswer) { expect_the_row_holds(sliding_row_step("ipm")); }
 
 // The hand-over in a run (solver.handover_method): the gradient method stopped after 5 steps,
 // far from the answer, and the island goes on with the interior-point method from there: the
 // step ends converged, with the plate's exact impulse, and the report counts one hand-over;
 // without it the step ends capped
 TEST(ContactInteriorPoint, AnIslandCappedByTheGradientMethodIsHandedOver) {
-  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;
   const RowStep capped = sliding_row_step("apgd", 1e-9, 1.0, 5, "none");
   EXPECT_TRUE(capped.answer.capped) << "merit " << capped.answer.residual;
   EXPECT_EQ(capped.handovers, 0);
   const RowStep s = sliding_row_step("apgd", 1e-9, 1.0, 5, "ipm");
-  EXPECT_FALSE(s.answer.capped) << "merit " << s.answer.residual;
   EXPECT_EQ(s.handovers, 1);
-  EXPECT_NEAR(s.plate_impulse, expected, 1e-6 * expected);
-  EXPECT_NEAR(s.box_speed_min, kPlateSpeed, 1e-6 * kPlateSpeed);
-  EXPECT_NEAR(s.box_speed_max, kPlateSpeed, 1e-6 * kPlateSpeed);
+  expect_the_row_holds(s);
   std::printf("sliding row, 5 gradient steps: merit %.1e; handed over: %.1e after %d iterations in all\n",
               capped.answer.residual, s.answer.residual, s.answer.sweeps);
 }
 
 // Lattices: the answer's joint impulses are the ones the contacts' impulses give with the
-// joints folded (the method judges itself on that form), so the joint rows hold to
-// round-off and the velocities are the folded reference's to what the merit allows
+// joints folded (the method judges itself on that form), so the joint rows hold to round-off
+// and the velocities are the folded reference's to what the merit allows
 TEST(ContactInteriorPoint, LatticeJointsGiveTheFoldedAnswer) {
   Keep keep;
   pushed_lattices(keep);
   ASSERT_TRUE(keep.problem) << "the lattices never touched";
-  const ContactProblem& p = *keep.problem;
-  const GlobalForm g = global_form(p);
-  const SolverAnswer folded = reference(p, 1e-11);
-  const SolverAnswer a = solve_with("ipm", p, 1e-8, 200);
-  EXPECT_FALSE(a.capped) << "merit " << a.residual << " after " << a.sweeps << " iterations";
-  EXPECT_LT(natural_map_residual(local_form(p), a.r), 1e-7);
-  const Eigen::VectorXd v_folded = velocities(g, folded.r, folded.l), v = velocities(g, a.r, a.l);
-  // as the gradient method's test: at 1e-8 the velocities within 1e-5 of the reference
-  EXPECT_LT((v - v_folded).norm(), 1e-5 * v_folded.norm());
-  const Eigen::VectorXd Jv = g.Jj * v, Cl = g.compliance.cwiseProduct(a.l);
-  EXPECT_LT((Jv + g.b + Cl).norm(), 1e-9 * std::max({g.b.norm(), Jv.norm(), Cl.norm()}));
-  std::printf("pushed lattices: %zu contacts, %d joint rows; %d iterations to %.1e\n", p.contacts.size(),
-              p.joint_rows(), a.sweeps, a.residual);
+  expect_the_folded_answer(*keep.problem, "ipm", 200);
 }
 
 // Islands of the paper run's jams: to 1e-6, the unique parts of the answer (velocities, the

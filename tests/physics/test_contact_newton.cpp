@@ -16,34 +16,14 @@
 using namespace icedem;
 using namespace icedem::testing;
 
-TEST(ContactNewton, SlidingRowPutsAllTheFrictionOnThePlate) {
-  const ContactProblem p = sliding_row();
-  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;  // N s over the step
-  // cold: the chain's whole load from zero impulses; 1e-10 is round-off for this problem
-  const SolverAnswer a = solve_with("newton", p, 1e-10, 200, false);
-  EXPECT_FALSE(a.capped) << "merit " << a.residual << " after " << a.sweeps << " Newton steps";
-  EXPECT_LT(natural_map_residual(local_form(p), a.r), 1e-9);
-  // the plate's impulse is n mu m g h: at a merit of 1e-10 within 1e-6 of it
-  EXPECT_NEAR(normal_impulse(p, a.r, [](const ProblemContact& c) { return c.on_structure; }), expected,
-              1e-6 * expected);
-  std::printf("sliding row: %d Newton steps to a merit of %.1e\n", a.sweeps, a.residual);
-}
+// cold: the chain's whole load from zero impulses; 1e-10 is round-off for this problem
+TEST(ContactNewton, SlidingRowPutsAllTheFrictionOnThePlate) { expect_all_friction_on_the_plate("newton", 1e-10, 200); }
 
 // The method in a run (solver.method = "newton", dem/world/contact_solver.cpp): the island is
 // solved by Newton and its impulses written back to Bullet's rows, so the contact points
 // on the plate hold n mu m g h after the step and every box keeps the plate's speed
 // (a row pushed at constant speed: friction balances the push exactly).
-TEST(ContactNewton, InTheRunTheRowsHoldNewtonsAnswer) {
-  const RowStep s = sliding_row_step("newton");
-  const double expected = kRowBoxes * kRowMu * kBoxMass * kGravity * kDt;
-  EXPECT_FALSE(s.answer.capped) << "merit " << s.answer.residual;
-  EXPECT_NEAR(s.plate_impulse, expected, 1e-6 * expected);
-  // the boxes' surge velocity is the plate's to 1e-6 of it (the merit's 1e-9 on velocities of 0.05 m/s)
-  EXPECT_NEAR(s.box_speed_min, kPlateSpeed, 1e-6 * kPlateSpeed);
-  EXPECT_NEAR(s.box_speed_max, kPlateSpeed, 1e-6 * kPlateSpeed);
-  std::printf("sliding row in a run: plate %.6f N s of %.6f; boxes at %.6f..%.6f m/s\n", s.plate_impulse, expected,
-              s.box_speed_min, s.box_speed_max);
-}
+TEST(ContactNewton, InTheRunTheRowsHoldNewtonsAnswer) { expect_the_row_holds(sliding_row_step("newton")); }
 
 TEST(ContactNewton, LatticeJointsInTheHessianGiveTheFoldedAnswer) {
   Keep keep;
