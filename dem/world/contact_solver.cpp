@@ -30,7 +30,8 @@ ContactSolver::ContactSolver(const ContactSolverSettings& settings)
     : settings_(settings), merit_(merit_kind(settings.merit)) {
   if (settings_.method != kBulletSweeps) method_ = make_contact_method(settings_.method);
   // the Newton method finishes the breaking solves when nothing is handed over (as before it)
-  if (method_) handover_ = make_contact_method(settings_.handover_method == "none" ? "newton" : settings_.handover_method);
+  if (method_)
+    handover_ = make_contact_method(settings_.handover_method == "none" ? "newton" : settings_.handover_method);
 }
 
 // A manifold's place in the canonical order: the pair of bodies it joins (their user index 2:
