@@ -94,7 +94,7 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
   // (so that the joint rows hold exactly what the run applies), one solve with Mt's factor
   Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> mass_factor;
   if (g.Jj.rows()) mass_factor.compute(folded.Mt);
-  const auto judge = [&](int iterations) {
+  const auto judge = [&] {
     const Eigen::VectorXd r = z.cwiseProduct(scale);
     const Eigen::VectorXd f = Jc_t * r + folded.ft;
     const Eigen::VectorXd v_r = g.Jj.rows() ? Eigen::VectorXd(mass_factor.solve(f)) : inverse_mass_times(f);
@@ -105,7 +105,6 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
       best.l = g.Jj.rows() ? Eigen::VectorXd(-g.compliance.cwiseInverse().cwiseProduct(g.Jj * v_r + g.b))
                            : Eigen::VectorXd();
     }
-    best.sweeps = iterations;
   };
   // Newton's direction for the cones' right-hand side d (W dz + W^-1 ds = d per cone)
   const auto direction = [&](const Eigen::VectorXd& d) {
@@ -135,7 +134,7 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
     // the residuals at the current point and shift (Mt v - ft - G^T z; s - (G v + h))
     rx = folded.Mt * v - folded.ft - Jc_t * z.cwiseProduct(scale);
     rz = s - y_of(u);
-    judge(iteration);
+    judge();
     if (best.residual <= options.tolerance || iteration >= options.max_iterations) break;
     // the scaling and H = Mt + G^T W^-2 G
     double mu_gap = 0.0;

@@ -27,11 +27,12 @@ double ContactSolver::remaining_error(double change, double previous_change, int
 }
 
 ContactSolver::ContactSolver(const ContactSolverSettings& settings)
-    : settings_(settings), merit_(merit_kind(settings.merit)) {
+    : settings_(settings),
+      // the Newton method finishes the breaking solves when nothing is handed over (as before it)
+      finishing_method_(settings.handover_method == "none" ? "newton" : settings.handover_method),
+      merit_(merit_kind(settings.merit)) {
   if (settings_.method != kBulletSweeps) method_ = make_contact_method(settings_.method);
-  // the Newton method finishes the breaking solves when nothing is handed over (as before it)
-  if (method_)
-    handover_ = make_contact_method(settings_.handover_method == "none" ? "newton" : settings_.handover_method);
+  if (method_) handover_ = make_contact_method(finishing_method_);
 }
 
 // A manifold's place in the canonical order: the pair of bodies it joins (their user index 2:
@@ -425,10 +426,12 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   // joints, a level sheet's above all), the interior-point method's hardly: an island left at
   // the cap goes on from that answer (docs/model/contact_problems.md, "The interior-point method")
   // (both second-order methods fold the joints into the mass matrix: not with a rigid joint row)
-  const bool foldable = std::all_of(problem.joints.begin(), problem.joints.end(),
-                                    [](const ProblemJointRow& j) { return j.compliance > 0; });
-  if (settings_.handover_method != "none" && settings_.handover_method != settings_.method && foldable &&
-      answer.residual > options.tolerance && answer.sweeps >= options.max_iterations) {
+  const auto foldable = [&problem] {
+    return std::all_of(problem.joints.begin(), problem.joints.end(),
+                       [](const ProblemJointRow& j) { return j.compliance > 0; });
+  };
+  if (settings_.handover_method != "none" && settings_.handover_method != settings_.method &&
+      answer.residual > options.tolerance && answer.sweeps >= options.max_iterations && foldable()) {
     MethodOptions more = options;
     more.max_iterations = settings_.handover_iterations;
     SolverAnswer next = handover_->solve(started_from(problem, answer), more);
@@ -444,12 +447,7 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   if (joint_ratio_ && !problem.joints.empty() && settings_.breaking_merit_tolerance < options.tolerance &&
       std::abs(joint_ratio_(problem, answer.l) - 1) <= 1 - settings_.breaking_ratio) {
     const double tolerance = options.tolerance;
-    ContactProblem from_answer = problem;  // the observer sees the run's own warm start
-    const auto start_from = [&from_answer](const SolverAnswer& a) {
-      for (std::size_t c = 0; c < from_answer.contacts.size(); ++c) from_answer.contacts[c].guess = a.r.segment<3>(3 * c);
-      for (std::size_t j = 0; j < from_answer.joints.size(); ++j) from_answer.joints[j].guess = a.l(static_cast<int>(j));
-    };
-    start_from(answer);
+    // each stage starts from the best answer so far (a copy: the observer sees the run's own warm start)
     options.max_iterations = settings_.breaking_iterations;
     const auto keep_better = [&answer](SolverAnswer next) {
       if (next.residual <= answer.residual) {
@@ -467,24 +465,21 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
     bool decided = false;
     if (check > settings_.breaking_merit_tolerance && check < tolerance) {
       options.tolerance = check;
-      keep_better(method_->solve(from_answer, options));
+      keep_better(method_->solve(started_from(problem, answer), options));
       decided = answer.residual <= check &&
                 std::abs(joint_ratio_(problem, answer.l) - 1) > settings_.breaking_check_band;
-      start_from(answer);
     }
     if (!decided) {
       options.tolerance = settings_.breaking_merit_tolerance;
-      keep_better(method_->solve(from_answer, options));
+      keep_better(method_->solve(started_from(problem, answer), options));
       // the gradient method's tail can be long where a second-order method's is not (on the
       // lattices' breaking steps one island in 17 stayed at 2e-5 after 20,000 gradient steps,
       // where Newton reached 3e-6 in 327 of its steps): what the first method leaves above the
       // tolerance, the hand-over method (else Newton) finishes from its best answer
-      if (answer.residual > settings_.breaking_merit_tolerance && foldable &&
-          settings_.method != settings_.handover_method &&
-          !(settings_.handover_method == "none" && settings_.method == "newton")) {
-        start_from(answer);
+      if (answer.residual > settings_.breaking_merit_tolerance && settings_.method != finishing_method_ &&
+          foldable()) {
         options.max_iterations = kBreakingFinishIterations;
-        keep_better(handover_->solve(from_answer, options));
+        keep_better(handover_->solve(started_from(problem, answer), options));
       }
     }
     answer.capped = answer.residual > tolerance;  // the step's own tolerance: a tighter one is extra

@@ -261,6 +261,7 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   ContactSolverSettings settings_;
   const btCollisionObject* structure_ = nullptr;
   JointRatio joint_ratio_;
+  std::string finishing_method_;             // handover_'s: settings_.handover_method, or Newton with "none"
   std::unique_ptr<ContactMethod> handover_;  // goes on with what the method left at its cap; finishes breaking solves
   // the finishing method's iterations then: Newton needed at most 485 of its steps to 3e-6 on
   // the lattices' breaking steps, the interior-point method 26-571 on a level sheet's
