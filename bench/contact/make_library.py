@@ -10,7 +10,7 @@ joint breaks, once more (the runs are deterministic) to write the islands of the
 steps that broke joints, the solves whose loads broke them. A set whose directory
 already holds files is skipped, so the script resumes where it stopped.
 
-Sets (about 25 minutes of CPU in all):
+Sets (about 1.5 hours of CPU in all):
   small_jam    the paper's small floes: islands the PGS sweeps stopped at their cap
   wide_jam     the same on a 48 m wide field (9,600 floes), the longest chains
   large_rigid  the paper's 0.6 m rigid floes: capped islands as the pack builds up
@@ -19,6 +19,9 @@ Sets (about 25 minutes of CPU in all):
   lattice_020  0.6 m floes of 0.20 m elements: steps that broke a joint
   lattice_015  0.6 m floes of 0.15 m elements: steps that broke a joint, among them
                floes pressed under the cone
+  hexagon_015  0.6 m floes of 0.15 m hexagons: steps that broke a joint
+  level_ice    level ice of 0.15 m elements, its first 40 s: the free sheet with the rubble
+               at the cone (hundreds of elements, thousands of joint rows)
 """
 import argparse
 import os
@@ -55,6 +58,9 @@ SETS = {
                ["--export-at", "40,46,50,54,58", "--export-min-contacts", "50"]),
     "lattice_020": ("paper/large_floes_breakable_020.toml", [], None),
     "lattice_015": ("paper/large_floes_breakable_015.toml", [], None),
+    "hexagon_015": ("paper/large_floes_hexagon_015.toml", [], None),
+    "level_ice": ("level_ice/level_ice_015.toml", ["--set", "time.duration=40"],
+                  ["--export-at", "14,22,30,38", "--export-min-contacts", "100"]),
 }
 BREAK_STEPS = 6  # steps with breaks written per lattice set, spread over the run
 

@@ -277,6 +277,12 @@ class DualProblem {
       }
       const int k = static_cast<int>(g.bodies.size());
       for (int b = 0; b < k; ++b) g.impulse.segment<6>(6 * b) = body_impulse_.segment<6>(6 * g.bodies[b]);
+      if (which == Velocities::kTouched) {
+        // the solve over the touched elements' reach in the factor, their velocities read
+        g.mass.solve_on(g.reach, g.impulse, g.velocity);
+        for (int e : g.touched) body_velocity_.segment<6>(6 * g.bodies[e]) = g.velocity.segment<6>(6 * e);
+        continue;
+      }
       g.mass.solve(g.impulse, g.velocity);
       for (int b = 0; b < k; ++b) body_velocity_.segment<6>(6 * g.bodies[b]) = g.velocity.segment<6>(6 * b);
     }
@@ -384,22 +390,26 @@ class DualProblem {
     std::vector<int> touched;                    // the group's elements a contact touches (local indices)
     bool restricted = false;                     // iterated through w, not a solve over the group
     Eigen::MatrixXd w;                           // Mt^-1 on the touched elements (restricted)
+    std::vector<int> reach;                      // what a solve for the touched elements needs (not restricted)
     mutable Eigen::VectorXd impulse, velocity;  // scratch of row_velocities
   };
 
-  // Whether a lattice is iterated through its touched block W or through a solve over it,
-  // by their flops over an island's gradient steps (kTypicalSteps: the lattice runs take
-  // 90-180 a step; over a level sheet's thousands only the per-step terms count). A solve
-  // costs about 4 nnz(L) a step; W costs 2 nnz(L) per column once (6 t columns for t touched
-  // elements) and 2 (6 t)^2 a step. So a floe of 16 elements (nnz(L) 1,848) takes W up to 8
-  // touched elements, and a level sheet of hundreds touched at a hundred takes the solve: its
-  // W would be 600 rows a side. A dense lattice always takes W: its solve is a product with
-  // (6 n)^2 entries as well.
-  static constexpr double kTypicalSteps = 100;
-  static bool iterate_through_w(const LatticeMass& mass, int touched) {
+  // Whether a lattice is iterated through its touched block W or through a solve, by their
+  // cost over an island's gradient steps (kTypicalSteps: the lattice runs take 90-180 a step;
+  // a level sheet's islands take thousands, where only the per-step terms count). A solve for
+  // the touched elements costs about 4 nnz of L in their reach a step (the factor's columns it
+  // needs, LatticeMass::reach); W costs 2 nnz of that reach per column once (6 t columns for t
+  // touched elements) and 2 (6 t)^2 a step. The solve's flops are dearer than W's dense
+  // products: kSolveFlop, measured by bench/micro/lattice_mass.cpp (2026-11-28: a solve of 324
+  // elements 5.2 Gflop/s, W of 16 touched 8.8). So a floe of 16 elements (nnz(L) 1,848)
+  // takes W up to 8 touched elements, and a level sheet touched at a hundred takes the solve:
+  // its W would be 600 rows a side. A dense lattice always takes W: its solve is a product
+  // with (6 n)^2 entries as well.
+  static constexpr double kTypicalSteps = 100, kSolveFlop = 1.7;
+  static bool iterate_through_w(const LatticeMass& mass, int touched, long long reach_nonzeros) {
     if (!mass.sparse()) return true;
-    const double nnz = static_cast<double>(mass.factor_nonzeros()), columns = 6.0 * touched;
-    return 2 * nnz * columns + kTypicalSteps * 2 * columns * columns < kTypicalSteps * 4 * nnz;
+    const double nnz = static_cast<double>(reach_nonzeros), columns = 6.0 * touched;
+    return 2 * nnz * columns + kTypicalSteps * 2 * columns * columns < kTypicalSteps * kSolveFlop * 4 * nnz;
   }
 
   // each group's touched elements, and W where it pays: a 0.6 m floe of 0.15 m squares (16
@@ -415,8 +425,10 @@ class DualProblem {
     for (const ProblemContact& k : p.contacts) touch(k.a), touch(k.b);
     for (Group& g : groups_) {
       std::sort(g.touched.begin(), g.touched.end());  // the elements' order, not the contacts'
-      g.restricted = iterate_through_w(g.mass, static_cast<int>(g.touched.size()));
-      if (g.restricted) g.w = g.mass.restricted_inverse(g.touched);
+      if (g.mass.sparse()) g.reach = g.mass.reach(g.touched);
+      g.restricted = iterate_through_w(g.mass, static_cast<int>(g.touched.size()),
+                                       g.mass.sparse() ? g.mass.reach_nonzeros(g.reach) : 0);
+      if (g.restricted) g.w = g.mass.restricted_inverse(g.touched), g.reach.clear();
     }
   }
   // false (and nothing folded) if a group's Mt is not positive definite

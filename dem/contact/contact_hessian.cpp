@@ -1,65 +1,67 @@
 #include "dem/contact/contact_hessian.hpp"
 
 #include <algorithm>
+#include <unordered_map>
+#include <utility>
 
 namespace icedem {
-namespace {
 
-using SparseMatrix = Eigen::SparseMatrix<double>;
-
-// position of (row, col) in the compressed values of H
-int slot(const SparseMatrix& H, int row, int col) {
-  const int* begin = H.innerIndexPtr() + H.outerIndexPtr()[col];
-  const int* end = H.innerIndexPtr() + H.outerIndexPtr()[col + 1];
-  return static_cast<int>(std::lower_bound(begin, end, row) - H.innerIndexPtr());
-}
-
-// the lower-triangle body blocks (i, j) a contact fills: i >= j, both with unknown velocity
-template <class Visit>
-void each_block(const ProblemContact& k, Visit&& visit) {
-  for (int i : {k.a, k.b})
-    for (int j : {k.a, k.b})
-      if (i >= 0 && j >= 0 && i >= j) visit(i, j);
-}
-
-}  // namespace
-
-ContactHessian::ContactHessian(const ContactProblem& p, const SparseMatrix& A) : p_(p) {
-  std::vector<Eigen::Triplet<double>> t;
+ContactHessian::ContactHessian(const ContactProblem& p, const Eigen::SparseMatrix<double>& A) : p_(p) {
+  const int n = static_cast<int>(p.bodies.size());
+  std::vector<std::pair<int, int>> pairs;
+  std::unordered_map<long long, int> index;  // i * n + j -> its pair
+  const auto pair = [&](int i, int j) {
+    const auto [at, added] = index.try_emplace(static_cast<long long>(i) * n + j, static_cast<int>(pairs.size()));
+    if (added) pairs.emplace_back(i, j), base_below_.push_back(Block::Zero());
+    return at->second;
+  };
+  // A's lower triangle, by blocks (a block on the diagonal keeps its lower triangle: what the
+  // factorisation reads)
+  base_own_.assign(n, Block::Zero());
   for (int col = 0; col < A.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(A, col); it; ++it)
-      if (it.row() >= it.col()) t.emplace_back(it.row(), it.col(), it.value());
-  for (const ProblemContact& k : p.contacts)
-    each_block(k, [&](int i, int j) {
-      for (int r = 0; r < 6; ++r)
-        for (int s = 0; s < 6; ++s)
-          if (6 * i + r >= 6 * j + s) t.emplace_back(6 * i + r, 6 * j + s, 0.0);
-    });
-  H_.resize(p.dofs(), p.dofs());
-  H_.setFromTriplets(t.begin(), t.end());
-  H_.makeCompressed();
-  base_ = Eigen::Map<const Eigen::VectorXd>(H_.valuePtr(), H_.nonZeros());
-  slots_.resize(p.contacts.size());
-  for (std::size_t c = 0; c < p.contacts.size(); ++c)
-    each_block(p.contacts[c], [&](int i, int j) {
-      for (int r = 0; r < 6; ++r)
-        for (int s = 0; s < 6; ++s) slots_[c].push_back(6 * i + r >= 6 * j + s ? slot(H_, 6 * i + r, 6 * j + s) : -1);
-    });
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, col); it; ++it) {
+      const int row = static_cast<int>(it.row());
+      if (row < col) continue;
+      const int i = row / 6, j = col / 6;
+      if (i == j)
+        base_own_[i](row % 6, col % 6) = it.value();
+      else
+        base_below_[pair(i, j)](row % 6, col % 6) = it.value();
+    }
+  pair_of_contact_.assign(p.contacts.size(), -1);
+  for (std::size_t c = 0; c < p.contacts.size(); ++c) {
+    const ProblemContact& k = p.contacts[c];
+    if (k.a >= 0 && k.b >= 0 && k.a != k.b) pair_of_contact_[c] = pair(std::max(k.a, k.b), std::min(k.a, k.b));
+  }
+  llt_.analyse(n, pairs);
+  reset();
 }
 
-void ContactHessian::reset() { Eigen::Map<Eigen::VectorXd>(H_.valuePtr(), H_.nonZeros()) = base_; }
+void ContactHessian::reset() {
+  own_ = base_own_;
+  below_ = base_below_;
+}
 
 void ContactHessian::add(int c, const Eigen::Matrix3d& B) {
   const ProblemContact& k = p_.contacts[c];
-  int at = 0;
-  each_block(k, [&](int i, int j) {
-    const ContactJacobian& Ji = i == k.a ? k.ja : k.jb;
-    const ContactJacobian& Jk = j == k.a ? k.ja : k.jb;
-    const Eigen::Matrix<double, 6, 6> block = Ji.transpose() * B * Jk;
-    for (int rr = 0; rr < 6; ++rr)
-      for (int ss = 0; ss < 6; ++ss, ++at)
-        if (slots_[c][at] >= 0) H_.valuePtr()[slots_[c][at]] += block(rr, ss);
-  });
+  if (k.a >= 0 && k.a == k.b) {  // both sides on one body
+    const ContactJacobian j = k.ja + k.jb;
+    own_[k.a].noalias() += j.transpose() * B * j;
+    return;
+  }
+  if (k.a >= 0) own_[k.a].noalias() += k.ja.transpose() * B * k.ja;
+  if (k.b >= 0) own_[k.b].noalias() += k.jb.transpose() * B * k.jb;
+  if (pair_of_contact_[c] >= 0) {
+    // block (i, j), i > j: J_i^T B J_j
+    if (k.a > k.b)
+      below_[pair_of_contact_[c]].noalias() += k.ja.transpose() * B * k.jb;
+    else
+      below_[pair_of_contact_[c]].noalias() += k.jb.transpose() * B * k.ja;
+  }
 }
+
+bool ContactHessian::factorise() { return llt_.factorise(own_, below_); }
+
+void ContactHessian::solve(Eigen::VectorXd& x) const { llt_.solve(x); }
 
 }  // namespace icedem

@@ -83,8 +83,6 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
   push_all_inside(settings_.start_margin);
   double first_gap = -1;  // the gap s . z / contacts of the first iteration
 
-  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> cholesky;
-  bool analysed = false;
   std::vector<Scaling> scalings(nc);
   Eigen::VectorXd rx(n), rz(m), dx(n), ds(m), dz(m), dsa(m), dza(m), target(m);
   SolverAnswer best;
@@ -113,7 +111,8 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
       const Scaling& sc = scalings[c];
       t.segment<3>(3 * c) = sc.W_inv * (d.segment<3>(3 * c) + sc.W_inv * rz.segment<3>(3 * c));
     }
-    dx = cholesky.solve(Eigen::VectorXd(-rx + Jc_t * t.cwiseProduct(scale)));
+    dx = -rx + Jc_t * t.cwiseProduct(scale);
+    hessian.solve(dx);
     const Eigen::VectorXd gdx = (Jc * dx).cwiseProduct(scale);
     ds = gdx - rz;
     for (int c = 0; c < nc; ++c) {
@@ -152,9 +151,7 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
     }
     if (!interior) break;  // round-off put a point on a cone's boundary: keep the best answer
     mu_gap /= std::max(nc, 1);
-    if (!analysed) cholesky.analyzePattern(hessian.matrix()), analysed = true;
-    cholesky.factorize(hessian.matrix());
-    if (cholesky.info() != Eigen::Success) break;  // H is positive definite unless a mass matrix is not
+    if (!hessian.factorise()) break;  // H is positive definite unless a mass matrix is not
 
     // predictor: the affine direction (d = -lambda)
     for (int c = 0; c < nc; ++c) target.segment<3>(3 * c) = -scalings[c].lambda;

@@ -4,11 +4,11 @@
 // The contact methods fold a lattice's joints this way so that their stiff rows are not
 // iterated (dem/contact/apgd.cpp says what it saves). Mt changes every step (the joints'
 // rows follow the elements), so it is factorised every step. A lattice of a few elements
-// (up to kDenseElements) is factorised dense (Cholesky); a larger one sparse (Eigen's
-// simplicial Cholesky, AMD ordering): Mt has a 6 x 6 block for each element and each
-// joined pair, so a floe of many elements costs about the square of its elements'
-// neighbours per element, not the cube of its size, and its pattern's analysis can be kept
-// from step to step (LatticePatterns).
+// (up to kDenseElements) is factorised dense (Cholesky); a larger one sparse, by blocks
+// (dem/contact/block_cholesky.hpp, AMD ordering of the elements): Mt has a 6 x 6 block for
+// each element and each joined pair, so a floe of many elements costs about the square of
+// its elements' neighbours per element, not the cube of its size, and its pattern's
+// analysis can be kept from step to step (LatticePatterns).
 //
 // A contact method needs Mt^-1 only where contacts act: the impulses of an iteration fall
 // on the elements contacts touch, and only those elements' velocities enter the contacts'
@@ -21,7 +21,6 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/SparseCore>
 
 namespace icedem {
 
@@ -82,9 +81,19 @@ class LatticeMass {
   bool factorise(LatticePatterns* patterns = nullptr, long long key = 0);
   // velocity = Mt^-1 impulse, stacked per element
   void solve(const Eigen::VectorXd& impulse, Eigen::VectorXd& velocity) const;
+  // The same for an impulse on the listed elements alone, whose velocities alone are read
+  // (sparse form, after factorise()): reach() is what such a solve needs of the factor (the
+  // listed elements and their ancestors in the elimination tree, BlockCholesky::reach), once
+  // per set of elements; solve_on() writes exact velocities on the listed elements (and the
+  // rest of the reach) and leaves the other elements' as they were.
+  std::vector<int> reach(const std::vector<int>& elements) const;
+  void solve_on(const std::vector<int>& reach, const Eigen::VectorXd& impulse, Eigen::VectorXd& velocity) const;
+  // the factor's nonzeros in a reach (solve_on()'s cost, as factor_nonzeros() is solve()'s)
+  long long reach_nonzeros(const std::vector<int>& reach) const;
   // the block of Mt^-1 on the listed elements (rows and columns in their order, six per
-  // element): W with v_k = W i_k when the impulse i falls on those elements alone. Dense:
-  // Y = L^-1 E (one triangular solve of 6 k columns), W = Y^T Y; sparse: 6 k solves.
+  // element): W with v_k = W i_k when the impulse i falls on those elements alone. W = Y^T Y,
+  // Y = L^-1 E (P E sparse): one triangular solve of 6 k columns, the sparse form's over the
+  // elements' reach alone.
   Eigen::MatrixXd restricted_inverse(const std::vector<int>& elements) const;
   // the factor's nonzeros (a solve costs about four flops each: both triangles, multiply
   // and add); after factorise()
@@ -100,8 +109,8 @@ class LatticeMass {
   bool sparse_form_;
   Eigen::MatrixXd dense_;                        // Mt (dense lattices), until factorised
   // Mt's blocks (sparse lattices): each element's own, and each joined pair's below the
-  // diagonal (i > j), summed as add() comes; stored whole, zeros too, so that the pattern
-  // is the lattice's joints' and holds from step to step
+  // diagonal (i > j), summed as add() comes; kept whole, zeros too, so that the pattern is
+  // the lattice's joints' and holds from step to step
   struct Below {
     int i, j;
     Eigen::Matrix<double, 6, 6> m;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include <Eigen/SparseCholesky>
 
 #include "dem/contact/contact_hessian.hpp"
 
@@ -97,8 +96,8 @@ class InnerProblem {
   }
 
   // H = Hc + Jc^T diag(dP_c / rho_c) Jc at the current arguments; `kinds` gets where each went
-  const SparseMatrix& hessian(const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s,
-                              std::vector<int>& kinds) {
+  ContactHessian& hessian(const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s,
+                          std::vector<int>& kinds) {
     hessian_.reset();
     kinds.resize(nc_);
     for (int c = 0; c < nc_; ++c) {
@@ -106,7 +105,7 @@ class InnerProblem {
           cone_projection_jacobian(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), kinds[c]) / rho_(c);
       if (kinds[c] != 0) hessian_.add(c, B);
     }
-    return hessian_.matrix();
+    return hessian_;
   }
 
   // The derivative of f along d at step a: phi'(a) = G(v + a d) . d, from the pieces
@@ -210,26 +209,24 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
   };
   update_shift();
 
-  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> cholesky;
   std::vector<int> kinds, kinds_after;
   Eigen::VectorXd r(m), G(n), d(n);
   SolverAnswer answer;
   answer.residual = std::numeric_limits<double>::infinity();
   int steps = 0;
-  bool analysed = false, failed = false;
+  bool failed = false;
   while (steps < options.max_iterations && !failed) {
     // inner: Newton on f for this centre and shift
     for (int k = 0; k < settings_.inner_iterations && steps < options.max_iterations; ++k) {
       inner.gradient(v, u, rb, s, r, G);
-      const SparseMatrix& H = inner.hessian(rb, u, s, kinds);
-      if (!analysed) cholesky.analyzePattern(H), analysed = true;
-      cholesky.factorize(H);
+      ContactHessian& H = inner.hessian(rb, u, s, kinds);
       // H is positive definite unless a body's mass matrix is not: nothing more to do
-      if (cholesky.info() != Eigen::Success) {
+      if (!H.factorise()) {
         failed = true;
         break;
       }
-      d = -cholesky.solve(G);
+      d = -G;
+      H.solve(d);
       ++steps;
       const double slope0 = G.dot(d);
       if (!(slope0 < 0)) break;  // at the minimum to round-off
