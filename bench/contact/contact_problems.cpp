@@ -8,7 +8,7 @@
 //       solve each problem to a merit of 1e-10 with Siconos numerics, cross-check the
 //       answer with a second method, and write it into the file as FCLIB's /solution
 //       with /icedem/reference saying how it was found (or why none was)
-//   contact_problems errors FILE... [--method M] [--merit K] [--tolerance T ...] [--csv F] [--loaded-only]
+//   contact_problems errors FILE... [--method M] [--merit K] [--tolerance T ...] [--first-iterations N] [--csv F] [--loaded-only]
 //       the physical error of the run's answer and of a method's at each tolerance against
 //       a tight one (newton to 1e-10, else apgd to 1e-9): the load on the structure (N) and
 //       the joints' forces (N) and moments (N m), impulses over the step
@@ -238,8 +238,8 @@ SolverAnswer tight_answer(const ContactProblem& p, const LocalForm& local, doubl
 }
 
 int errors_command(const std::vector<std::string>& files, const std::string& method, MeritKind merit,
-                   const std::vector<double>& tolerances, int max_iterations, const std::string& csv_path,
-                   bool loaded_only) {
+                   const std::vector<double>& tolerances, int max_iterations, int first_iterations,
+                   const std::string& csv_path, bool loaded_only) {
   std::ofstream csv;
   if (!csv_path.empty()) {
     csv.open(csv_path);
@@ -268,7 +268,8 @@ int errors_command(const std::vector<std::string>& files, const std::string& met
       top = std::max(top, std::abs(exact.joints(j)));
     }
     const std::string name = std::filesystem::path(path).filename().string();
-    auto row = [&](const std::string& label, const SolverAnswer& a) {
+    // `iterations`: the answer's, "A+B" for a method that handed over
+    auto row = [&](const std::string& label, const SolverAnswer& a, const std::string& iterations) {
       const Loads got = loads_of(p, a.r);
       double df = 0, dm = 0;
       for (std::size_t j = 0; j < p.joints.size(); ++j) {
@@ -278,22 +279,31 @@ int errors_command(const std::vector<std::string>& files, const std::string& met
       const double merit = natural_map_residual(local, a.r), dload = (got.structure - exact.structure).norm();
       const double impulse_merit = impulse(a.r, local.W * a.r + local.q);
       std::cout << fmt::format("{:<34} {:>6.4f} {:>6} {:>8} {:>9.2e} {:>9.2e} {:>7} {:>9.3f} {:>9.3f} {:>9.3f} {:>9.3f} {:>9.4f} {:>9.4f}\n",
-                               name, p.dt, p.contacts.size(), label, merit, impulse_merit, a.sweeps, got.structure.norm(), dload,
+                               name, p.dt, p.contacts.size(), label, merit, impulse_merit, iterations, got.structure.norm(), dload,
                                max_f, df, max_m, dm);
+      int total = 0;  // the CSV's count: both methods' iterations
+      for (std::size_t at = 0; at < iterations.size();) {
+        std::size_t end = iterations.find('+', at);
+        if (end == std::string::npos) end = iterations.size();
+        total += std::stoi(iterations.substr(at, end - at));
+        at = end + 1;
+      }
       if (csv)
         csv << fmt::format("{},{:.6f},{},{},{},{},{},{},{:.6e},{:.6e},{},{:.9g},{:.9g},{:.9g},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}\n",
                            name, p.time, p.step, p.island, p.dt, p.contacts.size(), p.joint_rows(), label, merit,
-                           impulse_merit, a.sweeps, got.structure.x(), got.structure.y(), got.structure.z(), dload, max_f, df,
+                           impulse_merit, total, got.structure.x(), got.structure.y(), got.structure.z(), dload, max_f, df,
                            max_m, dm);
     };
-    row("tight", ref);
-    if (file.answer) row("run", *file.answer);
+    row("tight", ref, std::to_string(ref.sweeps));
+    if (file.answer) row("run", *file.answer, std::to_string(file.answer->sweeps));
     for (double tol : tolerances) {
       MethodOptions o;
       o.tolerance = tol;
       o.max_iterations = max_iterations;
       o.merit = merit;
-      row(fmt::format("{:.0e}", tol), make_contact_method(method)->solve(p, o));
+      std::string iterations;
+      const SolverAnswer a = solve_with(method, p, o, first_iterations, iterations);
+      row(fmt::format("{:.0e}", tol), a, iterations);
     }
   }
   return 0;
@@ -323,7 +333,8 @@ int main(int argc, char** argv) {
   std::string method = "apgd";
   std::vector<double> tolerances{1e-3, 1e-4, 1e-5};
   errors->add_option("files", files, "problem files")->required();
-  errors->add_option("--method", method, "method (default apgd)");
+  errors->add_option("--method", method, "method, or A+B (default apgd)");
+  errors->add_option("--first-iterations", first_iterations, "cap of A in a method A+B (default 1000)");
   errors->add_option("--tolerance", tolerances, "merits to stop at (default 1e-3 1e-4 1e-5)")->take_all();
   errors->add_option("--max-iterations", max_iterations, "iteration cap (default 200)");
   std::string csv_path;
@@ -335,7 +346,9 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     if (*solve) return solve_command(files, methods, tolerance, max_iterations, cold, first_iterations);
-    if (*errors) return errors_command(files, method, merit_kind(merit_name), tolerances, max_iterations, csv_path, loaded_only);
+    if (*errors)
+      return errors_command(files, method, merit_kind(merit_name), tolerances, max_iterations, first_iterations, csv_path,
+                            loaded_only);
     return reference_command(files);
   } catch (const std::exception& e) {
     std::cerr << "contact_problems: " << e.what() << "\n";
