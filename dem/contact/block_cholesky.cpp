@@ -155,8 +155,9 @@ std::vector<int> BlockCholesky::reach(const std::vector<int>& blocks) const {
 }
 
 void BlockCholesky::solve_on(const std::vector<int>& reach, const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
-  thread_local Eigen::VectorXd y;  // scratch: an iteration's solve allocates nothing
-  y.resize(6 * n_);
+  // scratch that only grows: an iteration's solves, over lattices of any size, allocate nothing
+  thread_local Eigen::VectorXd y;
+  if (y.size() < 6 * n_) y.resize(6 * n_);
   for (int j : reach) y.segment<6>(6 * j) = b.segment<6>(6 * order_[j]);
   for (int j : reach) {
     auto yj = y.segment<6>(6 * j);
