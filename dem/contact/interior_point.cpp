@@ -22,7 +22,12 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
   const GlobalForm g = global_form(p);
   const FoldedMassMatrix folded = folded_mass_matrix(g);  // throws if a joint row is rigid
   const int n = p.dofs(), nc = static_cast<int>(p.contacts.size()), m = 3 * nc;
-  const Merit merit(options.merit, p, local_q(g), g.mu);
+  // Mt's factor, once: the merit's q (the local form's, Jc Mt^-1 ft + w, as local_q() gives it)
+  // and the judge's velocities (below) both solve with it
+  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> mass_factor;
+  if (g.Jj.rows()) mass_factor.compute(folded.Mt);
+  const Merit merit(options.merit, p,
+                    g.Jj.rows() ? Eigen::VectorXd(g.Jc * mass_factor.solve(folded.ft) + g.w) : local_q(g), g.mu);
   const Eigen::SparseMatrix<double, Eigen::RowMajor> Jc = g.Jc;
   const SparseMatrix Jc_t = g.Jc.transpose();
   // D per row: (1, mu, mu) per contact
@@ -90,8 +95,6 @@ SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& 
   // judged as the local form judges any method: the impulses r = D z, the velocities they
   // give with the joints folded, v_r = Mt^-1 (Jc^T r + ft), and the joints' impulses at v_r
   // (so that the joint rows hold exactly what the run applies), one solve with Mt's factor
-  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> mass_factor;
-  if (g.Jj.rows()) mass_factor.compute(folded.Mt);
   const auto judge = [&] {
     const Eigen::VectorXd r = z.cwiseProduct(scale);
     const Eigen::VectorXd f = Jc_t * r + folded.ft;
