@@ -1,6 +1,7 @@
 #include "dem/contact/block_cholesky.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 #include <Eigen/Cholesky>
 #include <Eigen/OrderingMethods>
@@ -28,6 +29,8 @@ void BlockCholesky::analyse(int n, const std::vector<std::pair<int, int>>& below
   }
   order_.assign(n, 0);
   for (int k = 0; k < n; ++k) order_[position_[k]] = k;
+  columns_.resize(n);
+  std::iota(columns_.begin(), columns_.end(), 0);
 
   // A's blocks below the diagonal in the new order, by columns
   std::vector<std::vector<int>> rows_of_a(n);
@@ -119,26 +122,11 @@ bool BlockCholesky::factorise(const std::vector<Block>& own, const std::vector<B
 }
 
 void BlockCholesky::solve(Eigen::VectorXd& x) const {
-  Eigen::VectorXd y(6 * n_);
-  for (int k = 0; k < n_; ++k) y.segment<6>(6 * position_[k]) = x.segment<6>(6 * k);
-  for (int j = 0; j < n_; ++j) {
-    auto yj = y.segment<6>(6 * j);
-    diagonal_[j].triangularView<Eigen::Lower>().solveInPlace(yj);
-    const Eigen::Matrix<double, 6, 1> v = yj;
-    for (int s = start_[j]; s < start_[j + 1]; ++s) y.segment<6>(6 * row_[s]).noalias() -= l_[s] * v;
-  }
-  for (int j = n_ - 1; j >= 0; --j) {
-    Eigen::Matrix<double, 6, 1> v = y.segment<6>(6 * j);
-    for (int s = start_[j]; s < start_[j + 1]; ++s) v.noalias() -= l_[s].transpose() * y.segment<6>(6 * row_[s]);
-    diagonal_[j].transpose().triangularView<Eigen::Upper>().solveInPlace(v);
-    y.segment<6>(6 * j) = v;
-  }
-  for (int k = 0; k < n_; ++k) x.segment<6>(6 * k) = y.segment<6>(6 * position_[k]);
+  // every column is the reach of a right-hand side on every block (solve_on reads b whole
+  // before it writes x, so the two may be one vector)
+  solve_on(columns_, x, x);
 }
 
-}  // namespace icedem
-
-namespace icedem {
 
 std::vector<int> BlockCholesky::reach(const std::vector<int>& blocks) const {
   std::vector<char> in(n_, 0);

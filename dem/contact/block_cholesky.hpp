@@ -49,7 +49,6 @@ class BlockCholesky {
   /// symmetric by construction.
   Eigen::MatrixXd inverse_on(const std::vector<int>& blocks) const;
 
-  int blocks() const { return n_; }
   /// L's scalar nonzeros: 21 per diagonal block, 36 per block below (what a solve's cost follows)
   long long nonzeros() const { return 21LL * n_ + 36LL * static_cast<long long>(row_.size()); }
 
@@ -57,6 +56,7 @@ class BlockCholesky {
   int n_ = 0;
   std::vector<int> position_;  // old block index -> its place in the factor's order
   std::vector<int> order_;     // the factor's order -> old block index
+  std::vector<int> columns_;   // every column, in order: a full solve's reach
   // L's blocks below the diagonal by columns: column j's are start_[j] .. start_[j + 1], rows
   // ascending
   std::vector<int> start_, row_;
