@@ -22,6 +22,10 @@ file = "scenarios/level_ice/level_ice_015.toml"
 name = "mu03"
 file = "scenarios/level_ice/level_ice_015.toml"
 set = ["friction.ice_structure=0.3"]
+[[scenario]]
+name = "mu02_step002"
+file = "scenarios/level_ice/level_ice_015.toml"
+set = ["time.substeps=1"]
 """
 
 
@@ -69,9 +73,13 @@ with tempfile.TemporaryDirectory() as tmp:
     text = "\n".join(level_ice_report.page(sweep, out, "unused"))
     check(any("friction.ice_structure=0.3" in s for s in seen), "the design loads are asked at the run's own sets")
     row = [line for line in text.splitlines() if line.startswith("| mu02 | 0.2 |")]
-    check(len(row) == 1 and "| 0.2 | 40.0 | 96.0 | 120.0 | 150.0 | 240.0 | 0.80 | 0.50 | 5 | 0.50 | 25.0 % |" in row[0],
-          f"mu 0.2: max 120 over ISO 150 is 0.80, over Ralston 0.50, CPU at half real time, a quarter of "
-          f"the window's steps capped: {row}")
+    check(len(row) == 1 and "| 0.2 | 0.01 | 40.0 | 96.0 | 120.0 | 150.0 | 240.0 | 0.80 | 0.50 | 5 | 0.50 | 25.0 % |"
+          in row[0],
+          f"mu 0.2: the scenario's Bullet step (0.02 s in two substeps), max 120 over ISO 150 is 0.80, over "
+          f"Ralston 0.50, CPU at half real time, a quarter of the window's steps capped: {row}")
+    row = [line for line in text.splitlines() if line.startswith("| mu02_step002 | 0.2 |")]
+    check(len(row) == 1 and row[0].startswith("| mu02_step002 | 0.2 | 0.02 |"),
+          f"a run's own time.substeps sets its Bullet step: {row}")
     row = [line for line in text.splitlines() if line.startswith("| mu03 | 0.3 |")]
     check(len(row) == 1 and "| 0.3 |" in row[0] and "| 0.75 |" in row[0], f"mu 0.3 against its own ISO load: {row}")
     lengths = [line for line in text.splitlines() if line.startswith("| mu02 | 5 |")]
