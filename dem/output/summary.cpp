@@ -220,6 +220,9 @@ const std::vector<SummaryField>& summary_fields() {
        [](S s) { return json(s.held_edge_overloads); }},
       {"steps", "1", true, false, "solver steps", [](S s) { return json(s.steps); }},
       {"sim_time_s", "s", true, false, "simulated time", [](S s) { return json(s.sim_time_s); }},
+      {"bullet_step_s", "s", false, false,
+       "the dynamics' step, time.dt / time.substeps: breakage and the loads of the 0.15 m lattices move with it "
+       "(docs/model/convergence.md), so runs at two steps are not one sample", [](S s) { return json(s.bullet_step_s); }},
       {"wall_time_s", "s", true, false,
        "wall time of the run; a resumed run's adds what its earlier processes spent up to the checkpoint it was "
        "resumed from", [](S s) { return json(s.wall_time_s); }},

@@ -55,6 +55,7 @@ struct RunSummary {
 
   long steps = 0;
   double sim_time_s = 0.0;
+  double bullet_step_s = 0.0;   // time.dt / time.substeps: the step the dynamics took
   double wall_time_s = 0.0;
   double cpu_time_s = 0.0;   // user + system CPU time of the process (a shared machine's fair cost)
   int floes = 0;

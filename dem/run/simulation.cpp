@@ -459,6 +459,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
 
   summary.steps = state.step;
   summary.sim_time_s = state.time;
+  summary.bullet_step_s = scene.time.dt / scene.time.substeps;
   summary.mean_awake = state.step ? history.awake_sum / state.step : 0.0;
   summary.health = history.health;
   summary.first_contact_s = state.first_contact_time ? *state.first_contact_time : -1.0;

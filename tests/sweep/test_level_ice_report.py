@@ -29,9 +29,11 @@ set = ["time.substeps=1"]
 """
 
 
-def record(mean, peak, distances, pieces=None, held=None):
+def record(mean, peak, distances, pieces=None, held=None, step=None):
     summary = {"mean_fx_N": mean, "max_fx_N": peak, "breaks": len(distances), "cpu_time_s": 400.0,
                "sim_time_s": 200.0}
+    if step is not None:
+        summary["bullet_step_s"] = step
     if held is not None:
         summary["held_edge_overloads"] = held
         summary["solver"] = {"capped_window_fraction": 0.25}
@@ -60,6 +62,7 @@ with tempfile.TemporaryDirectory() as tmp:
     execute.status = lambda run, out: execute.Status(run, "done")
     level_ice_report.agg.load_record = lambda run, out: (
         record(40.0, 120.0, [0.1, 0.2, 0.3, 0.4, 0.5], PIECES, 7) if run.scenario == "mu02"
+        else record(50.0, 150.0, [], step=0.005) if run.scenario == "mu03"
         else record(50.0, 150.0, []))
     seen = []
 
@@ -82,6 +85,8 @@ with tempfile.TemporaryDirectory() as tmp:
           f"a run's own time.substeps sets its Bullet step: {row}")
     row = [line for line in text.splitlines() if line.startswith("| mu03 | 0.3 |")]
     check(len(row) == 1 and "| 0.3 |" in row[0] and "| 0.75 |" in row[0], f"mu 0.3 against its own ISO load: {row}")
+    check(len(row) == 1 and row[0].startswith("| mu03 | 0.3 | 0.005 |"),
+          f"a summary's bullet_step_s is the run's step, before the scenario file's (0.01 s): {row}")
     lengths = [line for line in text.splitlines() if line.startswith("| mu02 | 5 |")]
     check(len(lengths) == 1 and "| 0.300 | 0.200-0.400 | 0.68 | 7 | bending 4, shear 1 |" in lengths[0],
           f"breaking lengths: median 0.3 m against 1.11 x 0.4 m, 7 held-edge overloads, the modes that "

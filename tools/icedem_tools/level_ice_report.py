@@ -22,11 +22,14 @@ def design_loads(icedem, run):
     return execute.cone_load(icedem, run.scenario_file, run.sets)
 
 
-def bullet_step(run):
-    """The run's Bullet step, time.dt / time.substeps (s), from its scenario file and its --set's
-    (the keys' defaults 0.02 s and 1 where neither gives them); None if the file cannot be read.
+def bullet_step(run, summary):
+    """The run's Bullet step, time.dt / time.substeps (s): its summary's bullet_step_s; for a
+    record made before the summary carried it, from its scenario file and its --set's (the
+    keys' defaults 0.02 s and 1 where neither gives them); None if the file cannot be read.
     The 0.15 m sheet's loads move with it (docs/model/breakage.md, "Level ice"), so runs at two
     steps are not one sample."""
+    if summary.get("bullet_step_s"):
+        return float(summary["bullet_step_s"])
     try:
         with open(run.scenario_file, "rb") as f:
             time = tomllib.load(f).get("time", {})
@@ -70,7 +73,7 @@ def page(sweep, out, icedem):
         lengths.append((r.scenario, d, s.get("held_edge_overloads"), s.get("breaks_by_mode")))
         piece_rows.append((r.scenario, rec.get("pieces")))
         cpu, sim = s.get("cpu_time_s"), s.get("sim_time_s")
-        step = bullet_step(r)
+        step = bullet_step(r, s)
         rows.append([r.scenario, f"{loads['friction']:g}" if loads else "n/a", f"{step:g}" if step else "n/a",
                      s.get("mean_fx_N"), w.get("p99_fx_N"), s.get("max_fx_N"),
                      loads["total_N"] if loads else None, loads["ralston_total_N"] if loads else None,
