@@ -68,13 +68,8 @@ TEST(StepSizeAdvice, SmallElementsAtTheFullStepWarnThatBreaksMoveWithTheStep) {
   EXPECT_TRUE(step_size_warnings(load_scene(std::string(ICEDEM_SOURCE_DIR) +
                                             "/scenarios/paper/large_floes_breakable_015.toml"))
                   .empty());
-  EXPECT_TRUE(step_size_warnings(
-                  load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/level_ice/level_ice_015.toml"))
-                  .empty())
-      << "the level sheet of 0.15 m elements runs two substeps";
-  EXPECT_EQ(step_size_warnings(load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/level_ice/level_ice_015.toml",
-                                          {"time.substeps=1"}))
-                .size(),
-            1u)
+  const std::string level = std::string(ICEDEM_SOURCE_DIR) + "/scenarios/level_ice/level_ice_015.toml";
+  EXPECT_TRUE(step_size_warnings(load_scene(level)).empty()) << "the level sheet of 0.15 m elements runs two substeps";
+  EXPECT_EQ(step_size_warnings(load_scene(level, {"time.substeps=1"})).size(), 1u)
       << "the level sheet at one step of 0.02 s";
 }
