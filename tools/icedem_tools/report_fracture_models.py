@@ -1,8 +1,11 @@
 """The report's comparison of fracture models on the paper's larger floes (tools/icedem_tools/report.py):
 rigid floes, rigid floes that split analytically (fracture.mode = "analytic"), and the lattices of
-0.20 m and 0.15 m square and hexagonal elements, at the ice-structure friction of the paper's Fig. 18
-and both its ice-ice frictions, over the seeds every model with runs has finished; beside the tank's largest load and the
-ISO 19906 load of level ice on the cone, in one table and one figure."""
+0.20 m and 0.15 m square elements, at the ice-structure friction of the paper's Fig. 18 and both its
+ice-ice frictions, over the seeds every model with runs has finished; beside the tank's largest load
+and the ISO 19906 load of level ice on the cone, in one table and one figure. The lattices of
+hexagonal elements are an element shape, not another model of the ice: each is set against the
+squares of its size on the seeds both have finished, seed by seed, so that a shape still running
+does not narrow the models' table to its few seeds."""
 import os
 
 import numpy as np
@@ -17,9 +20,13 @@ from .report_tables import FII, FIS, run_records
 MODELS = (("large_rigid", "rigid, no fracture"),
           ("large_analytic", "rigid, splitting analytically"),
           ("large_breakable_020", "lattice, 0.20 m elements"),
-          ("large_breakable_015", "lattice, 0.15 m elements"),
-          ("large_hexagon_020", "lattice, 0.20 m hexagons"),
-          ("large_hexagon_015", "lattice, 0.15 m hexagons"))
+          ("large_breakable_015", "lattice, 0.15 m elements"))
+# element shapes against the squares of their size: (shape's model, its label, the squares' model)
+SHAPES = (("large_hexagon_020", "lattice, 0.20 m hexagons", "large_breakable_020"),
+          ("large_hexagon_015", "lattice, 0.15 m hexagons", "large_breakable_015"))
+# the numbers the shapes' table differences seed by seed: (key of stats()' per-run values, label, unit)
+PAIRED = (("mean_fx_N", "mean", "N"), ("p99_fx_N", "p99", "N"), ("max_fx_N", "max", "N"),
+          ("breaks", "breaks", ""))
 FIS_VALUE = 0.3           # the paper's Fig. 18
 FII_VALUES = (0.3, 0.7)   # its two states of failure
 ISO_SCENARIO = "scenarios/paper/large_floes_rigid.toml"  # the paper's cone and ice
@@ -35,17 +42,20 @@ def model_runs(records, scenario, fii):
             if _friction(r, FII) == fii and _friction(r, FIS) == FIS_VALUE}
 
 
+def per_run(rec):
+    """One run's numbers for the tables (p99 None for a record kept before the window's p99 was)."""
+    s = rec["summary"]
+    # a lattice's floe breaks in two when a line of 3-4 joints has; the floes that broke at all
+    # compare the models on one footing
+    return {"mean_fx_N": s["mean_fx_N"], "max_fx_N": s["max_fx_N"], "breaks": s.get("breaks", 0),
+            "floes": len({e["floe"] for e in rec.get("fracture_events", [])}),
+            "p99_fx_N": rec.get("window", {}).get("p99_fx_N")}
+
+
 def stats(recs):
     """The table's numbers over the runs `recs` (records of finished runs; aggregate.ensemble):
     (mean, ci) of the mean, p99 and max, the largest max, breaks and floes broken per run, and
     CPU s per run."""
-    def per_run(rec):
-        s = rec["summary"]
-        # a lattice's floe breaks in two when a line of 3-4 joints has; the floes that broke at all
-        # compare the models on one footing
-        return {"mean_fx_N": s["mean_fx_N"], "max_fx_N": s["max_fx_N"], "breaks": s.get("breaks", 0),
-                "floes": len({e["floe"] for e in rec.get("fracture_events", [])}),
-                "p99_fx_N": rec.get("window", {}).get("p99_fx_N")}
     e = agg.ensemble(recs, per_run, summary=lambda rec: rec["summary"], counts=lambda rec: True)
     out = {k: e.get(k) for k in ("mean_fx_N", "max_fx_N", "p99_fx_N")}  # p99: None unless every run has one
     out["largest"] = float(e["runs"]["max_fx_N"].max())
@@ -70,6 +80,63 @@ def comparison(records):
         out[fii] = (common, {m: stats([by_model[m][s] for s in common]) if common and by_model[m] else None
                              for m in MODELS})
     return out
+
+
+def shape_comparison(records):
+    """{f_ii: {shape: None (no seed both have finished) or (seeds, shape's stats(), squares' stats(),
+    {key: (mean difference shape - squares, its 95 % half-width; nan for one seed; None without
+    the number in every run)})}}: each element shape against the squares of its size on the same
+    layouts, so the layout's scatter, which both share, drops out of the difference."""
+    out = {}
+    for fii in FII_VALUES:
+        out[fii] = {}
+        for shape, _, squares in SHAPES:
+            a, b = model_runs(records, shape, fii), model_runs(records, squares, fii)
+            seeds = sorted(set(a) & set(b))
+            if not seeds:
+                out[fii][shape] = None
+                continue
+            diffs = {}
+            for key, _, _ in PAIRED:
+                pairs = [(per_run(a[s])[key], per_run(b[s])[key]) for s in seeds]
+                ok = all(x is not None and y is not None for x, y in pairs)
+                diffs[key] = agg.mean_ci([x - y for x, y in pairs]) if ok else None
+            out[fii][shape] = (seeds, stats([a[s] for s in seeds]), stats([b[s] for s in seeds]), diffs)
+    return out
+
+
+def shape_lines(records):
+    """The Markdown of the element shapes against the squares (shape_comparison)."""
+    got = shape_comparison(records)
+    if not any(v for t in got.values() for v in t.values()):
+        return []
+    L = ["### Hexagonal elements against squares", "",
+         "The lattices of hexagonal elements (`fracture.element_shape = \"hexagon\"`, the models sweep's; "
+         "0.20 m and 0.15 m across flats, their calibrated strength, docs/model/breakage.md) against the "
+         "squares of the same size, on the seeds both have finished: the same layouts, so the difference "
+         "is taken seed by seed (mean difference ± the half-width of its 95 % interval, none for one seed). "
+         "A shape whose sweep is still running is compared on the seeds it has.", "",
+         "| f_ii | lattice | seeds | mean, N | p99, N | mean of maxima, N | breaks / run | floes broken / run | "
+         "CPU s / run |", "|---|---|---|---|---|---|---|---|---|"]
+    for fii, shapes in got.items():
+        for shape, label, squares in SHAPES:
+            if shapes[shape] is None:
+                L.append(f"| {fii} | {label} | 0 | n/a | n/a | n/a | n/a | n/a | n/a |")
+                continue
+            seeds, st_shape, st_squares, diffs = shapes[shape]
+            seed_text = ", ".join(str(s) for s in seeds)
+            squares_label = dict((m, lab) for m, lab in MODELS)[squares]
+            for lab, st in ((label, st_shape), (squares_label, st_squares)):
+                L.append(f"| {fii} | {lab} | {seed_text} | {_ci(st['mean_fx_N'])} | {_ci(st['p99_fx_N'])} | "
+                         f"{_ci(st['max_fx_N'])} | {st['breaks']:.1f} | {st['floes']:.1f} | {st['cpu']:.0f} |")
+            cells = []
+            for key, _, unit in PAIRED:
+                d = diffs[key]
+                cells.append("n/a" if d is None else
+                             f"{d[0]:+.1f}" + (f" ± {d[1]:.1f}" if np.isfinite(d[1]) else " (one seed)"))
+            L.append(f"| {fii} | hexagons - squares | {len(seeds)} | {cells[0]} | {cells[1]} | {cells[2]} | "
+                     f"{cells[3]} | | |")
+    return L + [""]
 
 
 def iso19906(icedem):
@@ -131,8 +198,8 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
          f"{' and '.join(str(v) for v in FII_VALUES)}) with these models of the ice: rigid floes (the grid's "
          "`large_rigid`), rigid floes that split in two when the cone's load normal to a floe reaches a floating "
          "beam's breaking load (`fracture.mode = \"analytic\"`, `sweeps/paper_fracture_models.toml`; "
-         "docs/model/breakage.md), the lattices of 0.20 m and 0.15 m square elements (the grid's) and of "
-         "hexagonal elements of the same sizes (`fracture.element_shape = \"hexagon\"`, the models sweep's). "
+         "docs/model/breakage.md) and the lattices of 0.20 m and 0.15 m square elements (the grid's; the "
+         "hexagonal elements of the same sizes are set against them below). "
          "Each over the seeds every model with runs has finished, the same layouts (a model not yet run shows "
          "n/a); loads are the surge load over each run's analysis "
          "window, the mean over seeds ± the half-width of the 95 % interval. p99 is the load a run exceeds "
@@ -179,6 +246,7 @@ def fracture_models_section(models_sweep, grid_records, figs, report, icedem=Non
           "floes here are a managed field of 75 % concentration, which the standard does not cover. It is "
           "the designer's check, not a target: loads in managed ice are usually below those of the level ice "
           "it assumes.", ""]
+    L += shape_lines(records)
     if "large_analytic" in records:
         # what the analytic model's split floes were doing, classified as the lattices' breaks are
         # ("Breakage mechanisms" above), and whether Fig. 18's shift appears in it
