@@ -29,6 +29,7 @@
 #include "coupling/coupled_flow.hpp"
 #include "coupling/foam_case.hpp"
 #include "coupling/foam_runner.hpp"
+#include "dem/core/build_id.hpp"
 #include "dem/core/constants.hpp"
 #include "dem/core/errors.hpp"
 #include "dem/input/scenario.hpp"
@@ -351,6 +352,8 @@ int calibrate_command(const std::string& scenario_path, const std::vector<std::s
 int main(int argc, char** argv) {
   CLI::App app{"icedem: a conical structure towed through managed ice floes (non-smooth DEM on Bullet)"};
   app.require_subcommand(1);
+  // the version and the build (its commit): what a bug report or a sweep's record needs to name
+  app.set_version_flag("--version", std::string("icedem ") + ICEDEM_VERSION + " (" + icedem::build_id().text() + ")");
   std::string scenario, output, summary_path;
   std::vector<std::string> sets;
   bool quiet = false;

@@ -134,6 +134,7 @@ OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const 
   write_attr(m, "scenario_path", run.scenario_path);
   write_attr(m, "command_line", run.command_line);
   write_attr(m, "version", run.version);
+  write_attr(m, "build", run.build);
   write_attr(m, "bullet_version", run.bullet_version);
   write_attr(m, "precision", run.precision);
   write_attr(m, "seed", run.seed);

@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "dem/core/build_id.hpp"
 #include "dem/core/errors.hpp"
 #include "dem/core/hdf5_io.hpp"
 #include "dem/output/file_layout.hpp"
@@ -330,6 +331,7 @@ Recorder::Recorder(const std::string& path, Reopen) : impl_(std::make_unique<Imp
     impl_->read_field();
     write_attr(*impl_->meta, "status", std::string("running"));
     write_attr(*impl_->meta, "resumed_utc", utc_now_iso8601());
+    write_attr(*impl_->meta, "resumed_build", build_id().text());
     impl_->flush_file();
   } catch (const H5::Exception& e) {
     impl_->fail_reopen(hdf5_reason(e));

@@ -40,6 +40,7 @@ struct RunMeta {
   std::string scenario_path;   // path of the scenario file as given
   std::string command_line;    // full command line
   std::string version;         // icedem version
+  std::string build;           // the build that made the run (BuildId::text(), dem/core/build_id.hpp)
   std::string bullet_version;  // Bullet version (e.g. "3.24")
   std::string precision;       // "double" or "float"
   uint64_t seed = 0;           // random seed of the layout

@@ -146,6 +146,12 @@ const std::vector<AttributeEntry>& file_attributes() {
       {"/meta", "scenario_path", Element::text, "", "scenario file as given"},
       {"/meta", "command_line", Element::text, "", "the full command line"},
       {"/meta", "version", Element::text, "", "icedem version"},
+      {"/meta", "build", Element::text, "",
+       "the build that made the run: its source's git commit (\"(modified)\" when tracked sources differed from "
+       "it), the build type and the compiler"},
+      {"/meta", "resumed_build", Element::text, "",
+       "the build that last resumed the run, as build (absent if never resumed); a run resumes bit for bit only "
+       "with its own build"},
       {"/meta", "bullet_version", Element::text, "", "Bullet version"},
       {"/meta", "precision", Element::text, "", "Bullet's scalar: double or float"},
       {"/meta", "seed", Element::i8, "1", "random seed of the layout (unsigned)"},

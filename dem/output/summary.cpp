@@ -223,6 +223,14 @@ const std::vector<SummaryField>& summary_fields() {
       {"bullet_step_s", "s", false, false,
        "the dynamics' step, time.dt / time.substeps: breakage and the loads of the 0.15 m lattices move with it "
        "(docs/model/convergence.md), so runs at two steps are not one sample", [](S s) { return json(s.bullet_step_s); }},
+      {"build", "", false, false,
+       "the build of the process that wrote the summary (a resumed run's: the resuming one): commit (the source's "
+       "git commit, or unknown), modified (tracked sources differed from it), type, compiler. Runs of builds whose "
+       "dynamics differ are not one sample (CHANGELOG.md says which changes moved results)",
+       [](S s) {
+         return json{{"commit", s.build.commit}, {"modified", s.build.modified}, {"type", s.build.type},
+                     {"compiler", s.build.compiler}};
+       }},
       {"wall_time_s", "s", true, false,
        "wall time of the run; a resumed run's adds what its earlier processes spent up to the checkpoint it was "
        "resumed from", [](S s) { return json(s.wall_time_s); }},

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dem/core/build_id.hpp"
 #include "dem/core/diagnostics.hpp"
 #include "dem/output/statistics.hpp"
 #include "dem/step/state.hpp"
@@ -56,6 +57,7 @@ struct RunSummary {
   long steps = 0;
   double sim_time_s = 0.0;
   double bullet_step_s = 0.0;   // time.dt / time.substeps: the step the dynamics took
+  BuildId build{"unknown", false, "", ""};  // the build of the process that wrote the summary
   double wall_time_s = 0.0;
   double cpu_time_s = 0.0;   // user + system CPU time of the process (a shared machine's fair cost)
   int floes = 0;

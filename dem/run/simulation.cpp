@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "dem/contact/registry.hpp"
+#include "dem/core/build_id.hpp"
 #include "dem/core/errors.hpp"
 #include "dem/fracture/ice_lattice.hpp"
 #include "dem/input/setting_warnings.hpp"
@@ -62,6 +63,7 @@ RunMeta run_meta(const Scene& scene, const RunOptions& options) {
   m.scenario_path = scene.source_path;
   m.command_line = options.command_line;
   m.version = ICEDEM_VERSION;
+  m.build = build_id().text();
   m.bullet_version = fmt::format("{}.{:02d}", BT_BULLET_VERSION / 100, BT_BULLET_VERSION % 100);
   m.precision = sizeof(btScalar) == 8 ? "double" : "float";
   m.seed = scene.seed;
@@ -460,6 +462,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.steps = state.step;
   summary.sim_time_s = state.time;
   summary.bullet_step_s = scene.time.dt / scene.time.substeps;
+  summary.build = build_id();
   summary.mean_awake = state.step ? history.awake_sum / state.step : 0.0;
   summary.health = history.health;
   summary.first_contact_s = state.first_contact_time ? *state.first_contact_time : -1.0;

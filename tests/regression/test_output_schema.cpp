@@ -102,10 +102,10 @@ TEST(OutputSchema, ABreakableRunWritesExactlyTheDeclaredDatasetsAndAttributes) {
     EXPECT_EQ(events.getMemberName(static_cast<unsigned>(i)), event_fields()[i].name);
 
   // the attributes: every declared one is there (/stats note only without statistics,
-  // /meta resumed_utc only in a resumed run)
+  // /meta resumed_utc and resumed_build only in a resumed run)
   for (const AttributeEntry& a : file_attributes()) {
     if (std::string(a.object) == "/stats" && std::string(a.name) == "note") continue;
-    if (std::string(a.object) == "/meta" && std::string(a.name) == "resumed_utc") continue;
+    if (std::string(a.object) == "/meta" && std::string(a.name).rfind("resumed_", 0) == 0) continue;
     const bool exists = std::string(a.object) == "/fracture/events"
                             ? file.openDataSet(a.object).attrExists(a.name)
                             : file.openGroup(a.object).attrExists(a.name);

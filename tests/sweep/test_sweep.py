@@ -355,6 +355,22 @@ class Execution(unittest.TestCase):
         self.assertEqual(execute.run_parallel(runs, elsewhere, ICEDEM)[0].state, "done")
         self.assertFalse(os.path.exists(os.path.join(elsewhere, runs[0].path)))  # nothing was rerun
         self.assertEqual(aggregate(elsewhere), first)
+        # every record names the build that made it; one build: aggregation notes nothing, two
+        # builds in one configuration: it says so, with the runs of each
+        build = rec["summary"]["build"]
+        self.assertRegex(build["commit"], "^([0-9a-f]{40}|unknown)$")
+        quiet = subprocess.run([os.path.join(ROOT, "scripts", "sweep"), "aggregate", path, "--out", out],
+                               capture_output=True, text=True)
+        self.assertNotIn("builds (", quiet.stdout)
+        other = json.loads(read(runs[1].record_file))
+        other["summary"]["build"] = dict(build, commit="0" * 40, modified=True)
+        with open(runs[1].record_file, "w") as f:
+            json.dump(other, f)
+        mixed = subprocess.run([os.path.join(ROOT, "scripts", "sweep"), "aggregate", path, "--out", elsewhere],
+                               capture_output=True, text=True)
+        self.assertEqual(mixed.returncode, 0, mixed.stdout + mixed.stderr)
+        self.assertIn(f"note: {runs[1].config}: its runs were made by 2 builds (000000000000 (modified): 1, ",
+                      mixed.stdout)
 
     def test_tiny_sweep_end_to_end_resume_and_failures(self):
         path = sweep_file(TINY)

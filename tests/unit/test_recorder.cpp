@@ -17,6 +17,8 @@
 #include <tuple>
 #include <vector>
 
+#include "dem/core/build_id.hpp"
+
 namespace icedem {
 namespace {
 
@@ -33,6 +35,7 @@ RunMeta test_meta() {
   meta.scenario_path = "scenarios/paper/small_floes.toml";
   meta.command_line = "icedem run scenarios/paper/small_floes.toml -o out.h5";
   meta.version = "0.1.0";
+  meta.build = std::string(40, 'f') + " (modified), RelWithDebInfo, GNU 12.2.0";
   meta.bullet_version = "3.24";
   meta.precision = "double";
   meta.seed = 18446744073709551557ull;  // near 2^64: checks the full unsigned range
@@ -314,6 +317,7 @@ TEST(Recorder, RoundTripKeepsEveryValueAndShape) {
   EXPECT_EQ(string_attr(meta, "scenario_path"), expected.scenario_path);
   EXPECT_EQ(string_attr(meta, "command_line"), expected.command_line);
   EXPECT_EQ(string_attr(meta, "version"), expected.version);
+  EXPECT_EQ(string_attr(meta, "build"), expected.build);
   EXPECT_EQ(string_attr(meta, "bullet_version"), expected.bullet_version);
   EXPECT_EQ(string_attr(meta, "precision"), "double");
   uint64_t seed = 0;
@@ -436,6 +440,8 @@ TEST(Recorder, ReopenedFileContinuesAfterItsRows) {
   H5::H5File file(path, H5F_ACC_RDONLY);
   EXPECT_EQ(string_attr(file.openGroup("/meta"), "status"), "complete");
   EXPECT_FALSE(string_attr(file.openGroup("/meta"), "resumed_utc").empty());
+  // the build that resumed it, beside the one that started it
+  EXPECT_EQ(string_attr(file.openGroup("/meta"), "resumed_build"), build_id().text());
   expect_load_rows(file, total);
   EXPECT_EQ(read_doubles(file, "/snapshots/time"), (std::vector<double>{0.5, 1.5}));
   EXPECT_EQ(shape(file, "/snapshots/end_row"), (std::vector<hsize_t>{2}));

@@ -334,6 +334,32 @@ def load_record(run, out):
         return json.load(f)
 
 
+NO_BUILD = "not recorded"  # a record made before summaries named their build (2026-11-28)
+
+
+def build_label(summary):
+    """The build that made a run, from its summary's build: the commit's first 12 digits, with
+    " (modified)" when the tracked sources differed from it; NO_BUILD for older records."""
+    b = summary.get("build")
+    if not b:
+        return NO_BUILD
+    return b["commit"][:12] + (" (modified)" if b.get("modified") else "")
+
+
+def mixed_builds(groups):
+    """{config: {build label: runs}} of the configurations whose records were made by more than
+    one build (groups as aggregate() takes them, run_record()s): their seeds are samples of
+    different dynamics if a change between the builds moved results (CHANGELOG.md says which)."""
+    out = {}
+    for config, (_, _, records) in groups.items():
+        counts = {}
+        for r in records:
+            counts[r["build"]] = counts.get(r["build"], 0) + 1
+        if len(counts) > 1:
+            out[config] = counts
+    return out
+
+
 def run_record(run, out):
     """What aggregation needs from one finished run (from its record)."""
     record = load_record(run, out)
@@ -346,7 +372,7 @@ def run_record(run, out):
             "breaks_by_mode": {mode_key(k): v for k, v in s.get("breaks_by_mode", {}).items()},
             "breaks_by_mechanism": {mode_key(k): v for k, v in s.get("breaks_by_mechanism", {}).items()},
             "realtime_factor": s.get("realtime_factor"), "wall_time_s": s.get("wall_time_s"),
-            "cpu_time_s": s.get("cpu_time_s")}
+            "cpu_time_s": s.get("cpu_time_s"), "build": build_label(s)}
 
 
 def _finite(values):

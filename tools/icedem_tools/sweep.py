@@ -101,6 +101,9 @@ def aggregate(runs, out):
         print(f"{row['configuration']:50s} {row['seeds']:5d}  {row['mean_fx_N']:6.2f} +- {row['mean_fx_N_ci95']:5.2f}"
               f"  {row['max_fx_N']:6.2f} +- {row['max_fx_N_ci95']:5.2f}  {row['peak_interval_s']:6.2f}"
               f"  {row['spectral_peak_period_s']:6.2f}")
+    for config, counts in agg.mixed_builds(groups).items():
+        print(f"note: {config}: its runs were made by {len(counts)} builds ("
+              + ", ".join(f"{b}: {n}" for b, n in sorted(counts.items())) + ")")
     print(f"wrote {out}/results.csv and results.h5" + (f"; {missing} runs not finished were left out" if missing else ""))
     return 0 if missing == 0 else 1
 
