@@ -4,6 +4,9 @@
 # when the identity changed, so an unchanged tree relinks nothing. Outside a git checkout, or
 # without git, the commit is "unknown".
 #   cmake -DSRC=<source dir> -DOUT=<file> -DTYPE=<build type> -DCOMPILER=<id version> -P build_id.cmake
+if(NOT TYPE)
+  set(TYPE "none")  # configured without CMAKE_BUILD_TYPE: no optimisation flags
+endif()
 set(commit "unknown")
 set(modified "false")
 find_program(GIT git)

@@ -150,8 +150,8 @@ const std::vector<AttributeEntry>& file_attributes() {
        "the build that made the run: its source's git commit (\"(modified)\" when tracked sources differed from "
        "it), the build type and the compiler"},
       {"/meta", "resumed_build", Element::text, "",
-       "the build that last resumed the run, as build (absent if never resumed); a run resumes bit for bit only "
-       "with its own build"},
+       "the build that last resumed the run, as build (absent if never resumed); another build than the one "
+       "that started it continues the run bit for bit only if no change between them moved results"},
       {"/meta", "bullet_version", Element::text, "", "Bullet version"},
       {"/meta", "precision", Element::text, "", "Bullet's scalar: double or float"},
       {"/meta", "seed", Element::i8, "1", "random seed of the layout (unsigned)"},
