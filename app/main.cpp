@@ -87,6 +87,20 @@ int exit_code(const RunSummary& summary) {
   return summary.signal == SIGTERM ? kExitTerminated : kExitInterrupted;
 }
 
+// The options that export contact problems of chosen steps (run and resume).
+void add_export_options(CLI::App& command, ProblemExportSettings& problems) {
+  command.add_option("--export-problems", problems.directory,
+                     "write contact problems of chosen steps to this directory (FCLIB files; "
+                     "docs/model/contact_problems.md)");
+  command.add_option("--export-at", problems.times, "s: export the islands of the steps holding these times")
+      ->delimiter(',');
+  command.add_option("--export-capped", problems.capped, "export up to this many islands that stopped at the sweep cap");
+  command.add_option("--export-spacing", problems.capped_spacing,
+                     "s, least time between two capped exports (default 1)");
+  command.add_option("--export-min-contacts", problems.min_contacts, "leave out islands with fewer contacts (default 1)");
+  command.add_option("--export-name", problems.name, "file name prefix (default: problem)");
+}
+
 int run_command(const std::string& scenario_path, std::string output, const std::vector<std::string>& sets,
                 const std::string& summary_path, bool quiet, const std::string& command_line,
                 const ProblemExportSettings& problems) {
@@ -107,7 +121,7 @@ int run_command(const std::string& scenario_path, std::string output, const std:
 // Continue a killed or interrupted run from its checkpoint (dem/output/checkpoint.hpp): the output
 // becomes the checkpoint's copy of it, and the run appends to it from there.
 int resume_command(const std::string& output, const std::string& summary_path, bool quiet,
-                   const std::string& command_line) {
+                   const std::string& command_line, const ProblemExportSettings& problems) {
   const std::string saved = checkpoint_path(output);
   if (!std::filesystem::exists(output) && !std::filesystem::exists(saved))
     throw InputError(fmt::format("{}: no such output file, and no checkpoint of it ({})", output, saved));
@@ -139,9 +153,11 @@ int resume_command(const std::string& output, const std::string& summary_path, b
   std::filesystem::copy_file(saved, output, std::filesystem::copy_options::overwrite_existing);
   remove_checkpoint_group(output);
   std::cerr << fmt::format("resuming {} from its checkpoint at t = {:.2f} s\n", output, checkpoint.values.time);
-  RunOptions options{output, !quiet, command_line, openfoam_coupling(), {}, &checkpoint};
+  RunOptions options{output, !quiet, command_line, openfoam_coupling(), problems, &checkpoint};
   const RunSummary summary = run_simulation(scene, options);
   std::cout << summary_table(summary) << std::flush;
+  if (!problems.directory.empty())
+    std::cout << fmt::format("{} contact problems written to {}\n", summary.problem_files.size(), problems.directory);
   if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
   return exit_code(summary);
 }
@@ -365,20 +381,15 @@ int main(int argc, char** argv) {
   run->add_option("--summary-json", summary_path, "write the run summary as JSON to this file");
   run->add_flag("-q,--quiet", quiet, "no progress line");
   ProblemExportSettings problems;
-  run->add_option("--export-problems", problems.directory,
-                  "write contact problems of chosen steps to this directory (FCLIB files; "
-                  "docs/model/contact_problems.md)");
-  run->add_option("--export-at", problems.times, "s: export the islands of the steps holding these times")
-      ->delimiter(',');
-  run->add_option("--export-capped", problems.capped, "export up to this many islands that stopped at the sweep cap");
-  run->add_option("--export-spacing", problems.capped_spacing, "s, least time between two capped exports (default 1)");
-  run->add_option("--export-min-contacts", problems.min_contacts, "leave out islands with fewer contacts (default 1)");
-  run->add_option("--export-name", problems.name, "file name prefix (default: problem)");
+  add_export_options(*run, problems);
 
   CLI::App* resume = app.add_subcommand("resume", "continue a killed or interrupted run from its checkpoint");
   resume->add_option("output", output, "the run's HDF5 output file (its checkpoint is OUTPUT.checkpoint)")->required();
   resume->add_option("--summary-json", summary_path, "write the run summary as JSON to this file");
   resume->add_flag("-q,--quiet", quiet, "no progress line");
+  // a run that failed late (a blow-up after hours) is looked into from its last checkpoint: the
+  // islands of the failing step are exported without running it from the start again
+  add_export_options(*resume, problems);
 
   CLI::App* info = app.add_subcommand("info", "say whether a run's output is complete, killed or resumable");
   info->add_option("output", output, "a run's HDF5 output file")->required();
@@ -451,7 +462,7 @@ int main(int argc, char** argv) {
         throw InputError("-o '': give a file name (or leave -o out: <scenario>.h5)");
       return run_command(scenario, output, sets, summary_path, quiet, joined_command_line(argc, argv), problems);
     }
-    if (*resume) return resume_command(output, summary_path, quiet, joined_command_line(argc, argv));
+    if (*resume) return resume_command(output, summary_path, quiet, joined_command_line(argc, argv), problems);
     if (*info) return info_command(output);
     if (*check) return check_command(scenario, sets);
     if (*stl) return stl_command(scenario, sets, output);

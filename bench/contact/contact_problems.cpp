@@ -8,6 +8,10 @@
 //       solve each problem to a merit of 1e-10 with Siconos numerics, cross-check the
 //       answer with a second method, and write it into the file as FCLIB's /solution
 //       with /icedem/reference saying how it was found (or why none was)
+//   contact_problems extract FILE --body ID -o OUT
+//       the problem of one body (run index ID) and its contacts with fixed bodies, cut out of
+//       FILE's island with their warm starts: a small test problem of what held it (a free
+//       element wedged between held pieces, tests/physics/data/contact/)
 //   contact_problems errors FILE... [--method M] [--merit K] [--tolerance T ...] [--first-iterations N] [--csv F] [--loaded-only]
 //       the physical error of the run's answer and of a method's at each tolerance against
 //       a tight one (newton to 1e-10, else apgd to 1e-9, then ipm): the load on the structure (N) and
@@ -313,6 +317,31 @@ int errors_command(const std::vector<std::string>& files, const std::string& met
   return 0;
 }
 
+int extract_command(const std::string& path, int body_id, const std::string& out) {
+  const ContactProblem p = read_problem_file(path).problem;
+  int k = -1;
+  for (std::size_t i = 0; i < p.bodies.size(); ++i)
+    if (p.bodies[i].id == body_id) k = static_cast<int>(i);
+  if (k < 0) throw InputError(fmt::format("{}: no body with run index {}", path, body_id));
+  ContactProblem q;
+  q.bodies = {p.bodies[k]};
+  for (ProblemContact c : p.contacts) {
+    if (!((c.a == k && c.b < 0) || (c.b == k && c.a < 0))) continue;
+    c.a = c.a == k ? 0 : -1;
+    c.b = c.b == k ? 0 : -1;
+    q.contacts.push_back(c);
+  }
+  q.time = p.time;
+  q.dt = p.dt;
+  q.step = p.step;
+  q.island = p.island;
+  q.source = fmt::format("{} (body {} and its contacts with fixed bodies)", p.source, body_id);
+  q.box_friction = p.box_friction;
+  write_problem_file(out, q);
+  std::cout << fmt::format("{}: body {}, {} contacts with fixed bodies\n", out, body_id, q.contacts.size());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -347,8 +376,15 @@ int main(int argc, char** argv) {
   errors->add_option("--merit", merit_name, "the merit the tolerances bound: siconos (default) or impulse");
   bool loaded_only = false;
   errors->add_flag("--loaded-only", loaded_only, "only islands that touch the structure or hold joints");
+  CLI::App* extract = app.add_subcommand("extract", "one body and its contacts with fixed bodies, as a problem file");
+  std::string extract_file, extract_out;
+  int body_id = -1;
+  extract->add_option("file", extract_file, "problem file")->required();
+  extract->add_option("--body", body_id, "the body's run index (/icedem/body_ids)")->required();
+  extract->add_option("-o,--output", extract_out, "the new problem file")->required();
   CLI11_PARSE(app, argc, argv);
   try {
+    if (*extract) return extract_command(extract_file, body_id, extract_out);
     if (*solve) return solve_command(files, methods, tolerance, max_iterations, cold, first_iterations);
     if (*errors)
       return errors_command(files, method, merit_kind(merit_name), tolerances, max_iterations, first_iterations, csv_path,
