@@ -101,6 +101,15 @@ void add_export_options(CLI::App& command, ProblemExportSettings& problems) {
   command.add_option("--export-name", problems.name, "file name prefix (default: problem)");
 }
 
+// What run and resume print and write once the run ends, and their exit code.
+int finish_run(const RunSummary& summary, const std::string& summary_path, const ProblemExportSettings& problems) {
+  std::cout << summary_table(summary) << std::flush;
+  if (!problems.directory.empty())
+    std::cout << fmt::format("{} contact problems written to {}\n", summary.problem_files.size(), problems.directory);
+  if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
+  return exit_code(summary);
+}
+
 int run_command(const std::string& scenario_path, std::string output, const std::vector<std::string>& sets,
                 const std::string& summary_path, bool quiet, const std::string& command_line,
                 const ProblemExportSettings& problems) {
@@ -111,11 +120,7 @@ int run_command(const std::string& scenario_path, std::string output, const std:
   const OutputLock lock(output);  // one run per output file
   RunOptions options{output, !quiet, command_line, openfoam_coupling(), problems};
   const RunSummary summary = run_simulation(scene, options);
-  std::cout << summary_table(summary) << std::flush;
-  if (!problems.directory.empty())
-    std::cout << fmt::format("{} contact problems written to {}\n", summary.problem_files.size(), problems.directory);
-  if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
-  return exit_code(summary);
+  return finish_run(summary, summary_path, problems);
 }
 
 // Continue a killed or interrupted run from its checkpoint (dem/output/checkpoint.hpp): the output
@@ -155,11 +160,7 @@ int resume_command(const std::string& output, const std::string& summary_path, b
   std::cerr << fmt::format("resuming {} from its checkpoint at t = {:.2f} s\n", output, checkpoint.values.time);
   RunOptions options{output, !quiet, command_line, openfoam_coupling(), problems, &checkpoint};
   const RunSummary summary = run_simulation(scene, options);
-  std::cout << summary_table(summary) << std::flush;
-  if (!problems.directory.empty())
-    std::cout << fmt::format("{} contact problems written to {}\n", summary.problem_files.size(), problems.directory);
-  if (!summary_path.empty()) write_json(summary_path, summary_json(summary));
-  return exit_code(summary);
+  return finish_run(summary, summary_path, problems);
 }
 
 // What state a run's output is in, and whether (and from when) it can be resumed.

@@ -20,6 +20,7 @@
 #include <cmath>
 
 #include "dem/contact/problem.hpp"
+#include "dem/core/constants.hpp"
 
 namespace icedem {
 
@@ -29,6 +30,14 @@ constexpr double kRefinementGrowth = 10.0;
 
 /// The size of an answer's impulses, N s: |(r, l)|.
 inline double impulse_norm(const SolverAnswer& a) { return std::sqrt(a.r.squaredNorm() + a.l.squaredNorm()); }
+
+/// The island's weight over the step, N s: the impulses a resting island carries, the least size
+/// a later answer is judged against (refines' floor).
+inline double weight_impulse(const ContactProblem& p) {
+  double mass = 0;
+  for (const ProblemBody& b : p.bodies) mass += b.mass;
+  return std::max(kMeritGravity * p.dt * mass, 1e-12);
+}
 
 /// Whether `next`, solved from `from`'s answer, is the better answer: a merit no higher, with
 /// impulses within kRefinementGrowth of `from`'s. `floor` (N s, > 0) stands in for `from`'s

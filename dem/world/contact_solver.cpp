@@ -10,7 +10,6 @@
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
 #include "dem/contact/refinement.hpp"
-#include "dem/core/constants.hpp"
 #include "dem/world/joint_springs.hpp"
 
 namespace icedem {
@@ -424,11 +423,6 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   options.merit = merit_;
   options.warm_start = true;  // from the rows' warm start (solver.warm_start of the last step's)
   SolverAnswer answer = method_->solve(problem, options);
-  // the island's weight over the step, N s: the impulses a resting island carries, the least
-  // size a later stage's answer is judged against (dem/contact/refinement.hpp)
-  double mass = 0;
-  for (const ProblemBody& b : problem.bodies) mass += b.mass;
-  const double weight_impulse = std::max(kMeritGravity * problem.dt * mass, 1e-12);
   // the gradient method's count of steps grows with the island's stiffness (a lattice's
   // joints, a level sheet's above all), the interior-point method's hardly: an island left at
   // the cap goes on from that answer (docs/model/contact_problems.md, "The interior-point method")
@@ -443,7 +437,7 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
     more.max_iterations = settings_.handover_iterations;
     SolverAnswer next = handover_->solve(started_from(problem, answer), more);
     next.sweeps += answer.sweeps;
-    if (refines(answer, next, weight_impulse)) answer = std::move(next);
+    if (refines(answer, next, weight_impulse(problem))) answer = std::move(next);
     answer.capped = answer.residual > options.tolerance;
     ++report_.handovers;
   }
@@ -456,8 +450,9 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
     const double tolerance = options.tolerance;
     // each stage starts from the best answer so far (a copy: the observer sees the run's own warm start)
     options.max_iterations = settings_.breaking_iterations;
-    const auto keep_better = [&answer, weight_impulse](SolverAnswer next) {
-      if (refines(answer, next, weight_impulse)) {
+    const double floor = weight_impulse(problem);
+    const auto keep_better = [&answer, floor](SolverAnswer next) {
+      if (refines(answer, next, floor)) {
         next.sweeps += answer.sweeps;
         answer = std::move(next);
       } else {

@@ -62,7 +62,7 @@ TEST(Refinement, AnElementWedgedBetweenHeldPiecesKeepsTheGradientMethodsImpulses
   ASSERT_FALSE(gradient.capped) << gradient.residual;
   o.max_iterations = 100;
   const SolverAnswer ipm = make_contact_method("ipm")->solve(started_from(p, gradient), o);
-  const double weight = 9.81 * p.dt * p.bodies[0].mass;  // the element's weight over the step
+  const double weight = weight_impulse(p);  // the element's weight over the step
   std::printf("wedge: apgd |r| %.3g N s (merit %.2g), ipm from it |r| %.3g N s (merit %.2g); weight over the step %.3g N s\n",
               impulse_norm(gradient), gradient.residual, impulse_norm(ipm), ipm.residual, weight);
   // what the rule is for: a merit no higher (the run's own test would take it) with impulses

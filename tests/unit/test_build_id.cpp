@@ -2,8 +2,7 @@
 // checkout, written into the summary (and /meta, tests/unit/test_recorder.cpp).
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <memory>
+#include <cstdlib>
 #include <regex>
 #include <string>
 

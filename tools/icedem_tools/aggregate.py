@@ -16,6 +16,7 @@ grid combination, over its seeds):
 Written as one table: CSV and HDF5 (a compound dataset /configurations, and the
 ensemble spectra under /spectra/<row index>).
 """
+import collections
 import csv
 import json
 import math
@@ -350,14 +351,8 @@ def mixed_builds(groups):
     """{config: {build label: runs}} of the configurations whose records were made by more than
     one build (groups as aggregate() takes them, run_record()s): their seeds are samples of
     different dynamics if a change between the builds moved results (CHANGELOG.md says which)."""
-    out = {}
-    for config, (_, _, records) in groups.items():
-        counts = {}
-        for r in records:
-            counts[r["build"]] = counts.get(r["build"], 0) + 1
-        if len(counts) > 1:
-            out[config] = counts
-    return out
+    counts = {config: collections.Counter(r["build"] for r in records) for config, (_, _, records) in groups.items()}
+    return {config: dict(c) for config, c in counts.items() if len(c) > 1}
 
 
 def run_record(run, out):

@@ -24,9 +24,8 @@ MODELS = (("large_rigid", "rigid, no fracture"),
 # element shapes against the squares of their size: (shape's model, its label, the squares' model)
 SHAPES = (("large_hexagon_020", "lattice, 0.20 m hexagons", "large_breakable_020"),
           ("large_hexagon_015", "lattice, 0.15 m hexagons", "large_breakable_015"))
-# the numbers the shapes' table differences seed by seed: (key of stats()' per-run values, label, unit)
-PAIRED = (("mean_fx_N", "mean", "N"), ("p99_fx_N", "p99", "N"), ("max_fx_N", "max", "N"),
-          ("breaks", "breaks", ""))
+# the numbers the shapes' table differences seed by seed (per_run()'s keys, in the table's order)
+PAIRED = ("mean_fx_N", "p99_fx_N", "max_fx_N", "breaks")
 FIS_VALUE = 0.3           # the paper's Fig. 18
 FII_VALUES = (0.3, 0.7)   # its two states of failure
 ISO_SCENARIO = "scenarios/paper/large_floes_rigid.toml"  # the paper's cone and ice
@@ -97,7 +96,7 @@ def shape_comparison(records):
                 out[fii][shape] = None
                 continue
             diffs = {}
-            for key, _, _ in PAIRED:
+            for key in PAIRED:
                 pairs = [(per_run(a[s])[key], per_run(b[s])[key]) for s in seeds]
                 ok = all(x is not None and y is not None for x, y in pairs)
                 diffs[key] = agg.mean_ci([x - y for x, y in pairs]) if ok else None
@@ -125,15 +124,11 @@ def shape_lines(records):
                 continue
             seeds, st_shape, st_squares, diffs = shapes[shape]
             seed_text = ", ".join(str(s) for s in seeds)
-            squares_label = dict((m, lab) for m, lab in MODELS)[squares]
-            for lab, st in ((label, st_shape), (squares_label, st_squares)):
+            for lab, st in ((label, st_shape), (dict(MODELS)[squares], st_squares)):
                 L.append(f"| {fii} | {lab} | {seed_text} | {_ci(st['mean_fx_N'])} | {_ci(st['p99_fx_N'])} | "
                          f"{_ci(st['max_fx_N'])} | {st['breaks']:.1f} | {st['floes']:.1f} | {st['cpu']:.0f} |")
-            cells = []
-            for key, _, unit in PAIRED:
-                d = diffs[key]
-                cells.append("n/a" if d is None else
-                             f"{d[0]:+.1f}" + (f" ± {d[1]:.1f}" if np.isfinite(d[1]) else " (one seed)"))
+            cells = ["n/a" if diffs[key] is None else f"{diffs[key][0]:+.1f}"
+                     + (f" ± {diffs[key][1]:.1f}" if np.isfinite(diffs[key][1]) else " (one seed)") for key in PAIRED]
             L.append(f"| {fii} | hexagons - squares | {len(seeds)} | {cells[0]} | {cells[1]} | {cells[2]} | "
                      f"{cells[3]} | | |")
     return L + [""]
