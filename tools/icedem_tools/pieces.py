@@ -3,7 +3,9 @@ its elements' outlines (/bodies), its joints (/joints) and the joints it broke (
 
 A floe's fragments are the connected parts of its elements over the joints still intact. The piece
 sizes a run reports are those of the fragments broken off: every fragment of a floe that broke but
-its largest, which is what is left of the floe (of a level sheet, the sheet). Areas are the
+its largest, which is what is left of the floe; of a level sheet, every fragment but those the ice
+around the sheet holds (sheet_edge: once the structure's channel has cut the sheet through, the
+sheet is two fragments, one either side of it). Areas are the
 elements' true areas (a hexagonal or outline-clipped element keeps its own), so square and
 hexagonal lattices compare on the same footing; the equivalent diameter is sqrt(4 A / pi).
 
@@ -38,11 +40,36 @@ def lattice_joints(run):
     return np.asarray(run["/joints/bodies"]) if "/joints/bodies" in run else np.empty((0, 2), int)
 
 
-def fragment_areas(run, areas, until=None):
-    """{floe id: areas (m^2) of its fragments, largest first} for every lattice floe that broke, from
-    a results.load_run object and its bodies' areas (body_areas), after the breaks up to time
-    `until` (s; None: all of them). Rigid floes (no joints) and lattices that never broke are left
-    out."""
+def sheet_edge(run):
+    """Of a level-ice run (ice.cover = "level"), which bodies are the sheet's elements that the ice
+    around it holds, as icedem marks them (dem/fracture/level_ice.cpp, add_level_sheet): a centre
+    within one element (fracture.element_size) of the sheet's sides or of its far end (the structure
+    comes from the near end), where the sheet lay at the start (the first snapshot). A fragment
+    with one of them is the sheet, not a piece broken off. None for any other ice cover, or a run
+    without snapshots (its pieces are then every fragment but the largest)."""
+    scenario = run.scenario
+    if scenario.get("ice", {}).get("cover") != "level":
+        return None
+    position = run.first_positions()
+    if position is None:
+        return None
+    vertices, offsets = np.asarray(run["/bodies/vertices"]), np.asarray(run["/bodies/vertex_offset"])
+    sheet = np.unique(lattice_joints(run).ravel())
+    xs = np.concatenate([position[b, 0] + vertices[offsets[b]:offsets[b + 1], 0] for b in sheet])
+    zs = np.concatenate([position[b, 2] + vertices[offsets[b]:offsets[b + 1], 1] for b in sheet])
+    near = float(scenario["fracture"]["element_size"])
+    x, z = position[:, 0], position[:, 2]
+    edge = np.zeros(len(position), bool)
+    edge[sheet] = (z[sheet] - zs.min() < near) | (zs.max() - z[sheet] < near) | (xs.max() - x[sheet] < near)
+    return edge
+
+
+def fragments(run, areas, until=None):
+    """{floe id: (areas (m^2) of its fragments, largest first; for each, whether it holds an element
+    of a level sheet's edge (sheet_edge), or None when the run is not of level ice)} for every
+    lattice floe that broke, from a results.load_run object and its bodies' areas (body_areas),
+    after the breaks up to time `until` (s; None: all of them). Rigid floes (no joints) and lattices
+    that never broke are left out."""
     joints = lattice_joints(run)
     if len(joints) == 0:
         return {}
@@ -58,6 +85,7 @@ def fragment_areas(run, areas, until=None):
     a, b = joints[intact, 0], joints[intact, 1]
     graph = coo_matrix((np.ones(len(a)), (a, b)), shape=(n, n))
     _, label = connected_components(graph, directed=False)
+    edge = sheet_edge(run)
     broken_floes = {f for f, _ in broken_keys}
     lattice_bodies = np.unique(joints.ravel())
     floe_id = np.asarray(run["/bodies/floe_id"])
@@ -66,19 +94,28 @@ def fragment_areas(run, areas, until=None):
         bodies = lattice_bodies[floe_id[lattice_bodies] == f]
         labels, inverse = np.unique(label[bodies], return_inverse=True)
         sums = np.bincount(inverse, weights=areas[bodies], minlength=len(labels))
-        out[f] = np.sort(sums)[::-1]
+        order = np.argsort(sums, kind="stable")[::-1]
+        held = None if edge is None else np.bincount(inverse, weights=edge[bodies], minlength=len(labels))[order] > 0
+        out[f] = (sums[order], held)
     return out
+
+
+def fragment_areas(run, areas, until=None):
+    """{floe id: areas (m^2) of its fragments, largest first} (fragments, without the edge)."""
+    return {f: a for f, (a, _) in fragments(run, areas, until).items()}
 
 
 def piece_areas(run, until=None):
     """(areas (m^2) of the pieces broken off by time `until` (s; None: the run's end), the lattices'
-    whole element's area (m^2)): every fragment of a floe that broke but its largest."""
+    whole element's area (m^2)): every fragment of a floe that broke but its largest; of a level
+    sheet, every fragment the ice around it does not hold (sheet_edge)."""
     joints = lattice_joints(run)
     if len(joints) == 0:  # rigid floes only: no outline read
         return np.empty(0), 0.0
     areas = body_areas(run)
-    frags = fragment_areas(run, areas, until)
-    pieces = np.concatenate([a[1:] for a in frags.values()]) if frags else np.empty(0)
+    frags = fragments(run, areas, until)
+    off = [a[1:] if held is None else a[~held] for a, held in frags.values()]
+    pieces = np.concatenate(off) if off else np.empty(0)
     # the whole elements' area: the commonest, to the round-off (clipped ones at an outline are smaller)
     values, counts = np.unique(np.round(areas[np.unique(joints.ravel())], 9), return_counts=True)
     return pieces, float(values[np.argmax(counts)])

@@ -72,6 +72,17 @@ class RunFile:
         """The resolved scenario the run was made from (every key with its value), as a dict."""
         return tomllib.loads(self.meta.get("scenario", ""))
 
+    def first_positions(self):
+        """Every body's position (nb x 3, m) at the first snapshot, which stores every body in the
+        run then (snapshot_field), or None when the file holds no snapshot."""
+        with h5py.File(self.path, "r") as f:
+            if "/snapshots/end_row" not in f or len(f["/snapshots/end_row"]) == 0:
+                return None
+            rows = int(f["/snapshots/end_row"][0])
+            position = np.full((len(f["/bodies/floe_id"]), 3), np.nan)
+            position[f["/snapshots/rows/body"][:rows]] = f["/snapshots/rows/position"][:rows]
+            return position
+
     @property
     def snapshot_count(self):
         """How many snapshots the file holds."""
