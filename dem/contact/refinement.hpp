@@ -39,12 +39,18 @@ inline double weight_impulse(const ContactProblem& p) {
   return std::max(kMeritGravity * p.dt * mass, 1e-12);
 }
 
-/// Whether `next`, solved from `from`'s answer, is the better answer: a merit no higher, with
-/// impulses within kRefinementGrowth of `from`'s. `floor` (N s, > 0) stands in for `from`'s
-/// size when that is smaller, so that an answer started from rest may load up.
-inline bool refines(const SolverAnswer& from, const SolverAnswer& next, double floor) {
+/// Whether `next`, solved from `from`'s answer, lowered the merit by running off: a merit no
+/// higher, with impulses more than kRefinementGrowth times `from`'s. `floor` (N s, > 0) stands in
+/// for `from`'s size when that is smaller, so that an answer started from rest may load up.
+inline bool runs_off(const SolverAnswer& from, const SolverAnswer& next, double floor) {
   return next.residual <= from.residual &&
-         impulse_norm(next) <= kRefinementGrowth * std::max(impulse_norm(from), floor);
+         impulse_norm(next) > kRefinementGrowth * std::max(impulse_norm(from), floor);
+}
+
+/// Whether `next`, solved from `from`'s answer, is the better answer: a merit no higher, without
+/// running off (runs_off).
+inline bool refines(const SolverAnswer& from, const SolverAnswer& next, double floor) {
+  return next.residual <= from.residual && !runs_off(from, next, floor);
 }
 
 }  // namespace icedem

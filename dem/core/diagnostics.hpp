@@ -26,6 +26,7 @@ struct StepDiagnostics {
   double breaking_decided = 0;      // of those, the ones every break of which was decided at solver.breaking_check_tolerance
   double breaking_capped = 0;       // of those, the ones that stopped at solver.breaking_iterations above their merit
   double handovers = 0;             // islands handed over at solver.method_iterations to solver.handover_method
+  double runaways = 0;              // later stages' answers refused for impulses run off (dem/contact/refinement.hpp)
   double boundary_load = 0;         // N, fixed bodies' resistance to the structure's push (dem/world/boundary_load.hpp)
   double locked = 0;                // 1 if the boundaries carry kLockedShare of the surge load or more
   double held_edge_overloads = 0;   // a level sheet's joints at its held edge over their capacity (never broken)
@@ -85,6 +86,12 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      "islands the method left at solver.method_iterations above their merit in the step, which "
      "solver.handover_method went on with from that answer (solver_capped says whether it reached the merit)",
      &StepDiagnostics::handovers},
+    {"runaways", "1",
+     "answers of a later stage in the step (the hand-over at the cap, a breaking solve's further stages) not "
+     "taken because they lowered the merit by growing the island's impulses over ten times: where the "
+     "solutions are unbounded (an element wedged between fixed bodies) a method can run off along them; "
+     "the answer before it is kept (dem/contact/refinement.hpp)",
+     &StepDiagnostics::runaways},
     {"boundary_load", "N",
      "load the fixed bodies (walls, mother ice, frozen floes) take off the structure: their contact impulses on "
      "the ice of the islands touching the structure, along its travel, over the step (dem/world/boundary_load.hpp)",

@@ -54,6 +54,10 @@ std::string solver_line(const SolverSummary& v) {
     out += fmt::format("  {} islands left at the cap above their merit went on with {} from that answer (their "
                        "iterations count above; /diagnostics/handovers)\n",
                        v.handovers, v.handover_method);
+  if (v.runaways > 0)
+    out += fmt::format("  {} answers of a later stage (hand-over, breaking solves) not taken: they lowered the merit by "
+                       "growing the island's impulses over tenfold, the answer before kept (/diagnostics/runaways)\n",
+                       v.runaways);
   if (v.tolerance > 0 && v.capped_window_fraction > SolverSummary::kCappedWarning)
     out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached {} = {:d} before "
                        "{} = {:g}: their loads are not converged; raise the cap "
@@ -271,7 +275,8 @@ const std::vector<SummaryField>& summary_fields() {
        "near its capacity; 0 for pgs), breaking_decided (of those, the ones every break of which was decided at "
        "solver.breaking_check_tolerance), breaking_capped (of those, the ones stopped at solver.breaking_iterations above "
        "it), handovers (islands left at the cap above their merit that handover_method, solver.handover_method, went "
-       "on with)",
+       "on with), runaways (answers of those later stages not taken for impulses grown over tenfold at a merit no "
+       "higher)",
        [](S s) {
          return json{{"method", s.solver.method},
                      {"cap", s.solver.cap},
@@ -288,7 +293,8 @@ const std::vector<SummaryField>& summary_fields() {
                      {"breaking_capped", s.solver.breaking_capped},
                      {"breaking_tolerance", s.solver.breaking_tolerance},
                      {"handovers", s.solver.handovers},
-                     {"handover_method", s.solver.handover_method}};
+                     {"handover_method", s.solver.handover_method},
+                     {"runaways", s.solver.runaways}};
        }},
       {"boundary", "", false, false,
        "the fixed boundaries (mother ice, walls, frozen floes) over the analysis window: share_of_surge (their "

@@ -35,6 +35,7 @@ struct SolverSummary {
   long breaking_capped = 0;       // of those, the ones that stopped at their cap above the tighter merit
   double breaking_tolerance = 0;  // the merit they were solved to (0: off)
   long handovers = 0;             // islands handed over at the cap to solver.handover_method
+  long runaways = 0;              // later stages' answers refused for impulses run off (refinement.hpp)
   std::string handover_method;    // solver.handover_method
   /// More than this fraction of capped steps in the window: the summary warns.
   static constexpr double kCappedWarning = 0.01;

@@ -143,6 +143,7 @@ SolverSummary solver_summary(const Scene& scene, const RunHistory& h, const RunS
     v.breaking_decided += static_cast<long>(d.breaking_decided);
     v.breaking_capped += static_cast<long>(d.breaking_capped);
     v.handovers += static_cast<long>(d.handovers);
+    v.runaways += static_cast<long>(d.runaways);
     const bool in_window = !s.has_statistics || (h.time[i] >= s.surge.window_start && h.time[i] <= s.surge.window_end);
     window_steps += in_window;
     window_capped += in_window && d.solver_capped > 0;

@@ -100,6 +100,7 @@ void record_solver_report(const SolverReport& report, StepDiagnostics& d) {
   d.breaking_decided = report.breaking_decided;
   d.breaking_capped = report.breaking_capped;
   d.handovers = report.handovers;
+  d.runaways = report.runaways;
 }
 
 }  // namespace

@@ -437,7 +437,11 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
     more.max_iterations = settings_.handover_iterations;
     SolverAnswer next = handover_->solve(started_from(problem, answer), more);
     next.sweeps += answer.sweeps;
-    if (refines(answer, next, weight_impulse(problem))) answer = std::move(next);
+    const double floor = weight_impulse(problem);
+    if (refines(answer, next, floor))
+      answer = std::move(next);
+    else
+      report_.runaways += runs_off(answer, next, floor);
     answer.capped = answer.residual > options.tolerance;
     ++report_.handovers;
   }
@@ -451,11 +455,12 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
     // each stage starts from the best answer so far (a copy: the observer sees the run's own warm start)
     options.max_iterations = settings_.breaking_iterations;
     const double floor = weight_impulse(problem);
-    const auto keep_better = [&answer, floor](SolverAnswer next) {
+    const auto keep_better = [this, &answer, floor](SolverAnswer next) {
       if (refines(answer, next, floor)) {
         next.sweeps += answer.sweeps;
         answer = std::move(next);
       } else {
+        report_.runaways += runs_off(answer, next, floor);
         answer.sweeps += next.sweeps;
       }
     };

@@ -127,6 +127,7 @@ struct SolverReport {
   int breaking_decided = 0;  // of those, the ones that stopped at breaking_check_tolerance, every break decided
   int breaking_capped = 0;  // of those, the ones that stopped at the cap above the tighter merit
   int handovers = 0;        // islands handed over at the method's cap (ContactSolverSettings::handover_method)
+  int runaways = 0;         // later stages' answers refused for impulses run off (dem/contact/refinement.hpp)
 
   void clear() { *this = SolverReport{}; }
   /// One island solved: its iterations, the residual it ended with, whether the cap stopped it.

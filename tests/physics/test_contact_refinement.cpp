@@ -37,6 +37,8 @@ TEST(Refinement, ALowerMeritWithImpulsesOfTheSameSizeIsBetter) {
   EXPECT_FALSE(refines(from, answer(1.0, 2e-3), 0.1)) << "a higher merit";
   // impulses a million times larger: no refinement, however low the merit
   EXPECT_FALSE(refines(from, answer(1e6, 1e-9), 0.1));
+  EXPECT_TRUE(runs_off(from, answer(1e6, 1e-9), 0.1)) << "what /diagnostics/runaways counts";
+  EXPECT_FALSE(runs_off(from, answer(1e6, 2e-3), 0.1)) << "a higher merit is refused as such, not counted as run off";
   // up to kRefinementGrowth times: still one (a capped answer far from the solution)
   EXPECT_TRUE(refines(from, answer(0.99 * kRefinementGrowth, 1e-6), 0.1));
   // an answer started from rest may load up to the floor's scale
@@ -72,4 +74,5 @@ TEST(Refinement, AnElementWedgedBetweenHeldPiecesKeepsTheGradientMethodsImpulses
   EXPECT_GT(impulse_norm(ipm), 100 * impulse_norm(gradient));
   EXPECT_GT(impulse_norm(ipm), kRefinementGrowth * weight);
   EXPECT_FALSE(refines(gradient, ipm, weight)) << "the interior-point answer replaced the gradient method's";
+  EXPECT_TRUE(runs_off(gradient, ipm, weight)) << "the refusal is counted as a runaway";
 }
