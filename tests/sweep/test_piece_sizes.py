@@ -71,7 +71,6 @@ p, _ = pieces.piece_areas(run, until=1.5)
 check(np.allclose(p, [1.5 * A]), f"until 1.5 s only joint 1 is broken: one piece of 1.5 elements: {p}")
 
 
-
 def level_run(broken):
     """A level sheet of 4 x 3 squares of 0.15 m (fracture.element_size) from x = 6 m, the structure
     coming from x = 6 m: body 3 * col + row at column col (along the tow) and row row (across); joints
