@@ -371,6 +371,31 @@ class Execution(unittest.TestCase):
         self.assertEqual(mixed.returncode, 0, mixed.stdout + mixed.stderr)
         self.assertIn(f"note: {runs[1].config}: its runs were made by 2 builds (000000000000 (modified): 1, ",
                       mixed.stdout)
+        # a record of another run than its directory holds (a figure's rerun by another build) is
+        # never replaced, even one made before records kept the window (which is otherwise remade
+        # from the directory): it stays byte for byte, and a warning names the directory
+        old = json.loads(read(runs[0].record_file))
+        del old["window"]
+        max_fx = old["summary"]["max_fx_N"]
+        old["summary"]["max_fx_N"] = max_fx + 1.0
+        with open(runs[0].record_file, "w") as f:
+            json.dump(old, f)
+        os.utime(runs[0].record_file, (1, 1))  # older than the run's summary
+        before = read(runs[0].record_file)
+        kept = subprocess.run([os.path.join(ROOT, "scripts", "sweep"), "aggregate", path, "--out", out],
+                              capture_output=True, text=True)
+        self.assertEqual(kept.returncode, 0, kept.stdout + kept.stderr)
+        self.assertEqual(read(runs[0].record_file), before)
+        self.assertIn(f"{os.path.join(out, runs[0].path)} holds another run than its record", kept.stderr)
+        # the same run: the old record is made again from the directory, with its window
+        old["summary"]["max_fx_N"] = max_fx
+        with open(runs[0].record_file, "w") as f:
+            json.dump(old, f)
+        os.utime(runs[0].record_file, (1, 1))
+        remade = subprocess.run([os.path.join(ROOT, "scripts", "sweep"), "aggregate", path, "--out", out],
+                                capture_output=True, text=True)
+        self.assertNotIn("holds another run", remade.stderr)
+        self.assertIn("window", json.loads(read(runs[0].record_file)))
 
     def test_tiny_sweep_end_to_end_resume_and_failures(self):
         path = sweep_file(TINY)

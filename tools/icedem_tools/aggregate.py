@@ -21,6 +21,7 @@ import csv
 import json
 import math
 import os
+import sys
 
 import h5py
 import numpy as np
@@ -307,10 +308,16 @@ def make_record(run_dir):
             "fracture_events": events, "window": window, "pieces": pieces.summary(*pieces.piece_areas(run))}
 
 
+# what says that a run directory holds the run a kept record was made from (load_record)
+SAME_RUN_KEYS = ("steps", "mean_fx_N", "max_fx_N", "breaks")
+
+
 def load_record(run, out):
     """The record of a finished run: the kept file when the sweep keeps records and it is at
     least as new as the run's summary (and has the window's quantiles and filtered maxima, kept since
-    2026-11-26); else made from the run's directory (reading its HDF5 file) and kept."""
+    2026-11-26); else made from the run's directory (reading its HDF5 file) and kept. A kept record
+    is never replaced by a run directory holding another run (a figure's rerun by another build:
+    its SAME_RUN_KEYS differ): the record stays, and a warning names the directory."""
     from . import execute
     run_dir = os.path.join(out, run.path)
     summary = os.path.join(run_dir, RUN_FILES["summary"])
@@ -321,6 +328,16 @@ def load_record(run, out):
             kept = json.load(f)
     finished_here = execute.finished_here(run, out)
     if finished_here and (kept is None or "max_lowpass_fx_N" not in kept.get("window", {})):
+        if run.record_file and os.path.isfile(run.record_file):
+            with open(run.record_file) as f:
+                existing = json.load(f)
+            here = results.load_summary(summary)
+            was = existing["summary"]
+            if any(was.get(k) != here.get(k) for k in SAME_RUN_KEYS):
+                moved = ", ".join(f"{k} {was.get(k)} -> {here.get(k)}" for k in SAME_RUN_KEYS)
+                print(f"warning: {run_dir} holds another run than its record {run.record_file} ({moved}; "
+                      "another build?): the record is kept", file=sys.stderr)
+                return existing
         record = make_record(run_dir)
         if run.record_file:
             os.makedirs(os.path.dirname(run.record_file), exist_ok=True)
