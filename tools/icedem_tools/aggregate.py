@@ -321,16 +321,16 @@ def load_record(run, out):
     from . import execute
     run_dir = os.path.join(out, run.path)
     summary = os.path.join(run_dir, RUN_FILES["summary"])
-    kept = None  # the kept record, read once, if it is at least as new as the summary
-    if (run.record_file and os.path.isfile(run.record_file)
-            and (not os.path.isfile(summary) or os.path.getmtime(run.record_file) >= os.path.getmtime(summary))):
+    existing = None  # the kept record, read once
+    if run.record_file and os.path.isfile(run.record_file):
         with open(run.record_file) as f:
-            kept = json.load(f)
+            existing = json.load(f)
+    # it stands for the run if it is at least as new as the run's summary
+    kept = existing if existing is not None and (
+        not os.path.isfile(summary) or os.path.getmtime(run.record_file) >= os.path.getmtime(summary)) else None
     finished_here = execute.finished_here(run, out)
     if finished_here and (kept is None or "max_lowpass_fx_N" not in kept.get("window", {})):
-        if run.record_file and os.path.isfile(run.record_file):
-            with open(run.record_file) as f:
-                existing = json.load(f)
+        if existing is not None:
             here = results.load_summary(summary)
             was = existing["summary"]
             if any(was.get(k) != here.get(k) for k in SAME_RUN_KEYS):
@@ -346,9 +346,9 @@ def load_record(run, out):
                 json.dump(record, f, separators=(",", ":"))
             os.replace(tmp, run.record_file)  # never a half-written record
         return record
-    if kept is not None:
-        return kept
-    with open(run.record_file) as f:
+    if existing is not None:
+        return existing
+    with open(run.record_file) as f:  # none kept: the error names the missing file
         return json.load(f)
 
 
