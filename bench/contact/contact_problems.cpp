@@ -2,8 +2,9 @@
 //
 //   contact_problems solve FILE... [--method M ...] [--tolerance T] [--max-iterations N] [--cold]
 //       solve each problem with each method; print iterations, merit and CPU time. A method
-//       "A+B" is A for at most --first-iterations (default 1000), then B from A's answer
-//       where A ended above the tolerance (iterations printed as A's+B's)
+//       "A+B" is the run's island solve with A for at most --first-iterations (default 1000),
+//       then B from A's answer where A stopped there above the tolerance (iterations printed
+//       as A's+B's)
 //   contact_problems reference FILE...
 //       solve each problem to a merit of 1e-10 with Siconos numerics, cross-check the
 //       answer with a second method, and write it into the file as FCLIB's /solution
@@ -30,6 +31,7 @@
 #include <H5Cpp.h>
 #include <fmt/format.h>
 
+#include "dem/contact/island_solve.hpp"
 #include "dem/contact/problem_file.hpp"
 #include "dem/contact/registry.hpp"
 #include "dem/contact/siconos.hpp"
@@ -50,7 +52,10 @@ double cpu_seconds() {
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-// `name`'s answer: a method, or "A+B", A to at most `first` iterations and B from A's answer
+// `name`'s answer: a method, or "A+B", the run's island solve (dem/contact/island_solve.hpp)
+// with solver.method A capped at `first` iterations and solver.handover_method B from A's
+// answer (at most o.max_iterations), to o.tolerance whatever the island holds, without a
+// breaking solve (iterations printed as A's+B's, the hand-over counted if any)
 SolverAnswer solve_with(const std::string& name, const ContactProblem& p, const MethodOptions& o, int first,
                         std::string& iterations) {
   const auto plus = name.find('+');
@@ -59,18 +64,21 @@ SolverAnswer solve_with(const std::string& name, const ContactProblem& p, const 
     iterations = std::to_string(a.sweeps);
     return a;
   }
-  MethodOptions head = o;
-  head.max_iterations = first;
-  const SolverAnswer a = make_contact_method(name.substr(0, plus))->solve(p, head);
-  iterations = std::to_string(a.sweeps);
-  if (a.residual <= o.tolerance) return a;
-  MethodOptions tail = o;
-  tail.warm_start = true;
-  const SolverAnswer b = make_contact_method(name.substr(plus + 1))->solve(started_from(p, a), tail);
-  iterations += "+" + std::to_string(b.sweeps);
-  SolverAnswer kept = b.residual <= a.residual ? b : a;
-  kept.sweeps = a.sweeps + b.sweeps;  // both methods' iterations, whichever answer is kept
-  return kept;
+  SolverSettings s{};
+  s.method = name.substr(0, plus);
+  s.handover_method = name.substr(plus + 1);
+  s.merit = merit_name(o.merit);
+  s.merit_tolerance = s.joint_merit_tolerance = s.structure_merit_tolerance = o.tolerance;
+  s.breaking_merit_tolerance = 0.0;
+  s.method_iterations = first;
+  s.handover_iterations = o.max_iterations;
+  SolverReport report;
+  // the island solve starts from the problem's warm start: a cold solve starts from zero
+  const SolverAnswer a = IslandSolve(s).solve(o.warm_start ? p : started_from(p, SolverAnswer{
+      Eigen::VectorXd::Zero(p.contact_rows()), Eigen::VectorXd::Zero(p.joint_rows())}), report);
+  iterations = report.counts.handovers > 0 ? fmt::format("{}+{}", std::min(a.sweeps, first), a.sweeps - std::min(a.sweeps, first))
+                                : std::to_string(a.sweeps);
+  return a;
 }
 
 int solve_command(const std::vector<std::string>& files, std::vector<std::string> methods, double tolerance,

@@ -219,6 +219,7 @@ class DualProblem {
       all_compliance_(r) = from.compliance;
       bias_(r) = from.bias;
     }
+    if (has_crushing(p)) caps_ = normal_caps(p);
     set_step_scale(p);
     // the rows' velocities at x = 0
     gather(rows_free_, rows_free_);
@@ -228,6 +229,7 @@ class DualProblem {
       merit_.emplace(merit_kind, p, local_q(global_form(p)), mu_);
     else
       merit_.emplace(merit_kind, p, rows_free_.head(3 * nc_), mu_);
+    if (caps_.size()) merit_->set_cap(caps_);
   }
 
   bool folded() const { return folded_; }
@@ -289,8 +291,12 @@ class DualProblem {
     gather(rows_free_, rows);
   }
 
-  // each contact onto its cone; joint rows unchanged
+  // each contact onto its cone (cut at its normal cap where it crushes); joint rows unchanged
   void project(Eigen::VectorXd& x) const {
+    if (caps_.size()) {
+      for (int c = 0; c < nc_; ++c) x.segment<3>(3 * c) = project_on_contact(x.segment<3>(3 * c), mu_(c), caps_(c));
+      return;
+    }
     for (int c = 0; c < nc_; ++c) x.segment<3>(3 * c) = project_on_cone(x.segment<3>(3 * c), mu_(c));
   }
 
@@ -537,6 +543,7 @@ class DualProblem {
   Eigen::VectorXd compliance_, rows_free_, mu_;  // compliance_: the joint rows' C
   Eigen::VectorXd row_mass_;                     // the iterated joint rows' 1 / (J M^-1 J^T + C)
   Eigen::VectorXd step_, inverse_step_;          // D of the gradient step, and 1 / D
+  Eigen::VectorXd caps_;                         // the contacts' normal caps (crushing); empty: none
   std::optional<Merit> merit_;
   std::vector<Eigen::Matrix<double, 6, 6>> inv_mass_;  // per body
   // J^T x and M^-1 J^T x (v_free while set up), scratch of row_velocities

@@ -19,6 +19,7 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 }  // namespace
 
 SolverAnswer InteriorPoint::solve(const ContactProblem& p, const MethodOptions& options) {
+  refuse_crushing(p, "ipm");
   const GlobalForm g = global_form(p);
   const FoldedMassMatrix folded = folded_mass_matrix(g);  // throws if a joint row is rigid
   const int n = p.dofs(), nc = static_cast<int>(p.contacts.size()), m = 3 * nc;

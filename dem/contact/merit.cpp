@@ -49,7 +49,7 @@ Merit::Merit(MeritKind kind, const Eigen::Ref<const Eigen::VectorXd>& q, Eigen::
 
 double Merit::with_joints(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
                           double joint_norm) const {
-  const double numerator = std::sqrt(natural_map_squared(r, u, mu_, masses_) + joint_norm * joint_norm);
+  const double numerator = std::sqrt(natural_map_squared(r, u, mu_, masses_, cap_) + joint_norm * joint_norm);
   const double scale = kind_ == MeritKind::kImpulse ? std::max(r.norm(), floor_)
                                                     : std::max({q_norm_, r.norm(), u.norm()});
   // as Siconos: divide only by a scale above round-off

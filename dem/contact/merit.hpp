@@ -28,6 +28,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -60,6 +61,10 @@ class Merit {
 
   MeritKind kind() const { return kind_; }
 
+  /// Bound each contact's normal impulse by `cap` (normal_caps) in the natural map: the set of
+  /// a crushing contact (dem/contact/crushing.hpp).
+  void set_cap(Eigen::VectorXd cap) { cap_ = std::move(cap); }
+
   /// The merit of contact impulses r with contact velocities u (3 per contact).
   double operator()(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u) const {
     return with_joints(r, u, 0.0);
@@ -76,6 +81,7 @@ class Merit {
   double q_norm_ = 0;    // siconos: |q|
   double floor_ = 0;     // impulse: max(|rho q_N^-|, g h |rho|), N s
   Eigen::VectorXd masses_;  // impulse: each contact's rho; empty for siconos (rho = 1)
+  Eigen::VectorXd cap_;     // each contact's bound on its normal impulse; empty: none
   const Eigen::VectorXd& mu_;
 };
 

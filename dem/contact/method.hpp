@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "dem/contact/merit.hpp"
@@ -28,5 +29,13 @@ class ContactMethod {
   /// the tolerance.
   virtual SolverAnswer solve(const ContactProblem& problem, const MethodOptions& options) = 0;
 };
+
+/// Throws std::invalid_argument if `problem` has crushing contacts (dem/contact/crushing.hpp) and
+/// `method`, which does not take them, was asked to solve it.
+inline void refuse_crushing(const ContactProblem& problem, const std::string& method) {
+  if (has_crushing(problem))
+    throw std::invalid_argument("the contact method \"" + method +
+                                "\" does not take crushing contacts (contact.model = \"crushing\"): \"apgd\" does");
+}
 
 }  // namespace icedem

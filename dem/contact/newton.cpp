@@ -192,6 +192,7 @@ double exact_line_search(Slope&& slope, double slope0) {
 }  // namespace
 
 SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& options) {
+  refuse_crushing(p, "newton");
   InnerProblem inner(p, settings_.rho_fraction);
   const GlobalForm& g = inner.global();
   const int n = p.dofs(), m = p.contact_rows(), nc = inner.contacts();

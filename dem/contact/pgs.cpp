@@ -35,6 +35,7 @@ struct Row {
 }  // namespace
 
 SolverAnswer ProjectedGaussSeidel::solve(const ContactProblem& p, const MethodOptions& options) {
+  refuse_crushing(p, "pgs_square, pgs_cone");
   const int nb = static_cast<int>(p.bodies.size()), nc = static_cast<int>(p.contacts.size()), nj = p.joint_rows();
   std::vector<Eigen::Matrix<double, 6, 6>> inv_mass(nb);
   for (int i = 0; i < nb; ++i) inv_mass[i] = inverse_mass(p.bodies[i]);

@@ -221,7 +221,7 @@ Eigen::VectorXd velocities(const GlobalForm& g, const Eigen::VectorXd& r, const 
 }
 
 double natural_map_squared(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
-                           const Eigen::VectorXd& mu, const Eigen::VectorXd& rho) {
+                           const Eigen::VectorXd& mu, const Eigen::VectorXd& rho, const Eigen::VectorXd& cap) {
   double sum = 0.0;
   for (int c = 0; c < mu.size(); ++c) {
     // a contact without impulse and not closing adds nothing: -(u_N + mu |u_T|, u_T) lies in
@@ -231,17 +231,29 @@ double natural_map_squared(const Eigen::Ref<const Eigen::VectorXd>& r, const Eig
     Eigen::Vector3d shifted = uc;
     shifted(0) += mu(c) * tangential_norm(uc(1), uc(2));
     if (rho.size()) shifted *= rho(c);
-    sum += (rc - project_on_cone(rc - shifted, mu(c))).squaredNorm();
+    sum += (rc - (cap.size() ? project_on_contact(rc - shifted, mu(c), cap(c)) : project_on_cone(rc - shifted, mu(c))))
+               .squaredNorm();
   }
   return sum;
 }
 
 double natural_map_residual(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
-                            const Eigen::VectorXd& mu, double q_norm) {
-  const double sum = natural_map_squared(r, u, mu, Eigen::VectorXd());
+                            const Eigen::VectorXd& mu, double q_norm, const Eigen::VectorXd& cap) {
+  const double sum = natural_map_squared(r, u, mu, Eigen::VectorXd(), cap);
   const double scale = std::max({q_norm, r.norm(), u.norm()});
   // Siconos divides only by a scale above round-off
   return scale > std::numeric_limits<double>::epsilon() ? std::sqrt(sum) / scale : std::sqrt(sum);
+}
+
+bool has_crushing(const ContactProblem& p) {
+  return std::any_of(p.contacts.begin(), p.contacts.end(),
+                     [](const ProblemContact& c) { return !std::isinf(c.normal_cap); });
+}
+
+Eigen::VectorXd normal_caps(const ContactProblem& p) {
+  Eigen::VectorXd caps(p.contacts.size());
+  for (std::size_t c = 0; c < p.contacts.size(); ++c) caps(static_cast<Eigen::Index>(c)) = p.contacts[c].normal_cap;
+  return caps;
 }
 
 double natural_map_residual(const LocalForm& local, const Eigen::VectorXd& r) {

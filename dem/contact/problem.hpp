@@ -17,6 +17,8 @@
 // what the step's geometry asks of the velocities (a gap closing this step, a
 // moving structure). The joint rows are soft: C > 0 is a spring and damper
 // (dem/world/contact_capture.cpp says how Bullet's ERP and CFM map onto b and C).
+// A crushing contact (dem/contact/crushing.hpp) carries at most the normal impulse c
+// its overlap can bear: its set is K cut at r_N <= c (rigid below c).
 //
 // Eliminating v and l gives the local (dual) form, the Delassus problem
 //   u = W r + q,  W = J_c Mt^-1 J_c^T,  q = J_c Mt^-1 ft + w,
@@ -26,6 +28,7 @@
 
 #include <cmath>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -56,6 +59,9 @@ struct ProblemContact {
   double mu = 0;                                    // Coulomb friction coefficient
   Eigen::Vector3d guess = Eigen::Vector3d::Zero();  // N s, warm start (normal, t1, t2)
   bool on_structure = false;                        // one side is the structure
+  // N s, the largest normal impulse: a crushing contact's h F(delta) (dem/contact/crushing.hpp);
+  // infinite for a rigid contact
+  double normal_cap = std::numeric_limits<double>::infinity();
 };
 
 struct ProblemJointRow {
@@ -147,6 +153,12 @@ double local_q_norm(const GlobalForm& g);
 /// q itself (3 per contact), as local_q_norm computes it.
 Eigen::VectorXd local_q(const GlobalForm& g);
 
+/// Whether a contact of the problem crushes (has a finite normal_cap).
+bool has_crushing(const ContactProblem& p);
+
+/// Each contact's normal_cap (infinity for a rigid contact).
+Eigen::VectorXd normal_caps(const ContactProblem& p);
+
 /// Whether a contact of the problem is on the structure (its impulses make the load).
 bool touches_structure(const ContactProblem& p);
 
@@ -161,14 +173,16 @@ Eigen::VectorXd velocities(const GlobalForm& g, const Eigen::VectorXd& r, const 
 /// in De Saxce's form, |r - P_K(r - u - (mu |u_T|, 0, 0))| over all contacts,
 /// relative to max(|q|, |r|, |u|) as Siconos numerics 4.4 computes it
 /// (fc3d_compute_error). Dimensionless; 0 at a solution.
+/// `cap` (empty: none) bounds each contact's normal impulse (normal_caps).
 double natural_map_residual(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
-                            const Eigen::VectorXd& mu, double q_norm);
+                            const Eigen::VectorXd& mu, double q_norm, const Eigen::VectorXd& cap = Eigen::VectorXd());
 /// The same on the local form, with u = W r + q.
 double natural_map_residual(const LocalForm& local, const Eigen::VectorXd& r);
 /// The natural map's squared norm before any normalisation, |r - P_K(r - rho (u + (mu |u_T|, 0, 0)))|^2
 /// summed over the contacts, rho per contact (empty: 1, Siconos' map).
 double natural_map_squared(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u,
-                           const Eigen::VectorXd& mu, const Eigen::VectorXd& rho);
+                           const Eigen::VectorXd& mu, const Eigen::VectorXd& rho,
+                           const Eigen::VectorXd& cap = Eigen::VectorXd());
 
 /// |(t1, t2)|. Not std::hypot: its guard against overflow (at 1e154) costs about ten
 /// times the square root, and it was 12 % of a run's CPU in the contact methods;
@@ -185,6 +199,19 @@ inline Eigen::Vector3d project_on_cone(const Eigen::Vector3d& x, double mu) {
   const double tangent = std::sqrt(tangent2);
   const double normal = (mu * tangent + x(0)) / (mu * mu + 1.0);
   return {normal, mu * normal * x(1) / tangent, mu * normal * x(2) / tangent};
+}
+
+/// Projection of x = (normal, t1, t2) onto the cone cut at x_N = cap (the set of a crushing
+/// contact): the cone's projection where its normal is at most
+/// the cap, else the nearest point of the cut's disc, (cap, x_T clipped to mu cap): the cone's
+/// nearest point being above the cut, the truncated cone's is on the cut (the distance to the
+/// cone's surface grows along its generators away from that point).
+inline Eigen::Vector3d project_on_contact(const Eigen::Vector3d& x, double mu, double cap) {
+  const Eigen::Vector3d p = project_on_cone(x, mu);
+  if (p(0) <= cap) return p;
+  const double tangent = tangential_norm(x(1), x(2)), radius = mu * cap;
+  const double s = tangent > radius ? radius / tangent : 1.0;
+  return {cap, s * x(1), s * x(2)};
 }
 
 }  // namespace icedem

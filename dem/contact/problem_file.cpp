@@ -231,6 +231,11 @@ void write_problem_file(const std::string& path, const ContactProblem& p, const 
     write_vector(icedem, "joint_bodies", joint_bodies, i32, {static_cast<hsize_t>(k), 2}, "-",
                  "the bodies of each joint row (a, b)");
     write_vector(icedem, "joint_ids", joint_ids, i32, {static_cast<hsize_t>(k)}, "-", "each joint row's joint in the run");
+    if (has_crushing(p)) {  // FCLIB has no crushing contact: its caps beside (dem/contact/crushing.hpp)
+      const Eigen::VectorXd caps = normal_caps(p);
+      write_vector(icedem, "contact_normal_cap", to_std(caps), H5::PredType::NATIVE_DOUBLE, {nc}, "N s",
+                   "each contact's largest normal impulse: a crushing contact's h F(delta); inf for a rigid one");
+    }
     if (answer) {
       H5::Group a = icedem.createGroup("run_answer");
       write_attr(a, "sweeps", answer->sweeps);
@@ -325,6 +330,12 @@ ProblemFile read_problem_file(const std::string& path) {
       if (extra < M.rows() && Jj_dense(r, extra) == 1.0) row.compliance = 1.0 / M.coeff(extra, extra), ++extra;
       row.joint = joint_ids[r];
       p.joints.push_back(row);
+    }
+
+    if (icedem.nameExists("contact_normal_cap")) {
+      const auto caps = read_vector<double>(icedem, "contact_normal_cap", H5::PredType::NATIVE_DOUBLE);
+      if (caps.size() != p.contacts.size()) throw bad("contact_normal_cap does not match the contacts");
+      for (std::size_t c = 0; c < p.contacts.size(); ++c) p.contacts[c].normal_cap = caps[c];
     }
 
     if (guess && guesses > 0) {

@@ -1,5 +1,5 @@
 // Whether a method's answer, started from another's, is a better answer to take in its place
-// (the hand-over at the cap, the breaking solves' stages: dem/world/contact_solver.cpp).
+// (the hand-over at the cap, the breaking solves' stages: dem/contact/island_solve.cpp).
 //
 // A lower merit alone does not say so. The impulse merit (dem/contact/merit.hpp) is relative
 // to the answer's own impulses, and where the problem's solutions are not bounded an answer

@@ -56,6 +56,7 @@ SolverAnswer SiconosMethod::solve_local(const LocalForm& local, const Eigen::Vec
 }
 
 SolverAnswer SiconosMethod::solve(const ContactProblem& p, const MethodOptions& options) {
+  refuse_crushing(p, "siconos");
   SolverAnswer answer = solve_local(local_form(p), contact_guess(p), options);
   answer.l = joint_impulses(p, answer.r);
   return answer;

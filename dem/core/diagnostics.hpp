@@ -32,12 +32,20 @@ struct StepDiagnostics {
   double held_edge_overloads = 0;   // a level sheet's joints at its held edge over their capacity (never broken)
 };
 
+/// How a diagnostic goes into the run's summary: its largest value over the run (the health
+/// section), or, for a count of what the island solve did (dem/contact/island_solve.hpp), its
+/// sum (the summary's solver section, under the same name). A new count is a field above and a
+/// column below marked kCount, and the island solve adding to it: the step copies it, the
+/// recorder writes it and the summary sums it by this table.
+enum class Reduction { kLargest, kCount };
+
 /// One diagnostic: its dataset name under /diagnostics, unit and meaning.
 struct DiagnosticColumn {
   const char* name;
   const char* unit;
   const char* description;
   double StepDiagnostics::*field;
+  Reduction reduction = Reduction::kLargest;
 };
 
 inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
@@ -73,25 +81,25 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
     {"breaking_solves", "1",
      "islands solved again in the step, from their answer, to solver.breaking_merit_tolerance because the answer "
      "put a joint's failure ratio within 1 - solver.breaking_ratio of 1 (methods other than \"pgs\")",
-     &StepDiagnostics::breaking_solves},
+     &StepDiagnostics::breaking_solves, Reduction::kCount},
     {"breaking_decided", "1",
      "of the step's breaking_solves, the islands that stopped at solver.breaking_check_tolerance with every "
      "joint's failure ratio farther than solver.breaking_check_band from 1: each break decided there",
-     &StepDiagnostics::breaking_decided},
+     &StepDiagnostics::breaking_decided, Reduction::kCount},
     {"breaking_capped", "1",
      "of the step's breaking_solves, the islands that stopped at solver.breaking_iterations above "
      "solver.breaking_merit_tolerance: their joints' loads are no better known than at the joints' merit",
-     &StepDiagnostics::breaking_capped},
+     &StepDiagnostics::breaking_capped, Reduction::kCount},
     {"handovers", "1",
      "islands the method left at solver.method_iterations above their merit in the step, which "
      "solver.handover_method went on with from that answer (solver_capped says whether it reached the merit)",
-     &StepDiagnostics::handovers},
+     &StepDiagnostics::handovers, Reduction::kCount},
     {"runaways", "1",
      "answers of a later stage in the step (the hand-over at the cap, a breaking solve's further stages) not "
      "taken because they lowered the merit by growing the island's impulses over ten times: where the "
      "solutions are unbounded (an element wedged between fixed bodies) a method can run off along them; "
      "the answer before it is kept (dem/contact/refinement.hpp)",
-     &StepDiagnostics::runaways},
+     &StepDiagnostics::runaways, Reduction::kCount},
     {"boundary_load", "N",
      "load the fixed bodies (walls, mother ice, frozen floes) take off the structure: their contact impulses on "
      "the ice of the islands touching the structure, along its travel, over the step (dem/world/boundary_load.hpp)",

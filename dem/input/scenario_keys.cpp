@@ -249,6 +249,17 @@ std::vector<KeySpec> make_keys() {
                       "arrangement (seed + layer), layer k starting k ice thicknesses (plus "
                       "layout.min_gap) above the floating one; concentration is per layer"));
 
+  // contact law (docs/model/crushing.md)
+  k.push_back(choice("contact.model", "rigid", {"rigid", "crushing"},
+                     "how the ice's contacts bear load: \"rigid\", a contact that does not yield (the "
+                     "paper's); \"crushing\", the ice crushes at the contact at ice.compressive_strength over "
+                     "a nominal contact area that grows with the overlap (Daley's pressure-area), so that an "
+                     "impact lasts a finite time (dem/contact/crushing.hpp; needs solver.method = \"apgd\")"));
+  k.push_back(real("contact.pressure_area_exponent", "-", 0.0, -0.9, 0.0,
+                   "contact.model = \"crushing\": ex in the crushing pressure sigma_c (A / h^2)^ex over the "
+                   "nominal contact area A (Daley's pressure-area relation; 0: a constant pressure, the "
+                   "compressive strength; field data give -0.1 (ship rules) to -0.7 (small areas))"));
+
   // friction (Coulomb; combined by material pair, not Bullet's product rule)
   k.push_back(real("friction.ice_ice", "-", 0.5, 0.0, 5.0,
                    "ice-ice friction f_ii, also floe against mother ice (paper: 0.3/0.5/0.7)"));

@@ -15,6 +15,8 @@
 
 #include <Eigen/Core>
 
+#include "dem/contact/solver_settings.hpp"
+
 namespace icedem {
 
 /// One station of the structure's hull profile.
@@ -27,43 +29,6 @@ struct TimeSettings {
   double dt;        // s, output and control step
   double duration;  // s, simulated time
   int substeps;     // Bullet steps per dt
-};
-
-enum class Broadphase { kDbvt, kSweepAndPrune };
-
-/// Order of the rows within a sweep.
-enum class SweepOrder {
-  kBullet,         // the order Bullet builds them (manifold by manifold): its arrays' history
-  kCanonical,      // by the bodies (contacts) and joints (joint rows) they act on: the same in a
-                   // world rebuilt from a checkpoint (dem/output/world_state.hpp)
-  kFromStructure,  // canonical, then the contacts by distance from the structure axis, outward
-                   // on even sweeps, inward on odd
-};
-
-struct SolverSettings {
-  int iterations;             // cap of PGS sweeps over the contacts per island and Bullet step
-  double tolerance;           // -, residual that ends an island's sweeps early; 0 = never
-  double warm_start;          // -, fraction of the last step's impulses a step starts from
-  bool friction_warm_start;   // friction impulses warm-started too
-  SweepOrder order;           // of the rows in a sweep
-  double sor;                 // -, over-relaxation of the contact rows
-  Broadphase broadphase;
-  bool split_impulse;         // position correction kept out of the contact impulses
-  double contact_erp;         // -, fraction of penetration corrected per step
-  std::string method;         // contact method of an island: "pgs" (the sweeps above), "pgs_cone", "newton", "apgd"
-  double merit_tolerance;     // -, merit that ends a method's solve
-  std::string merit;          // which: "impulse" (forces relative to forces) or "siconos" (dem/contact/merit.hpp)
-  double joint_merit_tolerance;  // -, the same for an island with joint rows, if smaller
-  double structure_merit_tolerance;  // -, the same for an island touching the structure, if smaller
-  double breaking_merit_tolerance;  // -, an island with a joint near its capacity is solved again to this
-  double breaking_ratio;            // -, a joint's failure ratio within 1 - this of 1 has its island solved again
-  double breaking_check_tolerance;  // -, merit of a first check of such an island's breaks
-  double breaking_check_band;       // -, how far from 1 every ratio must then be to stop there
-  int breaking_iterations;          // cap of the method's iterations then
-  int method_iterations;      // cap of the method's iterations per island and Bullet step
-  std::string handover_method;  // what goes on with an island capped there ("none": nothing)
-  int handover_iterations;      // its cap
-  int position_iterations;    // cap of the split-impulse position sweeps per island and Bullet step
 };
 
 struct StructureSettings {
@@ -117,6 +82,13 @@ struct LayoutSettings {
   double min_gap;    // m
   double size_spread;  // -, generated floes' sides uniform in ice.floe_size (1 +- size_spread)
   int layers;        // generated floe layers stacked at t = 0 (1: one floating layer)
+};
+
+// How the ice's contacts bear load (dem/contact/crushing.hpp)
+enum class ContactModel { kRigid, kCrushing };
+struct ContactSettings {
+  ContactModel model;
+  double pressure_area_exponent;  // -, ex in p = sigma_c (A / h^2)^ex
 };
 
 // Coulomb coefficients: kinetic, and static for contacts that stick (dem/world/static_friction.hpp)
@@ -241,6 +213,7 @@ struct Scene {
   ChannelSettings channel;
   IceSettings ice;
   LayoutSettings layout;
+  ContactSettings contact;
   FrictionSettings friction;
   WaterSettings water;
   FlowSettings flow;

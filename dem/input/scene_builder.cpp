@@ -224,10 +224,28 @@ Scene make_scene(const Scenario& sc) {
   s.ice.shear_strength = real(sc, "ice.shear_strength");
   s.ice.poisson_ratio = real(sc, "ice.poisson_ratio");
   s.ice.contact_crushing = get<bool>(sc, "ice.contact_crushing");
+
+  s.contact.model = choice<ContactModel>(sc, "contact.model",
+                                        {{"rigid", ContactModel::kRigid}, {"crushing", ContactModel::kCrushing}});
+  s.contact.pressure_area_exponent = real(sc, "contact.pressure_area_exponent");
+  if (s.contact.model == ContactModel::kCrushing && s.ice.contact_crushing)
+    fail_key(sc, blamed(sc, {"ice.contact_crushing", "contact.model"}),
+             "ice.contact_crushing (a fixed cap) and contact.model = \"crushing\" (the crushing law) are two "
+             "models of the same thing: choose one");
   if (s.ice.contact_crushing && s.solver.method != kBulletSweeps)
     fail_key(sc, blamed(sc, {"solver.method", "ice.contact_crushing"}),
              "ice.contact_crushing caps the contact rows of the Gauss-Seidel sweeps; solver.method = \"" +
                  s.solver.method + "\" has no such cap: use solver.method = \"pgs\" with it");
+  if (s.contact.model == ContactModel::kCrushing) {
+    if (s.solver.method != "apgd")
+      fail_key(sc, blamed(sc, {"solver.method", "contact.model"}),
+               "contact.model = \"crushing\" is solved by the accelerated projected gradient alone; solver.method = \"" +
+                   s.solver.method + "\" does not take its contacts: use solver.method = \"apgd\"");
+    if (!s.solver.split_impulse)
+      fail_key(sc, blamed(sc, {"solver.split_impulse", "contact.model"}),
+               "contact.model = \"crushing\" needs solver.split_impulse = true: without it Bullet pushes the "
+               "overlap, which is crushed ice, apart inside the contact impulses");
+  }
 
   s.water.density = real(sc, "water.density");
   s.water.gravity = real(sc, "water.gravity");

@@ -1,5 +1,7 @@
 #include "dem/input/solver_profile.hpp"
 
+#include "dem/input/scene_builder.hpp"
+
 #include <map>
 #include <string>
 #include <utility>
@@ -49,6 +51,11 @@ void apply_solver_profile(Scenario& sc) {
     ResolvedKey& key = sc.keys.at(path);
     if (key.origin == "default") key = ResolvedKey{value, "solver.profile = \"" + name + "\""};
   }
+}
+
+SolverSettings solver_settings(const std::string& profile) {
+  const std::string text = "[solver]\nprofile = \"" + profile + "\"\n";
+  return make_scene(parse_scenario(text, "solver.profile = \"" + profile + "\"", ".")).solver;
 }
 
 }  // namespace icedem

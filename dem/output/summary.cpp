@@ -44,20 +44,21 @@ std::string solver_line(const SolverSummary& v) {
                            v.method, v.iterations_mean, v.iterations_max, v.cap, v.tolerance,
                            tighter_islands(v),
                            v.residual_max);
-  if (v.breaking_solves > 0)
+  const StepDiagnostics& n = v.totals;
+  if (n.breaking_solves > 0)
     out += fmt::format("  {} islands solved again to a merit of {:g} for a joint near its capacity (their "
                        "iterations count above, beyond the cap), {} of them decided at solver.breaking_check_tolerance "
                        "and {} stopped at solver.breaking_iterations above it (/diagnostics/breaking_solves, "
                        "breaking_decided, breaking_capped)\n",
-                       v.breaking_solves, v.breaking_tolerance, v.breaking_decided, v.breaking_capped);
-  if (v.handovers > 0)
+                       long(n.breaking_solves), v.breaking_tolerance, long(n.breaking_decided), long(n.breaking_capped));
+  if (n.handovers > 0)
     out += fmt::format("  {} islands left at the cap above their merit went on with {} from that answer (their "
                        "iterations count above; /diagnostics/handovers)\n",
-                       v.handovers, v.handover_method);
-  if (v.runaways > 0)
+                       long(n.handovers), v.handover_method);
+  if (n.runaways > 0)
     out += fmt::format("  {} answers of a later stage (hand-over, breaking solves) not taken: they lowered the merit by "
                        "growing the island's impulses over tenfold, the answer before kept (/diagnostics/runaways)\n",
-                       v.runaways);
+                       long(n.runaways));
   if (v.tolerance > 0 && v.capped_window_fraction > SolverSummary::kCappedWarning)
     out += fmt::format("  warning: {:.1f} % of the analysis window's steps reached {} = {:d} before "
                        "{} = {:g}: their loads are not converged; raise the cap "
@@ -278,23 +279,22 @@ const std::vector<SummaryField>& summary_fields() {
        "on with), runaways (answers of those later stages not taken for impulses grown over tenfold at a merit no "
        "higher)",
        [](S s) {
-         return json{{"method", s.solver.method},
-                     {"cap", s.solver.cap},
-                     {"tolerance", s.solver.tolerance},
-                     {"joint_tolerance", s.solver.joint_tolerance},
-                     {"structure_tolerance", s.solver.structure_tolerance},
-                     {"iterations_mean", s.solver.iterations_mean},
-                     {"iterations_max", s.solver.iterations_max},
-                     {"capped_steps", s.solver.capped_steps},
-                     {"capped_window_fraction", s.solver.capped_window_fraction},
-                     {"residual_max", num(s.solver.residual_max)},
-                     {"breaking_solves", s.solver.breaking_solves},
-                     {"breaking_decided", s.solver.breaking_decided},
-                     {"breaking_capped", s.solver.breaking_capped},
-                     {"breaking_tolerance", s.solver.breaking_tolerance},
-                     {"handovers", s.solver.handovers},
-                     {"handover_method", s.solver.handover_method},
-                     {"runaways", s.solver.runaways}};
+         json j{{"method", s.solver.method},
+                {"cap", s.solver.cap},
+                {"tolerance", s.solver.tolerance},
+                {"joint_tolerance", s.solver.joint_tolerance},
+                {"structure_tolerance", s.solver.structure_tolerance},
+                {"iterations_mean", s.solver.iterations_mean},
+                {"iterations_max", s.solver.iterations_max},
+                {"capped_steps", s.solver.capped_steps},
+                {"capped_window_fraction", s.solver.capped_window_fraction},
+                {"residual_max", num(s.solver.residual_max)},
+                {"breaking_tolerance", s.solver.breaking_tolerance},
+                {"handover_method", s.solver.handover_method}};
+         // the island solve's counts over the run, by the diagnostics' table
+         for (const DiagnosticColumn& c : kDiagnosticColumns)
+           if (c.reduction == Reduction::kCount) j[c.name] = static_cast<long>(s.solver.totals.*c.field);
+         return j;
        }},
       {"boundary", "", false, false,
        "the fixed boundaries (mother ice, walls, frozen floes) over the analysis window: share_of_surge (their "

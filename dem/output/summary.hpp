@@ -30,12 +30,10 @@ struct SolverSummary {
   long capped_steps = 0;          // steps in which an island reached the cap unconverged
   double capped_window_fraction = 0;  // of the analysis window's steps (the whole run without one)
   double residual_max = 0;
-  long breaking_solves = 0;       // islands solved again for a joint near its capacity (solver.breaking_ratio)
-  long breaking_decided = 0;      // of those, the ones decided at solver.breaking_check_tolerance
-  long breaking_capped = 0;       // of those, the ones that stopped at their cap above the tighter merit
-  double breaking_tolerance = 0;  // the merit they were solved to (0: off)
-  long handovers = 0;             // islands handed over at the cap to solver.handover_method
-  long runaways = 0;              // later stages' answers refused for impulses run off (refinement.hpp)
+  double breaking_tolerance = 0;  // the merit breaking solves were solved to (0: off)
+  // the island solve's counts (the diagnostics' columns of Reduction::kCount) summed over the run:
+  // breaking solves, hand-overs, runaways, ... (dem/core/diagnostics.hpp)
+  StepDiagnostics totals;
   std::string handover_method;    // solver.handover_method
   /// More than this fraction of capped steps in the window: the summary warns.
   static constexpr double kCappedWarning = 0.01;

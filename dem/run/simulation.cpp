@@ -139,11 +139,8 @@ SolverSummary solver_summary(const Scene& scene, const RunHistory& h, const RunS
     v.iterations_max = std::max(v.iterations_max, static_cast<int>(d.solver_iterations));
     v.residual_max = std::max(v.residual_max, d.solver_residual);
     v.capped_steps += d.solver_capped > 0;
-    v.breaking_solves += static_cast<long>(d.breaking_solves);
-    v.breaking_decided += static_cast<long>(d.breaking_decided);
-    v.breaking_capped += static_cast<long>(d.breaking_capped);
-    v.handovers += static_cast<long>(d.handovers);
-    v.runaways += static_cast<long>(d.runaways);
+    for (const DiagnosticColumn& c : kDiagnosticColumns)
+      if (c.reduction == Reduction::kCount) v.totals.*c.field += d.*c.field;
     const bool in_window = !s.has_statistics || (h.time[i] >= s.surge.window_start && h.time[i] <= s.surge.window_end);
     window_steps += in_window;
     window_capped += in_window && d.solver_capped > 0;

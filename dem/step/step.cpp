@@ -96,11 +96,8 @@ void record_solver_report(const SolverReport& report, StepDiagnostics& d) {
   d.solver_iterations = report.iterations;
   d.solver_residual = report.residual;
   d.solver_capped = report.capped ? 1.0 : 0.0;
-  d.breaking_solves = report.breaking_solves;
-  d.breaking_decided = report.breaking_decided;
-  d.breaking_capped = report.breaking_capped;
-  d.handovers = report.handovers;
-  d.runaways = report.runaways;
+  for (const DiagnosticColumn& c : kDiagnosticColumns)
+    if (c.reduction == Reduction::kCount) d.*c.field = report.counts.*c.field;
 }
 
 }  // namespace

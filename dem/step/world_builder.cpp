@@ -18,7 +18,10 @@ WorldSettings world_settings(const Scene& scene) {
   s.solver = scene.solver;
   s.activation = scene.activation;
   s.gravity = scene.water.gravity;
-  s.crushing_force = scene.ice.contact_crushing ? crushing_force(scene.ice) : 0.0;
+  s.contact_law.crushing_force = scene.ice.contact_crushing ? crushing_force(scene.ice) : 0.0;
+  if (scene.contact.model == ContactModel::kCrushing)
+    s.contact_law.crushing = CrushingLaw{scene.ice.compressive_strength, scene.contact.pressure_area_exponent,
+                                         scene.ice.thickness * scene.ice.thickness};
   // the sweep-and-prune broadphase needs the world's bounds: the tank with a margin
   const ChannelSettings& c = scene.channel;
   const double x0 = std::min(scene.structure.start_x, c.start_x) - 10.0;
@@ -29,7 +32,7 @@ WorldSettings world_settings(const Scene& scene) {
   s.ice_density = scene.ice.density;
   s.water = water_params(scene.water);
   s.added_mass = scene.water.added_mass;
-  s.static_friction = {scene.friction.ice_ice_static, scene.friction.ice_structure_static, scene.friction.stick_speed};
+  s.contact_law.static_friction = {scene.friction.ice_ice_static, scene.friction.ice_structure_static, scene.friction.stick_speed};
   return s;
 }
 

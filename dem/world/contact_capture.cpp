@@ -129,6 +129,7 @@ ContactProblem ContactSolver::capture_problem(const btContactSolverInfo& info) c
     const btRigidBody* body_a = m_tmpSolverBodyPool[normal.m_solverBodyIdA].m_originalBody;
     const btRigidBody* body_b = m_tmpSolverBodyPool[normal.m_solverBodyIdB].m_originalBody;
     c.on_structure = structure_ && (body_a == structure_ || body_b == structure_);
+    if (r < static_cast<int>(normal_caps_.size())) c.normal_cap = normal_caps_[r];
     p.contacts.push_back(c);
   }
 

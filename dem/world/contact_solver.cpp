@@ -3,13 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
-#include "dem/contact/refinement.hpp"
+#include "dem/world/crushing_contact.hpp"
 #include "dem/world/joint_springs.hpp"
 
 namespace icedem {
@@ -27,13 +29,11 @@ double ContactSolver::remaining_error(double change, double previous_change, int
   return change / (1.0 - rate);
 }
 
-ContactSolver::ContactSolver(const ContactSolverSettings& settings)
-    : settings_(settings),
-      // the Newton method finishes the breaking solves when nothing is handed over (as before it)
-      finishing_method_(settings.handover_method == "none" ? "newton" : settings.handover_method),
-      merit_(merit_kind(settings.merit)) {
-  if (settings_.method != kBulletSweeps) method_ = make_contact_method(settings_.method);
-  if (method_) handover_ = make_contact_method(finishing_method_);
+ContactSolver::ContactSolver(const SolverSettings& settings, const ContactLaw& law)
+    : settings_(settings), law_(law), island_(settings) {
+  if (law_.crushing && !island_.solves())
+    throw std::invalid_argument("the crushing contact law needs a contact method (solver.method = \"apgd\"): the "
+                                "sweeps over Bullet's rows do not take it");
 }
 
 // A manifold's place in the canonical order: the pair of bodies it joins (their user index 2:
@@ -89,6 +89,7 @@ void ContactSolver::prepareSolve(int numBodies, int numManifolds) {
 void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds,
                                     const btContactSolverInfo& info) {
   structure_rows_.clear();
+  normal_caps_.clear();
   two_directions_ = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
   sorted_manifolds_.assign(manifolds, manifolds + numManifolds);
   if (settings_.order != SweepOrder::kBullet)
@@ -100,12 +101,22 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
     convertContact(&manifold, info);  // Bullet's own set-up of the rows, normal impulses warm-started
     const int end = m_tmpSolverContactConstraintPool.size();
     const bool on_structure = structure_ && (manifold.getBody0() == structure_ || manifold.getBody1() == structure_);
-    if (settings_.static_friction.any()) stick_or_slip(manifold, first, on_structure);
+    if (law_.static_friction.any()) stick_or_slip(manifold, first, on_structure);
     if (settings_.friction_warm_start) warm_start_friction(first, info);
     // crushing: the pair's normal force is at most crushing_force, shared by its points
-    if (settings_.crushing_force > 0 && end > first)
+    if (law_.crushing_force > 0 && end > first)
       for (int r = first; r < end; ++r)
-        m_tmpSolverContactConstraintPool[r].m_upperLimit = settings_.crushing_force * info.m_timeStep / (end - first);
+        m_tmpSolverContactConstraintPool[r].m_upperLimit = law_.crushing_force * info.m_timeStep / (end - first);
+    // crushing: each row carries at most its share of what the overlap bears, and the overlap,
+    // crushed ice, stays (no split-impulse push apart)
+    if (law_.crushing) {
+      normal_caps_.resize(end, std::numeric_limits<double>::infinity());
+      if (const auto cap = crushing_cap(manifold, *law_.crushing, info.m_timeStep))
+        for (int r = first; r < end; ++r) {
+          normal_caps_[r] = *cap;
+          m_tmpSolverContactConstraintPool[r].m_rhsPenetration = 0;
+        }
+    }
     if (on_structure) {
       const double sign = manifold.getBody0() == structure_ ? 1.0 : -1.0;
       for (int r = first; r < end; ++r) structure_rows_.push_back({r, sign});
@@ -162,7 +173,7 @@ void ContactSolver::stick_or_slip(const btPersistentManifold& manifold, int firs
     btSolverConstraint& contact = m_tmpSolverContactConstraintPool[r];
     const auto& point = *static_cast<const btManifoldPoint*>(contact.m_originalContactPoint);
     const double slip = slip_speed(*manifold.getBody0(), *manifold.getBody1(), point);
-    const btScalar mu = contact_friction(settings_.static_friction, contact.m_friction, on_structure, slip);
+    const btScalar mu = contact_friction(law_.static_friction, contact.m_friction, on_structure, slip);
     contact.m_friction = mu;
     for (int k = 0; k < per_contact; ++k) m_tmpSolverContactFrictionConstraintPool[contact.m_frictionIndex + k].m_friction = mu;
   }
@@ -291,7 +302,7 @@ double ContactSolver::sweep(int iteration, bool contacts, bool reverse) {
   for (int k = 0; k < n; ++k) {
     btSolverConstraint& c = m_tmpSolverContactConstraintPool[order_[reverse ? n - 1 - k : k]];
     const btScalar before = c.m_appliedImpulse;
-    if (settings_.crushing_force > 0)  // Bullet's contact row clamps only below
+    if (law_.crushing_force > 0)  // Bullet's contact row clamps only below
       resolveSingleConstraintRowGeneric(m_tmpSolverBodyPool[c.m_solverBodyIdA], m_tmpSolverBodyPool[c.m_solverBodyIdB], c);
     else
       resolveSingleConstraintRowLowerLimit(m_tmpSolverBodyPool[c.m_solverBodyIdA], m_tmpSolverBodyPool[c.m_solverBodyIdB], c);
@@ -351,7 +362,7 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
                                                 numConstraints, info, debug);
 
   // the method solves an island's contacts and joints together; a lattice alone too
-  if (method_ && (!order_.empty() || m_tmpSolverNonContactConstraintPool.size() > 0)) {
+  if (island_.solves() && (!order_.empty() || m_tmpSolverNonContactConstraintPool.size() > 0)) {
     solve_with_method(info);
     return 0.f;
   }
@@ -411,91 +422,8 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
 void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   ContactProblem problem = capture_problem(info);
   problem.island = report_.islands;
-  MethodOptions options;
-  // a joint's load is its elements' relative velocity over its compliance: the contacts'
-  // error reaches the joints' failure ratios magnified (docs/model/convergence.md); the
-  // structure's load is read off its island's impulses, which a loose solve leaves low
-  // along the force chains (docs/model/convergence.md, the solve's own error)
-  options.tolerance = settings_.merit_tolerance;
-  if (!problem.joints.empty()) options.tolerance = std::min(options.tolerance, settings_.joint_merit_tolerance);
-  if (touches_structure(problem)) options.tolerance = std::min(options.tolerance, settings_.structure_merit_tolerance);
-  options.max_iterations = settings_.method_iterations;
-  options.merit = merit_;
-  options.warm_start = true;  // from the rows' warm start (solver.warm_start of the last step's)
-  SolverAnswer answer = method_->solve(problem, options);
-  // the gradient method's count of steps grows with the island's stiffness (a lattice's
-  // joints, a level sheet's above all), the interior-point method's hardly: an island left at
-  // the cap goes on from that answer (docs/model/contact_problems.md, "The interior-point method")
-  // (both second-order methods fold the joints into the mass matrix: not with a rigid joint row)
-  const auto foldable = [&problem] {
-    return std::all_of(problem.joints.begin(), problem.joints.end(),
-                       [](const ProblemJointRow& j) { return j.compliance > 0; });
-  };
-  if (settings_.handover_method != "none" && settings_.handover_method != settings_.method &&
-      answer.residual > options.tolerance && answer.sweeps >= options.max_iterations && foldable()) {
-    MethodOptions more = options;
-    more.max_iterations = settings_.handover_iterations;
-    SolverAnswer next = handover_->solve(started_from(problem, answer), more);
-    next.sweeps += answer.sweeps;
-    const double floor = weight_impulse(problem);
-    if (refines(answer, next, floor))
-      answer = std::move(next);
-    else
-      report_.runaways += runs_off(answer, next, floor);
-    answer.capped = answer.residual > options.tolerance;
-    ++report_.handovers;
-  }
-  // A joint breaks when its load reaches its capacity, and at the joints' merit its load is
-  // uncertain by a few per cent of the capacity (docs/model/contact_problems.md, "What the
-  // merit leaves in the joints' loads"): an island whose answer puts a joint's failure ratio
-  // that near 1 is solved on, from that answer, until the break is decided on a tight answer
-  if (joint_ratio_ && !problem.joints.empty() && settings_.breaking_merit_tolerance < options.tolerance &&
-      std::abs(joint_ratio_(problem, answer.l) - 1) <= 1 - settings_.breaking_ratio) {
-    const double tolerance = options.tolerance;
-    // each stage starts from the best answer so far (a copy: the observer sees the run's own warm start)
-    options.max_iterations = settings_.breaking_iterations;
-    const double floor = weight_impulse(problem);
-    const auto keep_better = [this, &answer, floor](SolverAnswer next) {
-      if (refines(answer, next, floor)) {
-        next.sweeps += answer.sweeps;
-        answer = std::move(next);
-      } else {
-        report_.runaways += runs_off(answer, next, floor);
-        answer.sweeps += next.sweeps;
-      }
-    };
-    // first to the check's merit: where every joint's ratio is then clear of 1 by the band, each
-    // break is decided (at 1e-5 the loads were within 2 % of the bending capacity on the
-    // lattices' breaking steps) and the solve stops there; a level sheet's crack front holds
-    // joints near capacity most steps, and the tight merit cost it 11,000 gradient steps each
-    const double check = settings_.breaking_check_tolerance;
-    bool decided = false;
-    if (check > settings_.breaking_merit_tolerance && check < tolerance) {
-      options.tolerance = check;
-      keep_better(method_->solve(started_from(problem, answer), options));
-      decided = answer.residual <= check &&
-                std::abs(joint_ratio_(problem, answer.l) - 1) > settings_.breaking_check_band;
-    }
-    if (!decided) {
-      options.tolerance = settings_.breaking_merit_tolerance;
-      keep_better(method_->solve(started_from(problem, answer), options));
-      // the gradient method's tail can be long where a second-order method's is not (on the
-      // lattices' breaking steps one island in 17 stayed at 2e-5 after 20,000 gradient steps,
-      // where Newton reached 3e-6 in 327 of its steps): what the first method leaves above the
-      // tolerance, the hand-over method (else Newton) finishes from its best answer
-      if (answer.residual > settings_.breaking_merit_tolerance && settings_.method != finishing_method_ &&
-          foldable()) {
-        options.max_iterations = kBreakingFinishIterations;
-        keep_better(handover_->solve(started_from(problem, answer), options));
-      }
-    }
-    answer.capped = answer.residual > tolerance;  // the step's own tolerance: a tighter one is extra
-    ++report_.breaking_solves;
-    report_.breaking_decided += decided;
-    report_.breaking_capped += !decided && answer.residual > settings_.breaking_merit_tolerance;
-  }
+  const SolverAnswer answer = island_.solve(problem, report_);
   apply_impulses(answer);
-  report_.add_island(answer.sweeps, answer.residual, answer.capped);
   if (observer_ && observer_->wants_problems()) observer_->solved(problem, answer);
 }
 

@@ -22,15 +22,20 @@
 //  - optionally limits the normal force of each contact to the ice's crushing
 //    force (ice.contact_crushing): a pair of floes, or a floe and the structure,
 //    cannot press on each other harder than the ice can bear;
+//  - optionally gives the ice's contacts the crushing law (contact.model =
+//    "crushing", dem/contact/crushing.hpp): each contact row of ice carries at
+//    most the force its overlap bears (dem/world/crushing_contact.hpp), and its
+//    overlap, the crushed ice, is not pushed out by the position pass;
 //  - reports per step the sweeps used, the final residual and whether the cap
 //    stopped an island before it converged.
 // With warm_start 0.85 (Bullet's), no friction warm start, Bullet's row order
 // and tolerance 0 it computes exactly what btSequentialImpulseConstraintSolver
 // computes (tests/physics/test_contact_solver.cpp checks it bit for bit).
-// With another method (settings.method, dem/contact/registry.hpp) an island with
+// With another method (solver.method, dem/contact/registry.hpp) an island with
 // contacts is not swept: its problem is read off the rows Bullet set up
-// (capture_problem), solved whole, joints included, and the impulses written back
-// to the rows (apply_impulses); Bullet then integrates as after the sweeps. The
+// (capture_problem), solved whole, joints included, by the island solve
+// (dem/contact/island_solve.hpp), and the impulses written back to the rows
+// (apply_impulses); Bullet then integrates as after the sweeps. The
 // split-impulse position pass stays Bullet's sweeps either way.
 //
 // Residual after sweep k (dimensionless), per solve group (island): the relative
@@ -53,15 +58,17 @@
 #include <functional>
 #include <tuple>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
 
+#include "dem/contact/crushing.hpp"
+#include "dem/contact/island_solve.hpp"
 #include "dem/contact/problem.hpp"
-#include "dem/contact/registry.hpp"
-#include "dem/input/scene.hpp"
+#include "dem/contact/solver_settings.hpp"
 #include "dem/world/static_friction.hpp"
 
 namespace icedem {
@@ -80,63 +87,12 @@ class ProblemObserver {
 };
 
 
-struct ContactSolverSettings {
-  int iterations = 10;             // cap of contact sweeps per island and Bullet step
-  double tolerance = 0.0;          // residual that ends an island's sweeps; 0: always the cap
-  bool friction_warm_start = false;  // carry friction impulses over from the previous step
-  SweepOrder order = SweepOrder::kBullet;
-  double crushing_force = 0.0;     // N, largest normal force of one contact (pair); 0: none
-  StaticFriction static_friction;  // static coefficients of sticking contacts (none by default)
-  // the method that solves an island with contacts: "pgs" (the sweeps above) or another
-  // of dem/contact/registry.hpp, which solves the island's whole problem (joints included)
-  // to merit_tolerance in at most method_iterations of its iterations
-  std::string method = "pgs";
-  double merit_tolerance = 1e-6;
-  std::string merit = "siconos";  // what merit_tolerance bounds (dem/contact/merit.hpp)
-  double joint_merit_tolerance = 1e-6;  // an island with joint rows: the smaller of the two
-  double structure_merit_tolerance = 1e-6;  // an island touching the structure: likewise
-  // an island whose answer puts a joint's failure ratio within 1 - breaking_ratio of 1
-  // (JointRatios) is solved again, from that answer, to breaking_merit_tolerance in at most
-  // breaking_iterations, off when not below the island's tolerance; first to
-  // breaking_check_tolerance, where it stops if every ratio is then farther than
-  // breaking_check_band from 1 (off when not above breaking_merit_tolerance)
-  double breaking_merit_tolerance = 0.0;
-  double breaking_ratio = 0.9;
-  double breaking_check_tolerance = 0.0;
-  double breaking_check_band = 0.04;
-  int breaking_iterations = 3000;
-  int method_iterations = 300;
-  // what goes on, from the method's answer, with an island the method left at
-  // method_iterations above its merit (at most handover_iterations of its iterations), and
-  // finishes a breaking solve left above breaking_merit_tolerance; "none": the island stays
-  // capped, and the Newton method finishes the breaking solves
-  std::string handover_method = "none";
-  int handover_iterations = 100;
-  // cap of the split-impulse position sweeps (pseudo-impulses that push penetrating contacts
-  // apart, apart from the contact impulses); they stop earlier at `tolerance`
-  int position_iterations = 10;
-};
-
-/// What the solver did during one time step (all islands, all substeps).
-struct SolverReport {
-  int iterations = 0;    // most contact sweeps any island used
-  double residual = 0;   // largest residual an island ended with (dimensionless, see above)
-  bool capped = false;   // an island reached the cap with its residual above the tolerance
-  int islands = 0;       // solve groups with contacts
-  int breaking_solves = 0;  // islands solved again for a joint near its capacity
-  int breaking_decided = 0;  // of those, the ones that stopped at breaking_check_tolerance, every break decided
-  int breaking_capped = 0;  // of those, the ones that stopped at the cap above the tighter merit
-  int handovers = 0;        // islands handed over at the method's cap (ContactSolverSettings::handover_method)
-  int runaways = 0;         // later stages' answers refused for impulses run off (dem/contact/refinement.hpp)
-
-  void clear() { *this = SolverReport{}; }
-  /// One island solved: its iterations, the residual it ended with, whether the cap stopped it.
-  void add_island(int island_iterations, double island_residual, bool island_capped) {
-    iterations = std::max(iterations, island_iterations);
-    residual = std::max(residual, island_residual);
-    capped = capped || island_capped;
-    ++islands;
-  }
+/// How contacts bear load beyond a rigid contact with Coulomb's kinetic friction (the scene's
+/// contact, ice and friction keys).
+struct ContactLaw {
+  double crushing_force = 0.0;          // N, largest normal force of one contact pair (ice.contact_crushing); 0: none
+  std::optional<CrushingLaw> crushing;  // contact.model = "crushing" (dem/contact/crushing.hpp); none: rigid
+  StaticFriction static_friction;       // static coefficients of sticking contacts (none by default)
 };
 
 class ContactSolver : public btSequentialImpulseConstraintSolver {
@@ -150,16 +106,17 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   /// following one that changed them by `previous_change`: change / (1 - rate).
   static double remaining_error(double change, double previous_change, int sweeps);
 
-  explicit ContactSolver(const ContactSolverSettings& settings);
+  /// `settings`: the scenario's solver keys; `law`: how the contacts bear load (rigid, with
+  /// Coulomb's kinetic friction, by default). Throws std::invalid_argument for a crushing law
+  /// with the sweeps (solver.method = "pgs"), which do not take it.
+  explicit ContactSolver(const SolverSettings& settings, const ContactLaw& law = {});
 
   /// The structure whose load the residual follows (null: none).
   void set_structure(const btCollisionObject* structure) { structure_ = structure; }
 
-  /// The failure ratios (load over capacity) the joints of an island reach with its joint rows'
-  /// impulses `l` (the fracture stage's measure, dem/fracture/fracture.hpp): the one nearest to 1.
-  using JointRatio = std::function<double(const ContactProblem& problem, const Eigen::VectorXd& l)>;
-  /// What decides whether an island is solved again to breaking_merit_tolerance (empty: never).
-  void set_joint_ratio(JointRatio ratio) { joint_ratio_ = std::move(ratio); }
+  /// What decides whether an island is solved again to breaking_merit_tolerance (empty: never;
+  /// dem/contact/island_solve.hpp).
+  void set_joint_ratio(IslandSolve::JointRatio ratio) { island_.set_joint_ratio(std::move(ratio)); }
 
   /// Let `observer` (not owned; null: none) see the problems of the steps it wants.
   void set_observer(ProblemObserver* observer) { observer_ = observer; }
@@ -253,27 +210,23 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   ContactProblem capture_problem(const btContactSolverInfo& info) const;
   // the impulses the rows hold now
   SolverAnswer row_impulses() const;
-  // the island solved by settings_.method instead of the sweeps; its impulses written to the rows
+  // the island solved by the island solve (settings_.method) instead of the sweeps; its
+  // impulses written to the rows
   void solve_with_method(const btContactSolverInfo& info);
   // set the rows' impulses to `answer`'s (rows in capture_problem's order), the bodies'
   // velocity changes with them
   void apply_impulses(const SolverAnswer& answer);
 
-  ContactSolverSettings settings_;
+  SolverSettings settings_;
+  ContactLaw law_;
   const btCollisionObject* structure_ = nullptr;
-  JointRatio joint_ratio_;
-  std::string finishing_method_;             // handover_'s: settings_.handover_method, or Newton with "none"
-  std::unique_ptr<ContactMethod> handover_;  // goes on with what the method left at its cap; finishes breaking solves
-  // the finishing method's iterations then: Newton needed at most 485 of its steps to 3e-6 on
-  // the lattices' breaking steps, the interior-point method 26-571 on a level sheet's
-  static constexpr int kBreakingFinishIterations = 1000;
+  IslandSolve island_;              // solves an island's problem with a method other than the sweeps
   ProblemObserver* observer_ = nullptr;
-  MeritKind merit_;                            // settings_.merit
-  std::unique_ptr<ContactMethod> method_;     // null: the sweeps
   SolverReport report_;
   std::vector<StructureRow> structure_rows_;  // of the current group
   bool two_directions_ = false;               // two friction rows per contact (else one), set per group
   std::vector<int> order_;                    // contact rows of the current group, sweep order
+  std::vector<double> normal_caps_;           // each contact row's largest normal impulse (law_.crushing), N s
   std::vector<BodyScale> bodies_;             // solver bodies of the current group
   // the group's manifolds and joints in the order their rows are made: Bullet's (SweepOrder::kBullet),
   // else canonical (sorted by the bodies and joints they act on)

@@ -72,28 +72,7 @@ World::World(const WorldSettings& settings)
     dbvt_ = dbvt.get();
     broadphase_ = std::move(dbvt);
   }
-  ContactSolverSettings contact;
-  contact.iterations = solver.iterations;
-  contact.tolerance = solver.tolerance;
-  contact.friction_warm_start = solver.friction_warm_start;
-  contact.order = solver.order;
-  contact.crushing_force = settings.crushing_force;
-  contact.static_friction = settings.static_friction;
-  contact.method = solver.method;
-  contact.merit_tolerance = solver.merit_tolerance;
-  contact.merit = solver.merit;
-  contact.joint_merit_tolerance = solver.joint_merit_tolerance;
-  contact.structure_merit_tolerance = solver.structure_merit_tolerance;
-  contact.breaking_merit_tolerance = solver.breaking_merit_tolerance;
-  contact.breaking_ratio = solver.breaking_ratio;
-  contact.breaking_check_tolerance = solver.breaking_check_tolerance;
-  contact.breaking_check_band = solver.breaking_check_band;
-  contact.breaking_iterations = solver.breaking_iterations;
-  contact.method_iterations = solver.method_iterations;
-  contact.handover_method = solver.handover_method;
-  contact.handover_iterations = solver.handover_iterations;
-  contact.position_iterations = solver.position_iterations;
-  solver_ = std::make_unique<ContactSolver>(contact);
+  solver_ = std::make_unique<ContactSolver>(solver, settings.contact_law);
   dynamics_ = std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                               collision_config_.get());
   dynamics_->setGravity(btVector3(0, -settings.gravity, 0));

@@ -123,13 +123,12 @@ struct WorldSettings {
   SolverSettings solver;
   ActivationSettings activation;
   double gravity;              // m/s^2
-  double crushing_force;       // N, largest normal force of one contact; 0: no limit
   Eigen::AlignedBox3d bounds;  // m, where bodies can be (the sweep-and-prune broadphase needs it)
   double ice_thickness;        // m, of every floe shape
   double ice_density;          // kg/m^3
   WaterParams water;           // for the shapes' damping
   bool added_mass = false;     // ice bodies respond with the water's added mass (dem/water/added_mass.hpp)
-  StaticFriction static_friction;  // static coefficients of sticking contacts (dem/world/static_friction.hpp)
+  ContactLaw contact_law;      // the contacts' crushing and static friction (dem/world/contact_solver.hpp)
 };
 
 /// The Bullet world and everything in it. Not copyable; one per run.

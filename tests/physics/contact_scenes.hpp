@@ -42,7 +42,7 @@ class Keep : public ProblemObserver {
 inline std::unique_ptr<ContactSolver> tight_solver(Keep& keep, int cap = 5000, double tolerance = 1e-9,
                                                    const std::string& method = "pgs", double structure_tolerance = 1.0,
                                                    const std::string& handover = "none") {
-  ContactSolverSettings s;
+  SolverSettings s = test_solver_settings();
   s.iterations = cap;
   s.tolerance = tolerance;
   s.friction_warm_start = true;
@@ -132,7 +132,7 @@ struct RowStep {
   double plate_impulse = 0;      // N s, the normal impulse Bullet's contact points on the plate hold after the step
   double box_speed_min = 0, box_speed_max = 0;  // m/s, surge velocity of the boxes after the step
   double boundary_load = 0;      // N, what the fixed floor and walls take off the plate (dem/world/boundary_load.hpp)
-  int handovers = 0;             // islands handed over at the cap (ContactSolverSettings::handover_method)
+  int handovers = 0;             // islands handed over at the cap (solver.handover_method)
 };
 inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e-9, double structure_tolerance = 1.0,
                                 int cap = 2000, const std::string& handover = "none") {
@@ -156,7 +156,7 @@ inline RowStep sliding_row_step(const std::string& method, double tolerance = 1e
   keep.capture = true;
   bench.world().stepSimulation(kDt, 0);
   RowStep out{*keep.problem, keep.answer};
-  out.handovers = solver->report().handovers;
+  out.handovers = static_cast<int>(solver->report().counts.handovers);
   btDispatcher& dispatcher = *bench.world().getDispatcher();
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);

@@ -24,7 +24,7 @@
 #include "tests/support/box_world.hpp"
 
 using icedem::ContactSolver;
-using icedem::ContactSolverSettings;
+using icedem::SolverSettings;
 using icedem::SweepOrder;
 using namespace icedem::testing;
 
@@ -81,7 +81,7 @@ ChainResult push_chain(std::unique_ptr<btSequentialImpulseConstraintSolver> solv
 }
 
 std::unique_ptr<ContactSolver> converging_solver(int cap, double tolerance) {
-  ContactSolverSettings s;
+  SolverSettings s = test_solver_settings();
   s.iterations = cap;
   s.position_iterations = cap;  // the position sweeps converged too, as the contact sweeps
   s.tolerance = tolerance;
@@ -105,7 +105,7 @@ TEST(ContactSolver, PushedRowOfBoxesLoadsThePlateWithAllTheirFriction) {
   EXPECT_LT(plain.load, 0.8 * expected) << "plain PGS at 10 sweeps: " << plain.load << " N";
   // the same 10 sweeps with warm-started friction at warm start 1 (steady sliding: each
   // step starts from the last one's answer): measured 58.90 N
-  ContactSolverSettings warm;
+  SolverSettings warm = test_solver_settings();
   warm.friction_warm_start = true;
   const ChainResult ten = push_chain(std::make_unique<ContactSolver>(warm), 1.0, 10);
   EXPECT_NEAR(ten.load, expected, 0.01 * expected);
@@ -129,7 +129,7 @@ TEST(ContactSolver, AtBulletsSettingsComputesWhatBulletDoes) {
     return out;
   };
   const auto bullet = final_positions(std::make_unique<btSequentialImpulseConstraintSolver>());
-  const auto ours = final_positions(std::make_unique<ContactSolver>(ContactSolverSettings{}));
+  const auto ours = final_positions(std::make_unique<ContactSolver>(test_solver_settings()));
   ASSERT_EQ(bullet.size(), ours.size());
   for (std::size_t i = 0; i < bullet.size(); ++i)
     for (int k = 0; k < 3; ++k) EXPECT_EQ(bullet[i][k], ours[i][k]) << "box " << i << " axis " << k;
@@ -157,7 +157,7 @@ TEST(ContactSolver, BoxOnASlopeBelowItsFrictionAngleDoesNotCreep) {
     for (int s = 0; s < 3000; ++s) bench.world().stepSimulation(kDt, 0);  // 60 s
     return (box->getWorldTransform().getOrigin() - start).length();
   };
-  ContactSolverSettings s;  // 10 sweeps, no tolerance: the paper's cost
+  SolverSettings s = test_solver_settings();  // 10 sweeps, no tolerance: the paper's cost
   s.friction_warm_start = true;
   const double ours = creep(std::make_unique<ContactSolver>(s), 1.0);
   const double bullet = creep(std::make_unique<btSequentialImpulseConstraintSolver>(), 0.85);
@@ -173,11 +173,12 @@ TEST(ContactSolver, LockedBoxHasNoConvergedLoad) {
   // Each sweep adds about m v to both impulses, and the plate's load grows in proportion
   // to the sweeps: at 10 and 100 sweeps a step the ratio of the loads is near 10.
   auto locked_load = [](int sweeps, double crushing = 0.0) {
-    ContactSolverSettings s;
+    SolverSettings s = test_solver_settings();
     s.iterations = sweeps;
-    s.crushing_force = crushing;
     s.friction_warm_start = true;
-    auto solver = std::make_unique<ContactSolver>(s);
+    icedem::ContactLaw law;
+    law.crushing_force = crushing;
+    auto solver = std::make_unique<ContactSolver>(s, law);
     ContactSolver* ours = solver.get();
     Bench bench(std::move(solver));
     bench.world().getSolverInfo().m_numIterations = sweeps;

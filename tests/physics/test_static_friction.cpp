@@ -17,7 +17,7 @@
 #include "tests/support/box_world.hpp"
 
 using icedem::ContactSolver;
-using icedem::ContactSolverSettings;
+using icedem::SolverSettings;
 using icedem::StaticFriction;
 using namespace icedem::testing;
 
@@ -38,15 +38,16 @@ struct Slide {
 // solved by `method`, starting at `v0` down the slope. Measured after `settle` s (the block
 // settling onto the face) for `seconds`.
 Slide slide(const std::string& method, double angle_deg, double mu_s, double v0, double seconds, double settle = 0.4) {
-  ContactSolverSettings s;
+  SolverSettings s = test_solver_settings();
   s.iterations = 200;
   s.tolerance = 1e-9;
   s.friction_warm_start = true;
   s.method = method;
   s.merit_tolerance = 1e-10;
   s.method_iterations = 2000;
-  s.static_friction = StaticFriction{0.0, mu_s, 1e-3};
-  auto solver = std::make_unique<ContactSolver>(s);
+  icedem::ContactLaw law;
+  law.static_friction = StaticFriction{0.0, mu_s, 1e-3};
+  auto solver = std::make_unique<ContactSolver>(s, law);
   ContactSolver* raw = solver.get();
   Bench bench(std::move(solver));
   const double angle = angle_deg * M_PI / 180.0;

@@ -7,7 +7,24 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "dem/contact/solver_settings.hpp"
+#include "dem/input/solver_profile.hpp"
+
 namespace icedem::testing {
+
+// The solver settings these tests are written for: the paper profile's (Bullet's own sweeps:
+// 10 of them, no tolerance, its warm start and row order) and, for a method other than the
+// sweeps, a solve to solver.merit_tolerance alone: no tighter merit for islands with joints or
+// on the structure, no breaking solve, no hand-over
+inline SolverSettings test_solver_settings() {
+  SolverSettings s = solver_settings("paper");
+  s.merit_tolerance = s.joint_merit_tolerance = s.structure_merit_tolerance = 1e-6;
+  s.breaking_merit_tolerance = s.breaking_check_tolerance = 0.0;
+  s.method_iterations = 300;
+  s.handover_method = "none";
+  s.handover_iterations = 100;
+  return s;
+}
 
 constexpr double kGravity = 9.81;
 constexpr double kDt = 0.02;  // s, icedem's step

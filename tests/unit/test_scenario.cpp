@@ -147,6 +147,24 @@ TEST(Scenario, NewtonWithCrushingContactsIsRefusedAtTheKey) {
   EXPECT_NE(msg.find("contact_crushing"), std::string::npos) << msg;
 }
 
+TEST(Scenario, TheCrushingLawIsRefusedWhereItCannotBeSolvedOrDoublesAnotherModel) {
+  // the crushing law's bound is a projection of the gradient method (docs/model/crushing.md)
+  const std::string pgs = error_of("[contact]\nmodel = \"crushing\"\n\n[solver]\nmethod = \"pgs\"\n");
+  EXPECT_NE(pgs.find("test.toml:5"), std::string::npos) << pgs;
+  EXPECT_NE(pgs.find("solver.method"), std::string::npos) << pgs;
+  EXPECT_NE(pgs.find("apgd"), std::string::npos) << pgs;
+  // the fixed cap and the law are two models of one thing
+  const std::string both = error_of("[contact]\nmodel = \"crushing\"\n\n[ice]\ncontact_crushing = true\n");
+  EXPECT_NE(both.find("test.toml:5"), std::string::npos) << both;
+  EXPECT_NE(both.find("choose one"), std::string::npos) << both;
+  // without split impulse Bullet would push the crushed overlap apart
+  const std::string split = error_of("[contact]\nmodel = \"crushing\"\n\n[solver]\nsplit_impulse = false\n");
+  EXPECT_NE(split.find("solver.split_impulse"), std::string::npos) << split;
+  // and an exponent that makes the force fall with the area is out of range
+  const std::string exponent = error_of("[contact]\npressure_area_exponent = -1.5\n");
+  EXPECT_NE(exponent.find("contact.pressure_area_exponent"), std::string::npos) << exponent;
+}
+
 TEST(Scenario, AFloeOrPlateSmallerThanOneElementIsRefusedAtTheKey) {
   // 1e-300 m / 0.2 m rounds to 0, a "whole number" of elements: zero elements is none
   // (found by scripts/fuzz: the plate case passed to the lattice and failed there unnamed)

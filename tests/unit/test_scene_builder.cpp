@@ -35,6 +35,7 @@ std::string chosen(const Scene& s, const std::string& key) {
   if (key == "fracture.element_shape") return std::to_string(static_cast<int>(s.fracture.element_shape));
   if (key == "fracture.tiling") return std::to_string(static_cast<int>(s.fracture.tiling));
   if (key == "ice.cover") return std::to_string(static_cast<int>(s.ice.cover));
+  if (key == "contact.model") return std::to_string(static_cast<int>(s.contact.model));
   return "";  // a choice key this test does not know: it fails below
 }
 

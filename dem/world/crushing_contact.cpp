@@ -1,0 +1,62 @@
+#include "dem/world/crushing_contact.hpp"
+
+#include <vector>
+
+#include <BulletCollision/CollisionShapes/btPolyhedralConvexShape.h>
+
+#include "dem/contact/contact_area.hpp"
+#include "dem/world/bullet_eigen.hpp"
+#include "dem/world/world.hpp"
+
+namespace icedem {
+namespace {
+
+bool is_ice(const btCollisionObject& body) { return body.getUserIndex() == kIce; }
+
+// the corners of a body's shape in the tank frame (ice bodies are boxes or convex hulls:
+// dem/world/floe_shape.cpp)
+std::vector<Eigen::Vector3d> corners(const btCollisionObject& body) {
+  const auto* shape = dynamic_cast<const btPolyhedralConvexShape*>(body.getCollisionShape());
+  std::vector<Eigen::Vector3d> out;
+  if (!shape) return out;
+  const btTransform& pose = body.getWorldTransform();
+  out.reserve(shape->getNumVertices());
+  for (int i = 0; i < shape->getNumVertices(); ++i) {
+    btVector3 v;
+    shape->getVertex(i, v);
+    out.push_back(to_eigen(pose * v));
+  }
+  return out;
+}
+
+// the nominal contact area of the overlap at point p (m^2)
+double nominal_area(const btCollisionObject& a, const btCollisionObject& b, const btManifoldPoint& p) {
+  const Eigen::Vector3d n = to_eigen(p.m_normalWorldOnB);  // from B to A
+  if (is_ice(a) && is_ice(b)) {
+    const Eigen::Vector3d middle = 0.5 * (to_eigen(p.getPositionWorldOnA()) + to_eigen(p.getPositionWorldOnB()));
+    return common_section_area(corners(a), corners(b), Plane{middle, n});
+  }
+  // one body is ice: its section by the other's surface
+  const bool a_ice = is_ice(a);
+  const Eigen::Vector3d surface = to_eigen(a_ice ? p.getPositionWorldOnB() : p.getPositionWorldOnA());
+  return section_area(corners(a_ice ? a : b), Plane{surface, a_ice ? n : Eigen::Vector3d(-n)});
+}
+
+}  // namespace
+
+std::optional<double> crushing_cap(const btPersistentManifold& manifold, const CrushingLaw& law, double h) {
+  const btCollisionObject& a = *manifold.getBody0();
+  const btCollisionObject& b = *manifold.getBody1();
+  const int n = manifold.getNumContacts();
+  if (n == 0 || (!is_ice(a) && !is_ice(b))) return std::nullopt;
+  // the deepest point stands for the manifold (Bullet's points of one face lie on one plane)
+  int deepest = 0;
+  for (int i = 1; i < n; ++i)
+    if (manifold.getContactPoint(i).getDistance() < manifold.getContactPoint(deepest).getDistance()) deepest = i;
+  const btManifoldPoint& p = manifold.getContactPoint(deepest);
+  // a point not yet touching (within the margins) has no overlap and carries nothing
+  const double area = p.getDistance() < 0 ? nominal_area(a, b, p) : 0.0;
+  return h * crushing_force(law, area) / n;
+}
+
+}  // namespace icedem

@@ -1,0 +1,28 @@
+// The crushing law's bound (dem/contact/crushing.hpp) for Bullet's contact manifolds:
+// the nominal contact area of a manifold from the shapes of its two bodies and the
+// plane of the contact.
+//
+//  - Ice against a body that does not crush (the structure, a wall): the section of the
+//    ice by the other body's surface, the plane through Bullet's point on that body with
+//    the contact's normal (Daley's nominal area; the structure's facet there, so a
+//    curved hull counts as its facets).
+//  - Ice against ice: both crush; the area the two pieces' sections share on the plane
+//    halfway through their overlap.
+// The manifold's overlap is its deepest point's, and its force is shared by its points:
+// each point's normal impulse is bounded by 1/n of the manifold's h F.
+#pragma once
+
+#include <optional>
+
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+
+#include "dem/contact/crushing.hpp"
+
+namespace icedem {
+
+/// The largest normal impulse (N s) of each of the manifold's points over the step `h` (s), or
+/// none if neither body is ice (world.hpp's Material kIce in the user index) or the manifold
+/// has no point.
+std::optional<double> crushing_cap(const btPersistentManifold& manifold, const CrushingLaw& law, double h);
+
+}  // namespace icedem

@@ -1,0 +1,154 @@
+// Single impacts with the crushing contact law (dem/contact/crushing.hpp) against the
+// energy balance of crushing (docs/model/crushing.md): a floe's corner driven along the
+// normal of a 45-degree face, as the cone's, at 0.07 m/s, stops when the work of the
+// crushing force over the penetration has taken its kinetic energy,
+//
+//   1/2 m_eff v_n^2 = integral of F d(delta) = K delta_max^3 / 3,   F = K delta^2,
+//   K = sigma_c tan(phi/2) / (sin beta cos^2 beta) = 4.118e5 N/m^2 (phi = 90 deg, beta = 45 deg),
+//
+// so F_max = K^(1/3) (3 E_k)^(2/3). The floe cannot turn (its inertia made huge: the
+// contact's lever arm would otherwise change m_eff as it turns), nothing else acts on it
+// (no gravity, no water, no friction), and its mass along the normal is m_eff: its own, or
+// with the water's added mass in heave (a factor on its heave response, as
+// dem/water/added_mass.hpp sets it), 1 / m_eff = n^T M^-1 n.
+// The rigid contact beside it stops the floe within one step, its peak m_eff v_n / h set by
+// the step.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "dem/world/contact_solver.hpp"
+#include "dem/world/world.hpp"
+#include "tests/support/box_world.hpp"
+
+using icedem::ContactLaw;
+using icedem::ContactSolver;
+using icedem::CrushingLaw;
+using icedem::SolverSettings;
+using namespace icedem::testing;
+
+namespace {
+
+constexpr double kThickness = 0.033;   // m
+constexpr double kIceDensity = 930.0;  // kg/m^3
+constexpr double kStrength = 145.6e3;  // Pa, the paper's compressive strength
+constexpr double kSpeed = 0.07;        // m/s along the face's normal
+const double kBeta = M_PI / 4;         // the face's normal from the horizontal
+const double kCornerStiffness = kStrength / (std::sin(kBeta) * std::pow(std::cos(kBeta), 2));  // K, N/m^2
+
+struct Impact {
+  double peak_force = 0;        // N, largest normal force on the face in a step
+  double peak_penetration = 0;  // m, deepest point of the manifold
+  double peak_time = 0;         // s, when the force peaked (from first contact)
+  double rebound = 0;           // m/s, the floe's speed away from the face at the end
+};
+
+// a square floe of side `side`, its corner along +x, driven at kSpeed along the normal of a fixed
+// 45-degree face at step h; `heave_factor`: its response to a vertical force over its mass's
+// (1: no added mass); crushing or rigid contacts
+Impact impact(double side, double h, double heave_factor, bool crushing) {
+  SolverSettings s = test_solver_settings();
+  s.method = "apgd";
+  s.merit_tolerance = s.joint_merit_tolerance = s.structure_merit_tolerance = 1e-9;
+  s.method_iterations = 20000;
+  ContactLaw law;
+  if (crushing) law.crushing = CrushingLaw{kStrength, 0.0, kThickness * kThickness};
+  Bench bench(std::make_unique<ContactSolver>(s, law));
+  bench.world().setGravity(btVector3(0, 0, 0));
+  // the face: a large fixed block whose face through the origin has the normal n (toward -x, up)
+  const btVector3 n(-std::cos(kBeta), std::sin(kBeta), 0);
+  btTransform block = at(0, 0, 0);
+  block.setRotation(btQuaternion(btVector3(0, 0, 1), kBeta));
+  block.setOrigin(-n * 0.5);
+  btRigidBody* face = bench.box({0.5, 0.5, 0.5}, block, 0.0, 0.0, icedem::kStructure);
+  // the floe: its corner 1 mm off the face, on the face's normal through the origin
+  const double mass = kIceDensity * side * side * kThickness;
+  btTransform pose = at(0, 0, 0);
+  pose.setRotation(btQuaternion(btVector3(0, 1, 0), M_PI / 4));
+  btRigidBody* floe = bench.box({side / 2, kThickness / 2, side / 2}, pose, mass, 0.0, icedem::kIce);
+  floe->setMassProps(mass, btVector3(1e12, 1e12, 1e12));  // it cannot turn
+  floe->updateInertiaTensor();
+  floe->setLinearFactor(btVector3(1, heave_factor, 1));
+  // the corner nearest the face (the floe's bottom vertex along +x: the face leans over the
+  // floe), placed 1 mm from it
+  const double reach = side / std::sqrt(2.0);
+  const btVector3 corner_offset(reach, -kThickness / 2, 0);
+  const btVector3 corner = n * 1e-3;  // 1 mm off the face, on its outer side
+  pose.setOrigin(corner - corner_offset);
+  floe->setWorldTransform(pose);
+  floe->getMotionState()->setWorldTransform(pose);
+  floe->setLinearVelocity(-n * kSpeed);
+  face->setFriction(0.0);
+  floe->setFriction(0.0);
+
+  Impact out;
+  double first = -1;
+  for (int step = 0; step < static_cast<int>(std::lround(0.6 / h)); ++step) {
+    bench.world().stepSimulation(h, 0);
+    const btVector3 force = contact_force_on(bench.world(), face) * (kDt / h);  // the helper divides by kDt
+    const double normal = -force.dot(n);  // the floe pushes the face along -n
+    double depth = 0;
+    btDispatcher& d = *bench.world().getDispatcher();
+    for (int m = 0; m < d.getNumManifolds(); ++m)
+      for (int p = 0; p < d.getManifoldByIndexInternal(m)->getNumContacts(); ++p)
+        depth = std::max(depth, -double(d.getManifoldByIndexInternal(m)->getContactPoint(p).getDistance()));
+    if (first < 0 && normal > 0) first = (step + 1) * h;
+    if (normal > out.peak_force) out.peak_force = normal, out.peak_time = (step + 1) * h - first;
+    out.peak_penetration = std::max(out.peak_penetration, depth);
+  }
+  out.rebound = floe->getLinearVelocity().dot(n);
+  return out;
+}
+
+// the floe's mass along the face's normal: 1 / m_eff = n^T M^-1 n, M^-1 = diag(1, heave, 1) / m
+double effective_mass(double side, double heave_factor) {
+  const double mass = kIceDensity * side * side * kThickness;
+  const double c = std::cos(kBeta), s = std::sin(kBeta);
+  return mass / (c * c + heave_factor * s * s);
+}
+
+// the energy balance's peak force and penetration for a mass m_eff at kSpeed
+double balance_force(double m_eff) {
+  const double energy = 0.5 * m_eff * kSpeed * kSpeed;
+  return std::cbrt(kCornerStiffness) * std::pow(3 * energy, 2.0 / 3.0);
+}
+double balance_penetration(double m_eff) { return std::cbrt(3 * 0.5 * m_eff * kSpeed * kSpeed / kCornerStiffness); }
+
+}  // namespace
+
+// The peak force is the energy balance's within 10 % (the force of each step's start in a
+// leapfrog is second order: a few per cent where the peak takes 4 steps or more), it moves
+// by less than 5 % from dt/2 to dt/4, and the floe does not bounce back (crushing is not elastic)
+class CrushingImpact : public ::testing::TestWithParam<std::tuple<double, double>> {};
+
+TEST_P(CrushingImpact, PeakForceIsTheEnergyBalancesAndConvergesWithTheStep) {
+  const auto [side, heave_factor] = GetParam();
+  const double m_eff = effective_mass(side, heave_factor);
+  const double f_balance = balance_force(m_eff), d_balance = balance_penetration(m_eff);
+  const Impact full = impact(side, 0.02, heave_factor, true), half = impact(side, 0.01, heave_factor, true),
+               quarter = impact(side, 0.005, heave_factor, true);
+  const Impact rigid_full = impact(side, 0.02, heave_factor, false), rigid_half = impact(side, 0.01, heave_factor, false);
+  std::printf("%.1f m floe, m_eff %.2f kg: balance %.2f N at %.2f mm; crushing %.2f / %.2f / %.2f N (%.2f / %.2f / "
+              "%.2f mm, peak after %.3f / %.3f / %.3f s) at dt, dt/2, dt/4; rigid %.1f / %.1f N at dt, dt/2\n",
+              side, m_eff, f_balance, 1e3 * d_balance, full.peak_force, half.peak_force, quarter.peak_force,
+              1e3 * full.peak_penetration, 1e3 * half.peak_penetration, 1e3 * quarter.peak_penetration,
+              full.peak_time, half.peak_time, quarter.peak_time, rigid_full.peak_force, rigid_half.peak_force);
+  EXPECT_NEAR(half.peak_force, f_balance, 0.10 * f_balance);
+  EXPECT_NEAR(quarter.peak_force, f_balance, 0.10 * f_balance);
+  EXPECT_NEAR(quarter.peak_penetration, d_balance, 0.10 * d_balance);
+  EXPECT_NEAR(half.peak_force, quarter.peak_force, 0.05 * quarter.peak_force);
+  EXPECT_LT(std::abs(full.rebound), 1e-3 * kSpeed) << "a crushed contact does not push the floe back";
+  // the rigid contact's peak is the momentum over the step: it doubles when the step halves
+  EXPECT_NEAR(rigid_half.peak_force / rigid_full.peak_force, 2.0, 0.2);
+}
+
+// the paper's two floe sizes, with and without a heave added mass of 3.7 times the floe's own
+// (the thin floe's, dem/water/added_mass.hpp: its heave response over 4.7)
+INSTANTIATE_TEST_SUITE_P(Floes, CrushingImpact,
+                         ::testing::Values(std::make_tuple(0.3, 1.0), std::make_tuple(0.6, 1.0),
+                                           std::make_tuple(0.6, 1.0 / 4.7)));
