@@ -1,5 +1,6 @@
 #include "dem/world/crushing_contact.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include <BulletCollision/CollisionShapes/btPolyhedralConvexShape.h>
@@ -33,8 +34,13 @@ std::vector<Eigen::Vector3d> corners(const btCollisionObject& body) {
 double nominal_area(const btCollisionObject& a, const btCollisionObject& b, const btManifoldPoint& p) {
   const Eigen::Vector3d n = to_eigen(p.m_normalWorldOnB);  // from B to A
   if (is_ice(a) && is_ice(b)) {
-    const Eigen::Vector3d middle = 0.5 * (to_eigen(p.getPositionWorldOnA()) + to_eigen(p.getPositionWorldOnB()));
-    return common_section_area(corners(a), corners(b), Plane{middle, n});
+    // both may crush, and the one of smaller section does: a corner pressed into a straight
+    // edge crushes at the edge's face, over its section there. The larger of the common
+    // sections on the two bodies' surfaces (through Bullet's point on each) is that, and is
+    // the same for two like faces
+    const std::vector<Eigen::Vector3d> ca = corners(a), cb = corners(b);
+    return std::max(common_section_area(ca, cb, Plane{to_eigen(p.getPositionWorldOnA()), n}),
+                    common_section_area(ca, cb, Plane{to_eigen(p.getPositionWorldOnB()), n}));
   }
   // one body is ice: its section by the other's surface
   const bool a_ice = is_ice(a);

@@ -6,8 +6,9 @@
 //    ice by the other body's surface, the plane through Bullet's point on that body with
 //    the contact's normal (Daley's nominal area; the structure's facet there, so a
 //    curved hull counts as its facets).
-//  - Ice against ice: both crush; the area the two pieces' sections share on the plane
-//    halfway through their overlap.
+//  - Ice against ice: the one of smaller section crushes (a corner pressed into a straight
+//    edge); the larger of the areas the two pieces' sections share on the planes of the two
+//    bodies' surfaces.
 // The manifold's overlap is its deepest point's, and its force is shared by its points:
 // each point's normal impulse is bounded by 1/n of the manifold's h F.
 #pragma once

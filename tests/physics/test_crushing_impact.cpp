@@ -51,7 +51,8 @@ struct Impact {
 // a square floe of side `side`, its corner along +x, driven at kSpeed along the normal of a fixed
 // 45-degree face at step h; `heave_factor`: its response to a vertical force over its mass's
 // (1: no added mass); crushing or rigid contacts
-Impact impact(double side, double h, double heave_factor, bool crushing) {
+// `ice_edge`: the face is instead the straight vertical edge of a fixed floe (ice against ice)
+Impact impact(double side, double h, double heave_factor, bool crushing, bool ice_edge = false) {
   SolverSettings s = test_solver_settings();
   s.method = "apgd";
   s.merit_tolerance = s.joint_merit_tolerance = s.structure_merit_tolerance = 1e-9;
@@ -60,12 +61,14 @@ Impact impact(double side, double h, double heave_factor, bool crushing) {
   if (crushing) law.crushing = CrushingLaw{kStrength, 0.0, kThickness * kThickness};
   Bench bench(std::make_unique<ContactSolver>(s, law));
   bench.world().setGravity(btVector3(0, 0, 0));
-  // the face: a large fixed block whose face through the origin has the normal n (toward -x, up)
-  const btVector3 n(-std::cos(kBeta), std::sin(kBeta), 0);
+  // the face: a large fixed block whose face through the origin has the normal n (toward -x, up),
+  // or a fixed floe whose straight edge is at x = 0
+  const btVector3 n = ice_edge ? btVector3(-1, 0, 0) : btVector3(-std::cos(kBeta), std::sin(kBeta), 0);
   btTransform block = at(0, 0, 0);
-  block.setRotation(btQuaternion(btVector3(0, 0, 1), kBeta));
-  block.setOrigin(-n * 0.5);
-  btRigidBody* face = bench.box({0.5, 0.5, 0.5}, block, 0.0, 0.0, icedem::kStructure);
+  if (!ice_edge) block.setRotation(btQuaternion(btVector3(0, 0, 1), kBeta));
+  block.setOrigin(-n * (ice_edge ? 0.3 : 0.5));
+  btRigidBody* face = ice_edge ? bench.box({0.3, kThickness / 2, 0.3}, block, 0.0, 0.0, icedem::kIce)
+                               : bench.box({0.5, 0.5, 0.5}, block, 0.0, 0.0, icedem::kStructure);
   // the floe: its corner 1 mm off the face, on the face's normal through the origin
   const double mass = kIceDensity * side * side * kThickness;
   btTransform pose = at(0, 0, 0);
@@ -77,7 +80,7 @@ Impact impact(double side, double h, double heave_factor, bool crushing) {
   // the corner nearest the face (the floe's bottom vertex along +x: the face leans over the
   // floe), placed 1 mm from it
   const double reach = side / std::sqrt(2.0);
-  const btVector3 corner_offset(reach, -kThickness / 2, 0);
+  const btVector3 corner_offset(reach, ice_edge ? 0.0 : -kThickness / 2, 0);
   const btVector3 corner = n * 1e-3;  // 1 mm off the face, on its outer side
   pose.setOrigin(corner - corner_offset);
   floe->setWorldTransform(pose);
@@ -152,3 +155,25 @@ TEST_P(CrushingImpact, PeakForceIsTheEnergyBalancesAndConvergesWithTheStep) {
 INSTANTIATE_TEST_SUITE_P(Floes, CrushingImpact,
                          ::testing::Values(std::make_tuple(0.3, 1.0), std::make_tuple(0.6, 1.0),
                                            std::make_tuple(0.6, 1.0 / 4.7)));
+
+// A floe's corner (opening 90 degrees) driven at 0.07 m/s onto the straight edge of a fixed
+// floe: the edge, as wide as the floe's section, barely crushes and the corner takes it, A =
+// 2 h delta tan(45 deg), F = k delta with k = 2 sigma_c h (9.6 kN/m): the balance gives
+// F_max = v sqrt(m k), 11.4 N for the 0.3 m floe, 22.8 N for the 0.6 m, reached after
+// (pi / 2) sqrt(m / k): 27 ms and 53 ms, a step or three at 0.02 s: the 0.6 m floe's is
+// checked at dt/2 and dt/4 as the impacts on the cone are (the test prints dt and dt/8 beside)
+TEST(CrushingImpactOnIce, ACornerIntoAStraightEdgeCrushesTheCorner) {
+  const double side = 0.6, m = kIceDensity * side * side * kThickness, k = 2 * kStrength * kThickness;
+  const double balance = kSpeed * std::sqrt(m * k);
+  const Impact full = impact(side, 0.02, 1.0, true, true), half = impact(side, 0.01, 1.0, true, true),
+               quarter = impact(side, 0.005, 1.0, true, true), eighth = impact(side, 0.0025, 1.0, true, true);
+  std::printf("0.6 m floe's corner on a floe's edge: balance %.2f N at %.2f mm; crushing %.2f / %.2f / %.2f / %.2f N "
+              "(%.2f / %.2f / %.2f / %.2f mm) at dt, dt/2, dt/4, dt/8\n",
+              balance, 1e3 * balance / k, full.peak_force, half.peak_force, quarter.peak_force, eighth.peak_force,
+              1e3 * full.peak_penetration, 1e3 * half.peak_penetration, 1e3 * quarter.peak_penetration,
+              1e3 * eighth.peak_penetration);
+  EXPECT_NEAR(half.peak_force, balance, 0.10 * balance);
+  EXPECT_NEAR(quarter.peak_force, balance, 0.10 * balance);
+  EXPECT_NEAR(half.peak_force, quarter.peak_force, 0.05 * quarter.peak_force);
+  EXPECT_LT(std::abs(half.rebound), 1e-3 * kSpeed) << "a crushed contact does not push the floe back";
+}
