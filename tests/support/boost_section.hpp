@@ -9,7 +9,11 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-// Boost.Geometry's rescaling policy reads a factor GCC 12 cannot prove set (a false alarm)
+// Boost.Geometry's rescaling policy reads a factor GCC 12 cannot prove set (a false alarm), and
+// Boost 1.74's geometry includes a header of its own it calls deprecated (a note in every build)
+#ifndef BOOST_ALLOW_DEPRECATED_HEADERS
+#define BOOST_ALLOW_DEPRECATED_HEADERS
+#endif
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <boost/geometry.hpp>
