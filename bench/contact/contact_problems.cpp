@@ -76,8 +76,8 @@ SolverAnswer solve_with(const std::string& name, const ContactProblem& p, const 
   // the island solve starts from the problem's warm start: a cold solve starts from zero
   const SolverAnswer a = IslandSolve(s).solve(o.warm_start ? p : started_from(p, SolverAnswer{
       Eigen::VectorXd::Zero(p.contact_rows()), Eigen::VectorXd::Zero(p.joint_rows())}), report);
-  iterations = report.counts.handovers > 0 ? fmt::format("{}+{}", std::min(a.sweeps, first), a.sweeps - std::min(a.sweeps, first))
-                                : std::to_string(a.sweeps);
+  // a hand-over starts only where A used all its `first` iterations
+  iterations = report.counts.handovers > 0 ? fmt::format("{}+{}", first, a.sweeps - first) : std::to_string(a.sweeps);
   return a;
 }
 

@@ -11,6 +11,7 @@ using Point2 = Eigen::Vector2d;
 // scratch of the sections: a run computes one or two per crushing manifold and substep, and
 // allocating them was a tenth of such a run's CPU
 thread_local std::vector<Point2> scratch_points, scratch_hull, scratch_a, scratch_b, scratch_clip;
+thread_local std::vector<double> scratch_side;
 
 // twice the signed area of the triangle (o, a, b): > 0 when a -> b turns left about o
 double turn(const Point2& o, const Point2& a, const Point2& b) {
@@ -53,10 +54,8 @@ void section(const std::vector<Eigen::Vector3d>& vertices, const Plane& plane, s
   std::vector<Point2>& crossings = scratch_points;
   crossings.clear();
   const std::size_t n = vertices.size();
-  double side[64];
-  std::vector<double> more;  // bodies of more than 64 corners (outlines of many sides)
-  double* s = side;
-  if (n > 64) more.resize(n), s = more.data();
+  std::vector<double>& s = scratch_side;  // each corner's signed distance from the plane
+  s.resize(n);
   for (std::size_t i = 0; i < n; ++i) s[i] = plane.normal.dot(vertices[i] - plane.point);
   auto add = [&](const Eigen::Vector3d& x) {
     const Eigen::Vector3d d = x - plane.point;

@@ -55,7 +55,6 @@
 #pragma once
 
 #include <algorithm>
-#include <functional>
 #include <tuple>
 #include <memory>
 #include <optional>

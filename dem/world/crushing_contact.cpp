@@ -14,21 +14,23 @@ namespace {
 
 bool is_ice(const btCollisionObject& body) { return body.getUserIndex() == kIce; }
 
-// the corners of a body's shape in the tank frame (ice bodies are boxes or convex hulls:
-// dem/world/floe_shape.cpp)
-std::vector<Eigen::Vector3d> corners(const btCollisionObject& body) {
+// the corners of a body's shape in the tank frame, into `out` (ice bodies are boxes or convex
+// hulls: dem/world/floe_shape.cpp)
+void corners(const btCollisionObject& body, std::vector<Eigen::Vector3d>& out) {
+  out.clear();
   const auto* shape = dynamic_cast<const btPolyhedralConvexShape*>(body.getCollisionShape());
-  std::vector<Eigen::Vector3d> out;
-  if (!shape) return out;
+  if (!shape) return;
   const btTransform& pose = body.getWorldTransform();
-  out.reserve(shape->getNumVertices());
   for (int i = 0; i < shape->getNumVertices(); ++i) {
     btVector3 v;
     shape->getVertex(i, v);
     out.push_back(to_eigen(pose * v));
   }
-  return out;
 }
+
+// the two bodies' corners, kept from one manifold to the next rather than allocated for each
+// (one or two per crushing manifold and substep)
+thread_local std::vector<Eigen::Vector3d> corners_a, corners_b;
 
 // the nominal contact area of the overlap at point p (m^2)
 double nominal_area(const btCollisionObject& a, const btCollisionObject& b, const btManifoldPoint& p) {
@@ -38,14 +40,16 @@ double nominal_area(const btCollisionObject& a, const btCollisionObject& b, cons
     // edge crushes at the edge's face, over its section there. The larger of the common
     // sections on the two bodies' surfaces (through Bullet's point on each) is that, and is
     // the same for two like faces
-    const std::vector<Eigen::Vector3d> ca = corners(a), cb = corners(b);
-    return std::max(common_section_area(ca, cb, Plane{to_eigen(p.getPositionWorldOnA()), n}),
-                    common_section_area(ca, cb, Plane{to_eigen(p.getPositionWorldOnB()), n}));
+    corners(a, corners_a);
+    corners(b, corners_b);
+    return std::max(common_section_area(corners_a, corners_b, Plane{to_eigen(p.getPositionWorldOnA()), n}),
+                    common_section_area(corners_a, corners_b, Plane{to_eigen(p.getPositionWorldOnB()), n}));
   }
   // one body is ice: its section by the other's surface
   const bool a_ice = is_ice(a);
   const Eigen::Vector3d surface = to_eigen(a_ice ? p.getPositionWorldOnB() : p.getPositionWorldOnA());
-  return section_area(corners(a_ice ? a : b), Plane{surface, a_ice ? n : Eigen::Vector3d(-n)});
+  corners(a_ice ? a : b, corners_a);
+  return section_area(corners_a, Plane{surface, a_ice ? n : Eigen::Vector3d(-n)});
 }
 
 }  // namespace
