@@ -22,6 +22,14 @@ Sets (about 1.5 hours of CPU in all):
   hexagon_015  0.6 m floes of 0.15 m hexagons: steps that broke a joint
   level_ice    level ice of 0.15 m elements, its first 40 s: the free sheet with the rubble
                at the cone (hundreds of elements, thousands of joint rows)
+The crushing sets: the same scenes with crushing contacts (contact.model = "crushing",
+docs/model/crushing.md) and the water's added mass, each contact's normal bounded by its
+cap (/icedem/contact_normal_cap); their islands at fixed times, the pack built up (about
+40 minutes of CPU in all):
+  crushing_small        the paper's small floes, from 60 s on
+  crushing_large        the paper's 0.6 m rigid floes, from 100 s on
+  crushing_lattice_020  0.6 m floes of 0.20 m elements: steps that broke a joint
+  crushing_level_ice    level ice of 0.15 m elements, its first 40 s
 """
 import argparse
 import os
@@ -44,6 +52,9 @@ def scenario(path):
 # with the sweeps' settings, whatever the default is now.
 SWEEPS = ["--set", "solver.method=pgs", "--set", "solver.position_iterations=160"]
 
+# The crushing contact with the water's added mass: the model issue 67's loads are measured with
+CRUSHING = ["--set", "contact.model=crushing", "--set", "water.added_mass=true"]
+
 # name: (scenario, extra icedem arguments, export arguments); the lattice sets'
 # export times come from a first run
 SETS = {
@@ -61,6 +72,13 @@ SETS = {
     "hexagon_015": ("paper/large_floes_hexagon_015.toml", [], None),
     "level_ice": ("level_ice/level_ice_015.toml", ["--set", "time.duration=40"],
                   ["--export-at", "14,22,30,38", "--export-min-contacts", "100"]),
+    "crushing_small": ("paper/small_floes.toml", CRUSHING,
+                       ["--export-at", "60,90,120,150,180,210,240,270", "--export-min-contacts", "50"]),
+    "crushing_large": ("paper/large_floes_rigid.toml", CRUSHING,
+                       ["--export-at", "100,130,160,190,220,250,275", "--export-min-contacts", "30"]),
+    "crushing_lattice_020": ("paper/large_floes_breakable_020.toml", CRUSHING, None),
+    "crushing_level_ice": ("level_ice/level_ice_015.toml", CRUSHING + ["--set", "time.duration=40"],
+                           ["--export-at", "14,22,30,38", "--export-min-contacts", "100"]),
 }
 BREAK_STEPS = 6  # steps with breaks written per lattice set, spread over the run
 

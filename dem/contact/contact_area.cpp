@@ -12,6 +12,7 @@ using Point2 = Eigen::Vector2d;
 // allocating them was a tenth of such a run's CPU
 thread_local std::vector<Point2> scratch_points, scratch_hull, scratch_a, scratch_b, scratch_clip;
 thread_local std::vector<double> scratch_side;
+thread_local std::vector<int> scratch_above, scratch_below;
 
 // twice the signed area of the triangle (o, a, b): > 0 when a -> b turns left about o
 double turn(const Point2& o, const Point2& a, const Point2& b) {
@@ -47,8 +48,11 @@ double area(const std::vector<Point2>& polygon) {
   return 0.5 * std::abs(twice);
 }
 
-// the section of the hull of `vertices` by `plane` in the plane's axes e1, e2, into `hull`
-void section(const std::vector<Eigen::Vector3d>& vertices, const Plane& plane, std::vector<Point2>& hull) {
+// the section of the hull of `vertices` by `plane` in the axes e1, e2 normal to `plane.normal`
+// about `origin` (one origin for sections by parallel planes: their points then share
+// coordinates), into `hull`
+void section(const std::vector<Eigen::Vector3d>& vertices, const Plane& plane, const Eigen::Vector3d& origin,
+             std::vector<Point2>& hull) {
   const Eigen::Vector3d seed = std::abs(plane.normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
   const Eigen::Vector3d e1 = plane.normal.cross(seed).normalized(), e2 = plane.normal.cross(e1);
   std::vector<Point2>& crossings = scratch_points;
@@ -58,15 +62,24 @@ void section(const std::vector<Eigen::Vector3d>& vertices, const Plane& plane, s
   s.resize(n);
   for (std::size_t i = 0; i < n; ++i) s[i] = plane.normal.dot(vertices[i] - plane.point);
   auto add = [&](const Eigen::Vector3d& x) {
-    const Eigen::Vector3d d = x - plane.point;
+    const Eigen::Vector3d d = x - origin;
     crossings.emplace_back(e1.dot(d), e2.dot(d));
   };
+  // the corners on either side (a hull piece of the structure has a hundred, of which a
+  // plane near its surface leaves a few on the far side: pairs of these with the rest only)
+  std::vector<int>& above = scratch_above;
+  std::vector<int>& below = scratch_below;
+  above.clear(), below.clear();
   for (std::size_t i = 0; i < n; ++i) {
     if (s[i] == 0.0) add(vertices[i]);
-    for (std::size_t j = i + 1; j < n; ++j)
-      if ((s[i] < 0.0 && s[j] > 0.0) || (s[i] > 0.0 && s[j] < 0.0))
-        add(vertices[i] + (vertices[j] - vertices[i]) * (s[i] / (s[i] - s[j])));
+    if (s[i] > 0.0) above.push_back(static_cast<int>(i));
+    if (s[i] < 0.0) below.push_back(static_cast<int>(i));
   }
+  for (const int k : above)
+    for (const int l : below) {
+      const auto [i, j] = std::minmax(k, l);  // the lower first: the same rounding whichever side it is on
+      add(vertices[i] + (vertices[j] - vertices[i]) * (s[i] / (s[i] - s[j])));
+    }
   convex_hull(crossings, hull);
 }
 
@@ -95,15 +108,21 @@ void clip_convex(const std::vector<Point2>& subject, const std::vector<Point2>& 
 }  // namespace
 
 double section_area(const std::vector<Eigen::Vector3d>& vertices, const Plane& plane) {
-  section(vertices, plane, scratch_hull);
+  section(vertices, plane, plane.point, scratch_hull);
   return area(scratch_hull);
 }
 
 double common_section_area(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b,
                            const Plane& plane) {
-  section(a, plane, scratch_a);
-  section(b, plane, scratch_b);
-  if (scratch_a.size() < 3 || scratch_b.size() < 3) return 0.0;
+  return common_section_area(a, plane, b, plane);
+}
+
+double common_section_area(const std::vector<Eigen::Vector3d>& a, const Plane& plane_a,
+                           const std::vector<Eigen::Vector3d>& b, const Plane& plane_b) {
+  section(a, plane_a, plane_a.point, scratch_a);
+  if (scratch_a.size() < 3) return 0.0;
+  section(b, Plane{plane_b.point, plane_a.normal}, plane_a.point, scratch_b);
+  if (scratch_b.size() < 3) return 0.0;
   clip_convex(scratch_a, scratch_b, scratch_hull);
   return area(scratch_hull);
 }

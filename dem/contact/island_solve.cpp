@@ -19,10 +19,10 @@ IslandSolve::IslandSolve(const SolverSettings& settings)
   }
 }
 
-bool IslandSolve::finishable(const ContactProblem& problem) {
+bool IslandSolve::finishable(const ContactProblem& problem) const {
   return std::all_of(problem.joints.begin(), problem.joints.end(),
                      [](const ProblemJointRow& j) { return j.compliance > 0; }) &&
-         !has_crushing(problem);
+         (takes_crushing(finishing_method_) || !has_crushing(problem));
 }
 
 double IslandSolve::tolerance(const ContactProblem& problem) const {

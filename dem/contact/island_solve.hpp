@@ -77,8 +77,8 @@ class IslandSolve {
  private:
   // whether the second-order methods (the hand-over, the finisher) can take the problem: they
   // fold the joints into the mass matrix, which a rigid joint row (compliance 0) does not
-  // allow, and take no crushing contacts (yet)
-  static bool finishable(const ContactProblem& problem);
+  // allow, and not every one takes crushing contacts (the registry's takes_crushing)
+  bool finishable(const ContactProblem& problem) const;
 
   SolverSettings settings_;
   JointRatio joint_ratio_;

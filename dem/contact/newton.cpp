@@ -6,38 +6,13 @@
 
 
 #include "dem/contact/contact_hessian.hpp"
+#include "dem/contact/projection_jacobian.hpp"
 
 namespace icedem {
 namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
-
-// Where project_on_cone takes x: 0 to the apex, 1 inside the cone (x itself), 2 onto its
-// surface; `tangent` gets |x_T|.
-int cone_region(const Eigen::Vector3d& x, double mu, double& tangent) {
-  tangent = tangential_norm(x(1), x(2));
-  return mu * tangent <= -x(0) ? 0 : tangent <= mu * x(0) ? 1 : 2;
-}
-
-// The derivative of project_on_cone at x (symmetric, its eigenvalues in [0, 1]) in
-// `kind`, the cone_region of x.
-Eigen::Matrix3d cone_projection_jacobian(const Eigen::Vector3d& x, double mu, int& kind) {
-  double tangent;
-  kind = cone_region(x, mu, tangent);
-  if (kind == 0) return Eigen::Matrix3d::Zero();
-  if (kind == 1) return Eigen::Matrix3d::Identity();
-  // onto the surface: P = (a, mu a t), a = (x_N + mu |x_T|) / (1 + mu^2), t = x_T / |x_T|
-  const Eigen::Vector2d t = x.tail<2>() / tangent;
-  const double k = 1.0 / (1.0 + mu * mu), a = k * (x(0) + mu * tangent);
-  Eigen::Matrix3d d;
-  d(0, 0) = k;
-  d.block<1, 2>(0, 1) = k * mu * t.transpose();
-  d.block<2, 1>(1, 0) = k * mu * t;
-  d.block<2, 2>(1, 1) =
-      k * mu * mu * t * t.transpose() + (mu * a / tangent) * (Eigen::Matrix2d::Identity() - t * t.transpose());
-  return d;
-}
 
 // The inner problem's data and its function, gradient and Hessian pieces.
 class InnerProblem {
@@ -48,7 +23,8 @@ class InnerProblem {
         nc_(static_cast<int>(p.contacts.size())),
         // the part of the Hessian that does not change: the mass with the soft joints folded
         // in (throws if a joint row is rigid), and every contact's body blocks
-        hessian_(p, folded_mass_matrix(g_).Mt) {
+        hessian_(p, folded_mass_matrix(g_).Mt),
+        cap_(normal_caps(p)) {
     c_inv_ = g_.compliance.cwiseInverse();
     Jj_t_ = g_.Jj.transpose();
     Jc_ = g_.Jc;
@@ -82,17 +58,18 @@ class InnerProblem {
   void gradient(const Eigen::VectorXd& v, const Eigen::VectorXd& u, const Eigen::VectorXd& rb,
                 const Eigen::VectorXd& s, Eigen::VectorXd& r, Eigen::VectorXd& G) const {
     for (int c = 0; c < nc_; ++c)
-      r.segment<3>(3 * c) = project_on_cone(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c));
+      r.segment<3>(3 * c) = project_on_contact(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), cap_(c));
     G = g_.M * (v - g_.v_free) - Jc_t_ * r;
     if (g_.Jj.rows()) G += Jj_t_ * c_inv_.cwiseProduct(g_.Jj * v + g_.b);
   }
 
-  // where each contact's argument goes under the projection (cone_projection_jacobian's kinds)
+  // where each contact's argument goes under the projection (contact_projection_jacobian's kinds)
   void kinds(const Eigen::VectorXd& rb, const Eigen::VectorXd& u, const Eigen::VectorXd& s,
              std::vector<int>& out) const {
     out.resize(nc_);
     double tangent;
-    for (int c = 0; c < nc_; ++c) out[c] = cone_region(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), tangent);
+    for (int c = 0; c < nc_; ++c)
+      out[c] = contact_region(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), cap_(c), tangent);
   }
 
   // H = Hc + Jc^T diag(dP_c / rho_c) Jc at the current arguments; `kinds` gets where each went
@@ -102,7 +79,7 @@ class InnerProblem {
     kinds.resize(nc_);
     for (int c = 0; c < nc_; ++c) {
       const Eigen::Matrix3d B =
-          cone_projection_jacobian(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), kinds[c]) / rho_(c);
+          contact_projection_jacobian(argument(c, rb, u.segment<3>(3 * c), s), g_.mu(c), cap_(c), kinds[c]) / rho_(c);
       if (kinds[c] != 0) hessian_.add(c, B);
     }
     return hessian_;
@@ -133,7 +110,7 @@ class InnerProblem {
     if (l.jj_d.size()) total += l.jj_d.dot(c_inv_.cwiseProduct(l.jj_v + a * l.jj_d));
     for (int c = 0; c < nc_; ++c) {
       const Eigen::Vector3d uc = l.u.segment<3>(3 * c) + a * l.ud.segment<3>(3 * c);
-      total -= l.ud.segment<3>(3 * c).dot(project_on_cone(argument(c, rb, uc, s), g_.mu(c)));
+      total -= l.ud.segment<3>(3 * c).dot(project_on_contact(argument(c, rb, uc, s), g_.mu(c), cap_(c)));
     }
     return total;
   }
@@ -158,6 +135,7 @@ class InnerProblem {
   Eigen::SparseMatrix<double, Eigen::RowMajor> Jc_;
   std::vector<Matrix6d> inv_mass_;
   ContactHessian hessian_;
+  Eigen::VectorXd cap_;  // each contact's normal cap (normal_caps: infinite where it is rigid)
 };
 
 // The step length a > 0 where phi'(a) = 0 (phi convex: phi' nondecreasing, phi'(0) < 0),
@@ -192,11 +170,11 @@ double exact_line_search(Slope&& slope, double slope0) {
 }  // namespace
 
 SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& options) {
-  refuse_crushing(p, "newton");
   InnerProblem inner(p, settings_.rho_fraction);
   const GlobalForm& g = inner.global();
   const int n = p.dofs(), m = p.contact_rows(), nc = inner.contacts();
-  const Merit merit(options.merit, p, local_q(g), g.mu);
+  Merit merit(options.merit, p, local_q(g), g.mu);
+  if (has_crushing(p)) merit.set_cap(normal_caps(p));
 
   // start: the warm start's impulses and the velocities they give
   Eigen::VectorXd rb = options.warm_start ? contact_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(m));

@@ -23,6 +23,9 @@
 // longer the proximal steps, but the stiffer the inner problem, whose contacts then
 // change state one by one; 1e-3 was the best of 1e-2, 1e-3 and 1e-4 on the problem
 // library (docs/model/contact_problems.md has the measurements and what is still slow).
+// A crushing contact's set is the cone cut at its normal cap (dem/contact/crushing.hpp):
+// K is then that truncated cone, P_K project_on_contact, and dP_K its derivative (the
+// normal held where the cut is reached), the rest unchanged.
 #pragma once
 
 #include "dem/contact/method.hpp"

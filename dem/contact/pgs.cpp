@@ -6,7 +6,8 @@
 // A sweep updates the joint rows, then every contact's normal row, then the
 // friction rows, each against the velocities the rows before it left:
 //   joint row:   dl = -(J v + b + C l) / A
-//   normal row:  dl = -(J v + w) / A,   l >= 0
+//   normal row:  dl = -(J v + w) / A,   0 <= l <= cap (the normal cap of a crushing contact,
+//                dem/contact/crushing.hpp; infinite where it is rigid)
 //   friction:    dl = -(J v + w) / A,   then "pgs_square": each direction in [-mu l_N, mu l_N]
 //                (Bullet's square), "pgs_cone": the pair projected onto |l_T| <= mu l_N
 // with A = J M^-1 J^T the row's effective inverse mass. The iterations stop when
@@ -35,7 +36,6 @@ struct Row {
 }  // namespace
 
 SolverAnswer ProjectedGaussSeidel::solve(const ContactProblem& p, const MethodOptions& options) {
-  refuse_crushing(p, "pgs_square, pgs_cone");
   const int nb = static_cast<int>(p.bodies.size()), nc = static_cast<int>(p.contacts.size()), nj = p.joint_rows();
   std::vector<Eigen::Matrix<double, 6, 6>> inv_mass(nb);
   for (int i = 0; i < nb; ++i) inv_mass[i] = inverse_mass(p.bodies[i]);
@@ -77,7 +77,8 @@ SolverAnswer ProjectedGaussSeidel::solve(const ContactProblem& p, const MethodOp
     for (int c = 0; c < nc; ++c) m(c) = p.contacts[c].mu;
     return m;
   }();
-  const Merit measure(options.merit, p, local_q(global_form(p)), mu);
+  Merit measure(options.merit, p, local_q(global_form(p)), mu);
+  if (has_crushing(p)) measure.set_cap(normal_caps(p));
   auto merit = [&] {
     Eigen::VectorXd u(3 * nc);
     for (int c = 0; c < nc; ++c)
@@ -99,7 +100,7 @@ SolverAnswer ProjectedGaussSeidel::solve(const ContactProblem& p, const MethodOp
     for (int c = 0; c < nc; ++c) {
       const Row& r = rows[3 * c];
       double& ln = l(3 * c);
-      const double next = std::max(0.0, ln - (velocity(r) + p.contacts[c].w(0)) * r.inv_a);
+      const double next = std::clamp(ln - (velocity(r) + p.contacts[c].w(0)) * r.inv_a, 0.0, p.contacts[c].normal_cap);
       apply(r, next - ln);
       ln = next;
     }

@@ -173,6 +173,7 @@ LocalForm local_form(const ContactProblem& p) {
   local.W = 0.5 * (local.W + Eigen::SparseMatrix<double>(local.W.transpose()));
   local.q = JcMinv * folded.ft + g.w;
   local.mu = g.mu;
+  if (has_crushing(p)) local.cap = normal_caps(p);
   return local;
 }
 
@@ -258,7 +259,7 @@ Eigen::VectorXd normal_caps(const ContactProblem& p) {
 
 double natural_map_residual(const LocalForm& local, const Eigen::VectorXd& r) {
   const Eigen::VectorXd u = local.W * r + local.q;
-  return natural_map_residual(r, u, local.mu, local.q.norm());
+  return natural_map_residual(r, u, local.mu, local.q.norm(), local.cap);
 }
 
 }  // namespace icedem

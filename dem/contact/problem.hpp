@@ -143,6 +143,7 @@ Eigen::VectorXd joint_impulses(const ContactProblem& p, const Eigen::VectorXd& r
 struct LocalForm {
   Eigen::SparseMatrix<double> W;  // contact_rows x contact_rows, symmetric
   Eigen::VectorXd q, mu;
+  Eigen::VectorXd cap;  // the contacts' normal caps where some crush (normal_caps), else empty
 };
 LocalForm local_form(const ContactProblem& p);
 

@@ -23,11 +23,11 @@ std::vector<ContactMethodEntry>& registry() {
        "own solver (dem/world/contact_solver.hpp)",
        nullptr, true},
       {"pgs_cone", "projected Gauss-Seidel on the island's problem, friction projected onto Coulomb's disc",
-       maker<ProjectedGaussSeidel>(true), true},
+       maker<ProjectedGaussSeidel>(true), true, true},
       {"newton", "primal Newton on the island's whole problem, joints included (dem/contact/newton.hpp)",
-       maker<PrimalNewton>(), true},
+       maker<PrimalNewton>(), true, true},
       {"apgd", "accelerated projected gradient on the island's problem, as Project Chrono's (dem/contact/apgd.hpp)",
-       maker<AcceleratedProjectedGradient>(), true},
+       maker<AcceleratedProjectedGradient>(), true, true},
       {"ipm",
        "primal-dual interior-point method on the island's whole problem, joints included "
        "(dem/contact/interior_point.hpp)",
@@ -35,7 +35,7 @@ std::vector<ContactMethodEntry>& registry() {
       {"pgs_square",
        "projected Gauss-Seidel on the island's problem, friction clamped per direction as Bullet's rows: the "
        "in-run sweeps' twin on a problem file",
-       maker<ProjectedGaussSeidel>(false), false},
+       maker<ProjectedGaussSeidel>(false), false, true},
   };
   return methods;
 }
@@ -60,6 +60,11 @@ std::vector<std::string> contact_method_names(bool runs_only) {
   for (const ContactMethodEntry& e : registry())
     if (e.in_runs || !runs_only) names.push_back(e.name);
   return names;
+}
+
+bool takes_crushing(const std::string& name) {
+  const ContactMethodEntry* e = find(name);
+  return e && e->takes_crushing;
 }
 
 std::unique_ptr<ContactMethod> make_contact_method(const std::string& name) {

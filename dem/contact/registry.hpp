@@ -22,6 +22,9 @@ struct ContactMethodEntry {
   // makes the method; null for kBulletSweeps, which the world's contact solver runs itself
   std::function<std::unique_ptr<ContactMethod>()> make;
   bool in_runs = false;  // a choice of solver.method; else the benchmark's and the tests' only
+  // solves crushing contacts (a normal bounded by its cap, dem/contact/crushing.hpp); the others
+  // throw on them (refuse_crushing)
+  bool takes_crushing = false;
 };
 
 /// Every method, the ones of runs first. Siconos numerics' methods are added by the benchmark
@@ -33,6 +36,10 @@ void register_contact_method(ContactMethodEntry entry);
 
 /// The names of the methods (all, or the choices of solver.method).
 std::vector<std::string> contact_method_names(bool runs_only = false);
+
+/// Whether the method `name` takes crushing contacts (false for an unknown name and for
+/// kBulletSweeps).
+bool takes_crushing(const std::string& name);
 
 /// The method `name` makes. Throws std::invalid_argument for an unknown name or for
 /// kBulletSweeps (not a method on the problem).

@@ -254,7 +254,7 @@ std::vector<KeySpec> make_keys() {
                      "how the ice's contacts bear load: \"rigid\", a contact that does not yield (the "
                      "paper's); \"crushing\", the ice crushes at the contact at ice.compressive_strength over "
                      "a nominal contact area that grows with the overlap (Daley's pressure-area), so that an "
-                     "impact lasts a finite time (dem/contact/crushing.hpp; needs solver.method = \"apgd\")"));
+                     "impact lasts a finite time (dem/contact/crushing.hpp; needs solver.method = \"apgd\", \"newton\" or \"pgs_cone\")"));
   k.push_back(real("contact.pressure_area_exponent", "-", 0.0, -0.9, 0.0,
                    "contact.model = \"crushing\": ex in the crushing pressure sigma_c (A / h^2)^ex over the "
                    "nominal contact area A (Daley's pressure-area relation; 0: a constant pressure, the "

@@ -237,10 +237,10 @@ Scene make_scene(const Scenario& sc) {
              "ice.contact_crushing caps the contact rows of the Gauss-Seidel sweeps; solver.method = \"" +
                  s.solver.method + "\" has no such cap: use solver.method = \"pgs\" with it");
   if (s.contact.model == ContactModel::kCrushing) {
-    if (s.solver.method != "apgd")
+    if (!takes_crushing(s.solver.method))
       fail_key(sc, blamed(sc, {"solver.method", "contact.model"}),
-               "contact.model = \"crushing\" is solved by the accelerated projected gradient alone; solver.method = \"" +
-                   s.solver.method + "\" does not take its contacts: use solver.method = \"apgd\"");
+               "contact.model = \"crushing\" bounds each contact's normal force, which solver.method = \"" +
+                   s.solver.method + "\" does not take: use \"apgd\", \"newton\" or \"pgs_cone\"");
     if (!s.solver.split_impulse)
       fail_key(sc, blamed(sc, {"solver.split_impulse", "contact.model"}),
                "contact.model = \"crushing\" needs solver.split_impulse = true: without it Bullet pushes the "

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btPolyhedralConvexShape.h>
 
 #include "dem/contact/contact_area.hpp"
@@ -14,18 +16,28 @@ namespace {
 
 bool is_ice(const btCollisionObject& body) { return body.getUserIndex() == kIce; }
 
-// the corners of a body's shape in the tank frame, into `out` (ice bodies are boxes or convex
-// hulls: dem/world/floe_shape.cpp)
-void corners(const btCollisionObject& body, std::vector<Eigen::Vector3d>& out) {
+// the corners of a convex shape at `pose` in the tank frame, into `out` (ice bodies are boxes
+// or convex hulls: dem/world/floe_shape.cpp; the structure's pieces convex hulls, the
+// boundaries boxes); none if the shape is not polyhedral
+void corners(const btCollisionShape* any, const btTransform& pose, std::vector<Eigen::Vector3d>& out) {
   out.clear();
-  const auto* shape = dynamic_cast<const btPolyhedralConvexShape*>(body.getCollisionShape());
+  const auto* shape = dynamic_cast<const btPolyhedralConvexShape*>(any);
   if (!shape) return;
-  const btTransform& pose = body.getWorldTransform();
   for (int i = 0; i < shape->getNumVertices(); ++i) {
     btVector3 v;
     shape->getVertex(i, v);
     out.push_back(to_eigen(pose * v));
   }
+}
+
+void corners(const btCollisionObject& body, std::vector<Eigen::Vector3d>& out) {
+  corners(body.getCollisionShape(), body.getWorldTransform(), out);
+}
+
+// how far Bullet's surface of a convex piece lies beyond its corners' hull: a convex hull's
+// margin (it is grown by it), none for a box (its corners include it)
+double margin_beyond_corners(const btCollisionShape& shape) {
+  return dynamic_cast<const btBoxShape*>(&shape) ? 0.0 : shape.getMargin();
 }
 
 // the two bodies' corners, kept from one manifold to the next rather than allocated for each
@@ -45,11 +57,36 @@ double nominal_area(const btCollisionObject& a, const btCollisionObject& b, cons
     return std::max(common_section_area(corners_a, corners_b, Plane{to_eigen(p.getPositionWorldOnA()), n}),
                     common_section_area(corners_a, corners_b, Plane{to_eigen(p.getPositionWorldOnB()), n}));
   }
-  // one body is ice: its section by the other's surface
+  // one body is ice: its section by the other's surface plane, where it lies over the other's
+  // section by the parallel plane through the ice's deepest point. On a flat face (a wall, a
+  // fixed box) that is the whole section; on the cone's facets, whose surface turns away
+  // around the hull, a straight edge laid on a facet crushes over the band of the hull within
+  // the penetration, not along its whole length
   const bool a_ice = is_ice(a);
+  const btCollisionObject& other = a_ice ? b : a;
   const Eigen::Vector3d surface = to_eigen(a_ice ? p.getPositionWorldOnB() : p.getPositionWorldOnA());
+  const Eigen::Vector3d deepest = to_eigen(a_ice ? p.getPositionWorldOnA() : p.getPositionWorldOnB());
+  const Eigen::Vector3d outward = a_ice ? n : Eigen::Vector3d(-n);  // out of the other body
   corners(a_ice ? a : b, corners_a);
-  return section_area(corners_a, Plane{surface, a_ice ? n : Eigen::Vector3d(-n)});
+  const Plane at_surface{surface, n};
+  // over one convex piece of the other body: its section as deep below its corners' hull as
+  // the ice is below its surface
+  const auto over_piece = [&](const btCollisionShape& shape, const btTransform& pose) {
+    corners(&shape, pose, corners_b);
+    if (corners_b.empty()) return section_area(corners_a, at_surface);  // no corners: its face taken as flat
+    return common_section_area(corners_a, at_surface, corners_b,
+                               Plane{deepest - margin_beyond_corners(shape) * outward, n});
+  };
+  // the structure's hull is a compound of convex pieces, one per segment of its profile
+  // (dem/world/cone_geometry.hpp), that share only their seams: the ice at the waterline seam
+  // lies over two of them, and their sections do not overlap
+  if (const auto* compound = dynamic_cast<const btCompoundShape*>(other.getCollisionShape())) {
+    double area = 0.0;
+    for (int i = 0; i < compound->getNumChildShapes(); ++i)
+      area += over_piece(*compound->getChildShape(i), other.getWorldTransform() * compound->getChildTransform(i));
+    return area;
+  }
+  return over_piece(*other.getCollisionShape(), other.getWorldTransform());
 }
 
 }  // namespace

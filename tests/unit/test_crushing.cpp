@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -11,6 +13,8 @@
 #include "dem/contact/contact_area.hpp"
 #include "dem/contact/crushing.hpp"
 #include "dem/contact/problem.hpp"
+#include "dem/contact/projection_jacobian.hpp"
+#include "dem/world/cone_geometry.hpp"
 #include "tests/support/boost_section.hpp"
 
 using namespace icedem;
@@ -159,5 +163,61 @@ TEST(CrushingLaw, ProjectionOntoTheCutConeIsTheNearestPoint) {
     }
     EXPECT_LE((x - p).norm(), nearest + 1e-12) << "x = " << x.transpose();
     EXPECT_NEAR((x - p).norm(), nearest, 0.01) << "x = " << x.transpose() << ": the grid's spacing";
+  }
+}
+
+// The Newton method's Hessian takes each contact's projection derivative
+// (dem/contact/projection_jacobian.hpp): against central differences of project_on_contact in
+// each of its five regions (apex, inside, the cone's surface, the cut's disc, its rim), away
+// from the regions' borders where it is not differentiable. 1e-6: the differences' truncation
+// error at a step of 1e-6 on a surface whose curvature is of order 1
+TEST(CrushingLaw, ProjectionDerivativeIsTheProjectionsInEachRegion) {
+  const double mu = 0.3, cap = 1.0;
+  const std::vector<std::pair<Eigen::Vector3d, int>> points = {
+      {{-1.0, 0.1, 0.05}, 0}, {{0.5, 0.1, -0.05}, 1}, {{0.5, 0.4, -0.2}, 2},
+      {{2.0, 0.1, 0.05}, 3},  {{1.5, 0.9, -0.6}, 4},  {{0.3, 0.6, 0.2}, 2}};
+  for (const auto& [x, region] : points) {
+    int kind = -1;
+    const Eigen::Matrix3d d = contact_projection_jacobian(x, mu, cap, kind);
+    EXPECT_EQ(kind, region) << "x = " << x.transpose();
+    const double step = 1e-6;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d e = Eigen::Vector3d::Unit(k) * step;
+      const Eigen::Vector3d column = (project_on_contact(x + e, mu, cap) - project_on_contact(x - e, mu, cap)) / (2 * step);
+      EXPECT_LT((d.col(k) - column).norm(), 1e-6) << "x = " << x.transpose() << ", column " << k;
+    }
+    // and a rigid contact (cap infinite) is the cone's: the cut never reached
+    double tangent = 0.0;
+    EXPECT_LE(contact_region(x, mu, std::numeric_limits<double>::infinity(), tangent), 2);
+  }
+}
+
+// Ice pressed into a curved hull crushes over the overlap seen along the contact normal, not
+// over its whole section by the tangent plane: a floe's straight side laid flat on a facet of
+// a faceted vertical cylinder (the structure's hull pieces, dem/world/cone_geometry.hpp, 48
+// facets of the paper's waterline radius) and pressed delta into it overlaps the hull over
+// the facet's chord plus, on either side, the strip where the plane delta deep cuts the
+// neighbouring facets, delta / tan(2 pi / 48) wide: (chord + 2 delta / tan(2 pi / 48)) h,
+// exactly while that strip stays on the neighbours (delta < 5 mm), against 0.6 h for the
+// tangent plane's section (the area before 2026-11-29, 7 times larger)
+TEST(ContactArea, AStraightSideOnTheFacetedHullCrushesOverTheFacetsWidth) {
+  const int segments = 48;
+  const double radius = 0.614, side = 0.6;
+  const std::vector<ProfileStation> profile = {{-0.1, radius}, {0.1, radius}};
+  const std::vector<Eigen::Vector3d> hull = hull_pieces(profile, segments).front();
+  // the facet between the first two vertices (on +x and 7.5 degrees on): its outward normal and
+  // the distance of its plane from the axis
+  const double half_angle = M_PI / segments, vertex_radius = equal_area_vertex_radius(radius, segments);
+  const Eigen::Vector3d normal(std::cos(half_angle), 0.0, std::sin(half_angle));
+  const double apothem = vertex_radius * std::cos(half_angle), chord = 2 * vertex_radius * std::sin(half_angle);
+  for (double delta : {0.5e-3, 2e-3, 4e-3}) {
+    // the floe level at the waterline, its side parallel to the facet, delta inside it
+    const double yaw = -half_angle;  // turns the floe's +x side onto the facet's normal
+    const Eigen::Vector3d centre = normal * (apothem + side / 2 - delta);
+    const std::vector<Eigen::Vector3d> floe = box({side / 2, kThickness / 2, side / 2}, yaw, centre);
+    const Plane surface{normal * apothem, normal}, deepest{normal * (apothem - delta), normal};
+    const double expected = (chord + 2 * delta / std::tan(2 * half_angle)) * kThickness;
+    EXPECT_NEAR(common_section_area(floe, surface, hull, deepest), expected, 1e-9) << "delta " << delta;
+    EXPECT_NEAR(section_area(floe, surface), side * kThickness, 1e-9);
   }
 }
