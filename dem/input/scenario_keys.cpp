@@ -255,6 +255,12 @@ std::vector<KeySpec> make_keys() {
                      "paper's); \"crushing\", the ice crushes at the contact at ice.compressive_strength over "
                      "a nominal contact area that grows with the overlap (Daley's pressure-area), so that an "
                      "impact lasts a finite time (dem/contact/crushing.hpp; needs solver.method = \"apgd\", \"newton\" or \"pgs_cone\")"));
+  k.push_back(choice("contact.crushing_contacts", "structure", {"structure", "all"},
+                     "contact.model = \"crushing\": which contacts of ice crush: \"structure\", the ice "
+                     "against the structure, those between floes and with the boundaries rigid; \"all\", "
+                     "every contact of ice. In a locked pack the contacts between floes crush on and their "
+                     "overlap passes the ice's thickness, where it no longer stands for crushed ice: the "
+                     "floes pass through each other (docs/model/crushing.md, \"Between floes\")"));
   k.push_back(real("contact.pressure_area_exponent", "-", 0.0, -0.9, 0.0,
                    "contact.model = \"crushing\": ex in the crushing pressure sigma_c (A / h^2)^ex over the "
                    "nominal contact area A (Daley's pressure-area relation; 0: a constant pressure, the "

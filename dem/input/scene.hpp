@@ -86,9 +86,12 @@ struct LayoutSettings {
 
 // How the ice's contacts bear load (dem/contact/crushing.hpp)
 enum class ContactModel { kRigid, kCrushing };
+// which contacts of ice crush with ContactModel::kCrushing: those with the structure, or every one
+enum class CrushingContacts { kStructure, kAll };
 struct ContactSettings {
   ContactModel model;
   double pressure_area_exponent;  // -, ex in p = sigma_c (A / h^2)^ex
+  CrushingContacts crushing_contacts;
 };
 
 // Coulomb coefficients: kinetic, and static for contacts that stick (dem/world/static_friction.hpp)

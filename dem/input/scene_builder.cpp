@@ -228,6 +228,8 @@ Scene make_scene(const Scenario& sc) {
   s.contact.model = choice<ContactModel>(sc, "contact.model",
                                         {{"rigid", ContactModel::kRigid}, {"crushing", ContactModel::kCrushing}});
   s.contact.pressure_area_exponent = real(sc, "contact.pressure_area_exponent");
+  s.contact.crushing_contacts = choice<CrushingContacts>(
+      sc, "contact.crushing_contacts", {{"structure", CrushingContacts::kStructure}, {"all", CrushingContacts::kAll}});
   if (s.contact.model == ContactModel::kCrushing && s.ice.contact_crushing)
     fail_key(sc, blamed(sc, {"ice.contact_crushing", "contact.model"}),
              "ice.contact_crushing (a fixed cap) and contact.model = \"crushing\" (the crushing law) are two "

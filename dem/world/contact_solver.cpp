@@ -111,7 +111,7 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
     // crushed ice, stays (no split-impulse push apart)
     if (law_.crushing) {
       normal_caps_.resize(end, std::numeric_limits<double>::infinity());
-      if (const auto cap = crushing_cap(manifold, *law_.crushing, info.m_timeStep))
+      if (const auto cap = crushing_cap(manifold, *law_.crushing, info.m_timeStep, !law_.crushing_everywhere))
         for (int r = first; r < end; ++r) {
           normal_caps_[r] = *cap;
           m_tmpSolverContactConstraintPool[r].m_rhsPenetration = 0;

@@ -91,6 +91,9 @@ class ProblemObserver {
 struct ContactLaw {
   double crushing_force = 0.0;          // N, largest normal force of one contact pair (ice.contact_crushing); 0: none
   std::optional<CrushingLaw> crushing;  // contact.model = "crushing" (dem/contact/crushing.hpp); none: rigid
+  // the crushing law on every contact of ice (contact.crushing_contacts = "all"); else on those
+  // with the structure only, the others rigid
+  bool crushing_everywhere = false;
   StaticFriction static_friction;       // static coefficients of sticking contacts (none by default)
 };
 

@@ -91,11 +91,13 @@ double nominal_area(const btCollisionObject& a, const btCollisionObject& b, cons
 
 }  // namespace
 
-std::optional<double> crushing_cap(const btPersistentManifold& manifold, const CrushingLaw& law, double h) {
+std::optional<double> crushing_cap(const btPersistentManifold& manifold, const CrushingLaw& law, double h,
+                                   bool structure_only) {
   const btCollisionObject& a = *manifold.getBody0();
   const btCollisionObject& b = *manifold.getBody1();
   const int n = manifold.getNumContacts();
   if (n == 0 || (!is_ice(a) && !is_ice(b))) return std::nullopt;
+  if (structure_only && a.getUserIndex() != kStructure && b.getUserIndex() != kStructure) return std::nullopt;
   // the deepest point stands for the manifold (Bullet's points of one face lie on one plane)
   int deepest = 0;
   for (int i = 1; i < n; ++i)

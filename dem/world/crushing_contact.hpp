@@ -22,8 +22,9 @@
 namespace icedem {
 
 /// The largest normal impulse (N s) of each of the manifold's points over the step `h` (s), or
-/// none if neither body is ice (world.hpp's Material kIce in the user index) or the manifold
-/// has no point.
-std::optional<double> crushing_cap(const btPersistentManifold& manifold, const CrushingLaw& law, double h);
+/// none (a rigid contact) if neither body is ice (world.hpp's Material kIce in the user index),
+/// if `structure_only` and neither is the structure (kStructure), or if the manifold has no point.
+std::optional<double> crushing_cap(const btPersistentManifold& manifold, const CrushingLaw& law, double h,
+                                   bool structure_only);
 
 }  // namespace icedem

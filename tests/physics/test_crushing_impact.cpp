@@ -59,6 +59,7 @@ Impact impact(double side, double h, double heave_factor, bool crushing, bool ic
   s.method_iterations = 20000;
   ContactLaw law;
   if (crushing) law.crushing = CrushingLaw{kStrength, 0.0, kThickness * kThickness};
+  law.crushing_everywhere = ice_edge;  // ice on ice crushes with contact.crushing_contacts = "all"
   Bench bench(std::make_unique<ContactSolver>(s, law));
   bench.world().setGravity(btVector3(0, 0, 0));
   // the face: a large fixed block whose face through the origin has the normal n (toward -x, up),

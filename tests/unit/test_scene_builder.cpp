@@ -36,6 +36,7 @@ std::string chosen(const Scene& s, const std::string& key) {
   if (key == "fracture.tiling") return std::to_string(static_cast<int>(s.fracture.tiling));
   if (key == "ice.cover") return std::to_string(static_cast<int>(s.ice.cover));
   if (key == "contact.model") return std::to_string(static_cast<int>(s.contact.model));
+  if (key == "contact.crushing_contacts") return std::to_string(static_cast<int>(s.contact.crushing_contacts));
   return "";  // a choice key this test does not know: it fails below
 }
 
