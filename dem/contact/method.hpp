@@ -35,7 +35,8 @@ class ContactMethod {
 inline void refuse_crushing(const ContactProblem& problem, const std::string& method) {
   if (has_crushing(problem))
     throw std::invalid_argument("the contact method \"" + method +
-                                "\" does not take crushing contacts (contact.model = \"crushing\"): \"apgd\" does");
+                                "\" does not take crushing contacts (contact.model = \"crushing\"): \"apgd\", "
+                                "\"newton\" and \"pgs_cone\" do");
 }
 
 }  // namespace icedem

@@ -110,3 +110,18 @@ TEST_P(ContactInteriorPointRun, ReachesTheReferenceOnAJamOfThePaperRun) {
 
 INSTANTIATE_TEST_SUITE_P(Jams, ContactInteriorPointRun,
                          ::testing::Values("small_floes_t052.9.hdf5", "small_floes_t124.5.hdf5"));
+
+// The interior-point method does not take a crushing contact's bound (docs/model/crushing.md):
+// asked to solve a problem with one, it refuses by name rather than solve a rigid problem in
+// its place, and the message names the methods that take it
+TEST(ContactInteriorPoint, RefusesCrushingContactsByName) {
+  const ContactProblem p = read_problem_file(contact_data_file("crushing_large_floes_t110.02.hdf5")).problem;
+  ASSERT_TRUE(has_crushing(p));
+  try {
+    solve_with("ipm", p, 1e-6, 100);
+    ADD_FAILURE() << "the interior-point method solved a crushing problem";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("\"ipm\""), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("newton"), std::string::npos) << e.what();
+  }
+}
