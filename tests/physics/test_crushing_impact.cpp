@@ -51,15 +51,17 @@ struct Impact {
 // a square floe of side `side`, its corner along +x, driven at kSpeed along the normal of a fixed
 // 45-degree face at step h; `heave_factor`: its response to a vertical force over its mass's
 // (1: no added mass); crushing or rigid contacts
-// `ice_edge`: the face is instead the straight vertical edge of a fixed floe (ice against ice)
-Impact impact(double side, double h, double heave_factor, bool crushing, bool ice_edge = false) {
+// `ice_edge`: the face is instead the straight vertical edge of a fixed floe (ice against ice);
+// `between_floes`: the law there too (contact.crushing_contacts = "all"), else only at the structure
+Impact impact(double side, double h, double heave_factor, bool crushing, bool ice_edge = false,
+              bool between_floes = true) {
   SolverSettings s = test_solver_settings();
   s.method = "apgd";
   s.merit_tolerance = s.joint_merit_tolerance = s.structure_merit_tolerance = 1e-9;
   s.method_iterations = 20000;
   ContactLaw law;
   if (crushing) law.crushing = CrushingLaw{kStrength, 0.0, kThickness * kThickness};
-  law.crushing_everywhere = ice_edge;  // ice on ice crushes with contact.crushing_contacts = "all"
+  law.crushing_everywhere = between_floes;
   Bench bench(std::make_unique<ContactSolver>(s, law));
   bench.world().setGravity(btVector3(0, 0, 0));
   // the face: a large fixed block whose face through the origin has the normal n (toward -x, up),
@@ -177,4 +179,17 @@ TEST(CrushingImpactOnIce, ACornerIntoAStraightEdgeCrushesTheCorner) {
   EXPECT_NEAR(quarter.peak_force, balance, 0.10 * balance);
   EXPECT_NEAR(half.peak_force, quarter.peak_force, 0.05 * quarter.peak_force);
   EXPECT_LT(std::abs(half.rebound), 1e-3 * kSpeed) << "a crushed contact does not push the floe back";
+}
+
+// With the crushing law at the structure only (contact.crushing_contacts = "structure", the
+// default), two floes meet as rigid contacts: the corner driven into the fixed floe's edge gives
+// the rigid contact's peak to the bit (the same rows, unbounded), the floe's momentum over the
+// step, well above the crushing balance of the test above
+TEST(CrushingImpactOnIce, WithCrushingAtTheStructureOnlyFloesMeetRigidly) {
+  const Impact rigid = impact(0.6, 0.02, 1.0, false, true);
+  const Impact at_structure = impact(0.6, 0.02, 1.0, true, true, false);
+  std::printf("0.6 m floe's corner on a floe's edge at dt: rigid %.2f N, crushing at the structure only %.2f N\n",
+              rigid.peak_force, at_structure.peak_force);
+  EXPECT_DOUBLE_EQ(at_structure.peak_force, rigid.peak_force);
+  EXPECT_GT(rigid.peak_force, 1.5 * 22.81);
 }
