@@ -254,7 +254,8 @@ std::vector<KeySpec> make_keys() {
                      "how the ice's contacts bear load: \"rigid\", a contact that does not yield (the "
                      "paper's); \"crushing\", the ice crushes at the contact at ice.compressive_strength over "
                      "a nominal contact area that grows with the overlap (Daley's pressure-area), so that an "
-                     "impact lasts a finite time (dem/contact/crushing.hpp; needs solver.method = \"apgd\", \"newton\" or \"pgs_cone\")"));
+                     "impact lasts a finite time (dem/contact/crushing.hpp; needs solver.method = \"apgd\", "
+                     "\"newton\" or \"pgs_cone\")"));
   k.push_back(choice("contact.crushing_contacts", "structure", {"structure", "all"},
                      "contact.model = \"crushing\": which contacts of ice crush: \"structure\", the ice "
                      "against the structure, those between floes and with the boundaries rigid; \"all\", "

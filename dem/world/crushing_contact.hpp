@@ -2,10 +2,12 @@
 // the nominal contact area of a manifold from the shapes of its two bodies and the
 // plane of the contact.
 //
-//  - Ice against a body that does not crush (the structure, a wall): the section of the
-//    ice by the other body's surface, the plane through Bullet's point on that body with
-//    the contact's normal (Daley's nominal area; the structure's facet there, so a
-//    curved hull counts as its facets).
+//  - Ice against a body that does not crush (the structure, a wall): the overlap seen
+//    along the contact's normal (Daley's nominal area): the ice's section by the other
+//    body's surface (the plane through Bullet's point on that body with the contact's
+//    normal: the structure's facet there) where it lies over the other body's section by
+//    the parallel plane through the ice's deepest point (on the faceted cone, the band of
+//    the hull within the penetration; the structure's convex pieces summed).
 //  - Ice against ice: the one of smaller section crushes (a corner pressed into a straight
 //    edge); the larger of the areas the two pieces' sections share on the planes of the two
 //    bodies' surfaces.
