@@ -229,7 +229,6 @@ class DualProblem {
       merit_.emplace(merit_kind, p, local_q(global_form(p)), mu_);
     else
       merit_.emplace(merit_kind, p, rows_free_.head(3 * nc_), mu_);
-    if (caps_.size()) merit_->set_cap(caps_);
   }
 
   bool folded() const { return folded_; }

@@ -28,7 +28,6 @@
 #pragma once
 
 #include <string>
-#include <utility>
 
 #include <Eigen/Core>
 
@@ -55,15 +54,14 @@ class Merit {
   Merit(MeritKind kind, const Eigen::Ref<const Eigen::VectorXd>& q, Eigen::VectorXd masses, const Eigen::VectorXd& mu,
         double dt);
   /// The merit of problem p's contacts: the masses computed only where the kind uses them
-  /// (every island of every step builds one).
+  /// (every island of every step builds one), each crushing contact's normal bounded by its cap
+  /// (normal_caps: the set of a crushing contact, dem/contact/crushing.hpp).
   Merit(MeritKind kind, const ContactProblem& p, const Eigen::Ref<const Eigen::VectorXd>& q, const Eigen::VectorXd& mu)
-      : Merit(kind, q, kind == MeritKind::kImpulse ? contact_masses(p) : Eigen::VectorXd(), mu, p.dt) {}
+      : Merit(kind, q, kind == MeritKind::kImpulse ? contact_masses(p) : Eigen::VectorXd(), mu, p.dt) {
+    if (has_crushing(p)) cap_ = normal_caps(p);
+  }
 
   MeritKind kind() const { return kind_; }
-
-  /// Bound each contact's normal impulse by `cap` (normal_caps) in the natural map: the set of
-  /// a crushing contact (dem/contact/crushing.hpp).
-  void set_cap(Eigen::VectorXd cap) { cap_ = std::move(cap); }
 
   /// The merit of contact impulses r with contact velocities u (3 per contact).
   double operator()(const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& u) const {

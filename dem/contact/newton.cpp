@@ -173,8 +173,7 @@ SolverAnswer PrimalNewton::solve(const ContactProblem& p, const MethodOptions& o
   InnerProblem inner(p, settings_.rho_fraction);
   const GlobalForm& g = inner.global();
   const int n = p.dofs(), m = p.contact_rows(), nc = inner.contacts();
-  Merit merit(options.merit, p, local_q(g), g.mu);
-  if (has_crushing(p)) merit.set_cap(normal_caps(p));
+  const Merit merit(options.merit, p, local_q(g), g.mu);
 
   // start: the warm start's impulses and the velocities they give
   Eigen::VectorXd rb = options.warm_start ? contact_guess(p) : Eigen::VectorXd(Eigen::VectorXd::Zero(m));

@@ -77,8 +77,7 @@ SolverAnswer ProjectedGaussSeidel::solve(const ContactProblem& p, const MethodOp
     for (int c = 0; c < nc; ++c) m(c) = p.contacts[c].mu;
     return m;
   }();
-  Merit measure(options.merit, p, local_q(global_form(p)), mu);
-  if (has_crushing(p)) measure.set_cap(normal_caps(p));
+  const Merit measure(options.merit, p, local_q(global_form(p)), mu);
   auto merit = [&] {
     Eigen::VectorXd u(3 * nc);
     for (int c = 0; c < nc; ++c)

@@ -32,8 +32,8 @@ double ContactSolver::remaining_error(double change, double previous_change, int
 ContactSolver::ContactSolver(const SolverSettings& settings, const ContactLaw& law)
     : settings_(settings), law_(law), island_(settings) {
   if (law_.crushing && !island_.solves())
-    throw std::invalid_argument("the crushing contact law needs a contact method (solver.method = \"apgd\"): the "
-                                "sweeps over Bullet's rows do not take it");
+    throw std::invalid_argument("the crushing contact law needs a contact method that takes it (solver.method = "
+                                "\"apgd\", \"newton\" or \"pgs_cone\"): the sweeps over Bullet's rows do not");
 }
 
 // A manifold's place in the canonical order: the pair of bodies it joins (their user index 2:
