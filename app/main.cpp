@@ -1,7 +1,7 @@
 // The `icedem` command (docs/user/commands.md):
-//   icedem run SCENARIO.toml [-o OUT.h5] [--set key.path=value ...] [--summary-json FILE]
+//   icedem run SCENARIO.toml [-o OUT.h5] [--set key.path=value ...] [--summary-json FILE] [--restart]
 //   icedem resume OUT.h5 [--summary-json FILE]  continue a killed run from its checkpoint
-//   icedem info OUT.h5                          complete, killed or resumable
+//   icedem info OUT.h5                          complete, killed, torn or resumable (or OUT.h5.checkpoint)
 //   icedem check SCENARIO.toml [--set ...]     validate only
 //   icedem keys                                 every scenario key (markdown)
 //   icedem schema                               every output: datasets, attributes, summary keys
@@ -38,6 +38,7 @@
 #include "dem/output/lock.hpp"
 #include "dem/output/output_guard.hpp"
 #include "dem/output/recorder.hpp"
+#include "dem/output/run_files.hpp"
 #include "dem/output/schema.hpp"
 #include "dem/run/simulation.hpp"
 #include "dem/step/initial_state.hpp"
@@ -111,48 +112,65 @@ int finish_run(const RunSummary& summary, const std::string& summary_path, const
 }
 
 int run_command(const std::string& scenario_path, std::string output, const std::vector<std::string>& sets,
-                const std::string& summary_path, bool quiet, const std::string& command_line,
+                const std::string& summary_path, bool quiet, bool restart, const std::string& command_line,
                 const ProblemExportSettings& problems) {
   const Scene scene = load_scene(scenario_path, sets);
+  const std::string option = output.empty() ? "the output" : "-o";
   if (output.empty()) output = std::filesystem::path(scenario_path).stem().string() + ".h5";
-  guard_outputs(given({{"-o", output, OutputKind::kRun, true}, {"--summary-json", summary_path, OutputKind::kFile}}),
-                {scenario_path, scene.layout.file});
+  // a killed run's output is continued by resume; starting it over loses its progress, so only
+  // on request (a finished or failed run's output is replaced, as a re-run is meant to)
+  const RunFiles before = look_at_run(output);
+  if (before.resumable() && !restart)
+    throw InputError(fmt::format(
+        "{} {}: a killed run's output ({}), resumable from its checkpoint {}: `icedem resume {}` continues it; "
+        "`icedem run ... --restart` starts it over and replaces both",
+        option, output,
+        before.damaged() ? "torn"
+                         : before.meta ? fmt::format("status {}, to t = {:.2f} s", before.meta->status, before.meta->last_time)
+                                       : "lost",
+        before.checkpoint, output));
+  const bool torn = restart && before.checkpoint_exists && before.damaged();
+  guard_outputs(
+      given({{option, output, OutputKind::kRun, true, torn}, {"--summary-json", summary_path, OutputKind::kFile}}),
+      {scenario_path, scene.layout.file});
   const OutputLock lock(output);  // one run per output file
+  if (torn) std::cerr << fmt::format("{}: torn; kept as {}\n", output, keep_aside(output));
   RunOptions options{output, !quiet, command_line, openfoam_coupling(), problems};
   const RunSummary summary = run_simulation(scene, options);
   return finish_run(summary, summary_path, problems);
 }
 
 // Continue a killed or interrupted run from its checkpoint (dem/output/checkpoint.hpp): the output
-// becomes the checkpoint's copy of it, and the run appends to it from there.
+// becomes the checkpoint's copy of it, and the run appends to it from there. An output torn or
+// lost by the kill is rebuilt from the checkpoint (a torn one kept aside first: run_files.hpp).
 int resume_command(const std::string& output, const std::string& summary_path, bool quiet,
                    const std::string& command_line, const ProblemExportSettings& problems) {
-  const std::string saved = checkpoint_path(output);
-  if (!std::filesystem::exists(output) && !std::filesystem::exists(saved))
+  const RunFiles files = look_at_run(output);
+  const std::string& saved = files.checkpoint;
+  if (!std::filesystem::exists(output) && !files.checkpoint_exists)
     throw InputError(fmt::format("{}: no such output file, and no checkpoint of it ({})", output, saved));
-  // a finished run is never touched; a file torn by the kill (or lost) is replaced by the
-  // checkpoint's copy
-  std::optional<OutputMeta> meta;
-  try {
-    if (std::filesystem::exists(output)) meta = read_output_meta(output);
-  } catch (const InputError&) {
-    if (!std::filesystem::exists(saved)) throw;
-  }
-  if (meta && meta->status == "complete")
+  // a finished run is never touched
+  if (files.meta && files.meta->status == "complete")
     throw InputError(fmt::format("{}: the run is complete (status complete): nothing to resume", output));
-  if (!std::filesystem::exists(saved))
+  if (!files.checkpoint_exists) {
+    if (files.damaged()) throw InputError(files.damage + "; and it has no checkpoint to rebuild it from");
     throw InputError(fmt::format("{}: no checkpoint ({}): the run stopped before its first checkpoint "
                                  "(output.checkpoint_interval) or does not write them; run it again",
                                  output, saved));
-  const Checkpoint checkpoint = read_checkpoint(saved);
+  }
+  const Checkpoint checkpoint = read_checkpoint(saved);  // refused (damaged, changed): nothing is touched
   const OutputMeta origin = read_output_meta(saved);
   const std::filesystem::path base = std::filesystem::path(origin.scenario_path).parent_path();
   // the scenario as the checkpoint stores it (resolved: its lines are not the original file's)
   Scene scene = make_scene(parse_scenario(origin.scenario_text, saved + ":/meta/scenario", base.string(), {}));
   scene.source_path = origin.scenario_path;
-  guard_outputs(given({{"the output", output, OutputKind::kRun}, {"--summary-json", summary_path, OutputKind::kFile}}),
+  guard_outputs(given({{"the output", output, OutputKind::kRun, false, files.damaged()},
+                       {"--summary-json", summary_path, OutputKind::kFile}}),
                 {saved, origin.scenario_path, scene.layout.file});
   const OutputLock lock(output);  // one run per output file
+  if (files.damaged())
+    std::cerr << fmt::format("{}: torn ({}); kept as {}, and rebuilt from its checkpoint\n", output, files.damage,
+                             keep_aside(output));
   // the output as it stood at the checkpoint, copied into the locked file itself (a rename
   // would put an unlocked file in its place); a kill during the copy leaves the checkpoint whole
   std::filesystem::copy_file(saved, output, std::filesystem::copy_options::overwrite_existing);
@@ -163,27 +181,58 @@ int resume_command(const std::string& output, const std::string& summary_path, b
   return finish_run(summary, summary_path, problems);
 }
 
+// Whether the checkpoint `saved` can be resumed: its time, or why it is refused.
+struct CheckpointVerdict {
+  std::optional<double> time;  // s, where a resume starts
+  std::string refused;         // why not (changed or damaged since it was written)
+};
+CheckpointVerdict verdict_of(const std::string& saved) {
+  CheckpointVerdict v;
+  try {
+    v.time = read_checkpoint(saved).values.time;
+  } catch (const InputError& e) {
+    v.refused = e.what();
+  }
+  return v;
+}
+
+// `icedem info` on a checkpoint file named as checkpoints are: what it holds and how to resume it.
+int checkpoint_info(const std::string& saved, const std::string& output) {
+  const OutputMeta meta = read_output_meta(saved);
+  std::cout << fmt::format("{}: the checkpoint of {}: {} steps recorded, to t = {:.2f} s\n", saved, output, meta.rows,
+                           meta.last_time);
+  const CheckpointVerdict v = verdict_of(saved);
+  if (!v.refused.empty()) {
+    std::cout << "  not resumable: the checkpoint is refused\n" << std::flush;
+    throw InputError(v.refused);
+  }
+  std::cout << fmt::format("  resumable from t = {:.2f} s: icedem resume {}\n", *v.time, output);
+  return kExitOk;
+}
+
 // What state a run's output is in, and whether (and from when) it can be resumed.
 int info_command(const std::string& output) {
-  const std::string saved = checkpoint_path(output);
-  // an output lost after its run was killed: its checkpoint says what there is (resume rebuilds it)
-  const bool lost = !std::filesystem::exists(output) && std::filesystem::exists(saved);
-  const OutputMeta meta = read_output_meta(lost ? saved : output);
-  std::optional<double> resumable;
-  std::string refused;  // why its checkpoint cannot be resumed (changed or damaged since it was written)
-  if (std::filesystem::exists(saved)) try {
-      resumable = read_checkpoint(saved).values.time;
-    } catch (const InputError& e) {
-      refused = e.what();
-    }
+  if (const std::optional<std::string> of = output_of_checkpoint(output); of && std::filesystem::exists(output))
+    return checkpoint_info(output, *of);
+  const RunFiles files = look_at_run(output);
+  const std::string& saved = files.checkpoint;
+  // an output lost or torn after its run was killed: its checkpoint says what there is (resume rebuilds it)
+  const bool lost = !files.output_exists && files.checkpoint_exists;  // missing, or empty
+  if (!files.checkpoint_exists && !files.damage.empty()) throw InputError(files.damage);
+  const OutputMeta meta = files.meta ? *files.meta : read_output_meta(lost || files.damaged() ? saved : output);
+  const CheckpointVerdict v = files.checkpoint_exists ? verdict_of(saved) : CheckpointVerdict{};
   if (lost)
-    std::cout << fmt::format("{}: no such file; its checkpoint {} holds {} steps, to t = {:.2f} s\n", output, saved,
-                             meta.rows, meta.last_time);
+    std::cout << fmt::format("{}: {}; its checkpoint {} holds {} steps, to t = {:.2f} s\n", output,
+                             std::filesystem::exists(output) ? "empty" : "no such file", saved, meta.rows,
+                             meta.last_time);
+  else if (files.damaged())
+    std::cout << fmt::format("{}: torn, it cannot be read ({}); its checkpoint {} holds {} steps, to t = {:.2f} s\n",
+                             output, files.damage, saved, meta.rows, meta.last_time);
   else
     std::cout << fmt::format("{}: {}, {} steps recorded, to t = {:.2f} s\n", output, meta.status, meta.rows,
                              meta.last_time);
   if (!meta.message.empty()) std::cout << "  " << meta.message << "\n";
-  if (meta.status == "running" && !lost) {
+  if (meta.status == "running" && !lost && !files.damaged()) {
     // a live run holds the file's lock (dem/output/lock.hpp): if we can take it, the writer died
     bool alive = false;
     try {
@@ -196,13 +245,17 @@ int info_command(const std::string& output) {
                                       "later\n",
                                       meta.last_time));
   }
-  if (!refused.empty()) {
+  if (!v.refused.empty()) {
     std::cout << "  not resumable: its checkpoint is refused\n" << std::flush;
-    throw InputError(refused);
+    throw InputError(v.refused);
   }
-  if (meta.status != "complete")
-    std::cout << (resumable ? fmt::format("  resumable from t = {:.2f} s: icedem resume {}\n", *resumable, output)
-                            : std::string("  not resumable: it has no checkpoint\n"));
+  if (files.damaged())
+    std::cout << fmt::format("  resumable from t = {:.2f} s: icedem resume {} rebuilds it from the checkpoint (the "
+                             "torn file kept as {}.damaged)\n",
+                             *v.time, output, output);
+  else if (meta.status != "complete")
+    std::cout << (v.time ? fmt::format("  resumable from t = {:.2f} s: icedem resume {}\n", *v.time, output)
+                         : std::string("  not resumable: it has no checkpoint\n"));
   return kExitOk;
 }
 
@@ -381,6 +434,10 @@ int main(int argc, char** argv) {
   run->add_option("--set", sets, "override a scenario key, e.g. --set friction.ice_ice=0.3")->take_all();
   run->add_option("--summary-json", summary_path, "write the run summary as JSON to this file");
   run->add_flag("-q,--quiet", quiet, "no progress line");
+  bool restart = false;
+  run->add_flag("--restart", restart,
+                "start over a killed run whose output is named (its checkpoint and output replaced); without it "
+                "such a run is refused: `icedem resume` continues it");
   ProblemExportSettings problems;
   add_export_options(*run, problems);
 
@@ -461,7 +518,8 @@ int main(int argc, char** argv) {
     if (*run) {
       if (run->count("-o") && output.empty())
         throw InputError("-o '': give a file name (or leave -o out: <scenario>.h5)");
-      return run_command(scenario, output, sets, summary_path, quiet, joined_command_line(argc, argv), problems);
+      return run_command(scenario, output, sets, summary_path, quiet, restart, joined_command_line(argc, argv),
+                         problems);
     }
     if (*resume) return resume_command(output, summary_path, quiet, joined_command_line(argc, argv), problems);
     if (*info) return info_command(output);

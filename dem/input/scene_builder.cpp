@@ -98,7 +98,8 @@ void check_limits(const Scenario& sc, const Scene& s) {
 }  // namespace
 
 // The structure can meet the ice and stays within the tank: a hull wholly above the floating ice
-// (or under it) tows through nothing, and a hull through the tank's side cannot be built (a tow
+// (or under it) tows through nothing, and a hull through the tank's side (where it meets the ice,
+// or anywhere from its keel to its deck) cannot be built (a tow
 // scene; validation cases park the structure away from their plate). A keel below the bottom is a
 // warning (dem/input/setting_warnings.hpp): a structure standing on the floor is one
 void check_structure_in_tank(const Scenario& sc, const Scene& s) {
@@ -116,6 +117,14 @@ void check_structure_in_tank(const Scenario& sc, const Scene& s) {
              fmt::format("the hull (radius {:.3f} m where it meets the ice) at z = {} m reaches beyond the tank's "
                          "side at |z| = {} m (tank.width / 2)",
                          r, s.structure.start_z, 0.5 * s.channel.tank_width));
+  // the whole hull, above and below the ice too: the tank's walls stand above the water and reach
+  // its bottom
+  const double widest = hull_radius_over(hull, keel, deck);
+  if (std::abs(s.structure.start_z) + widest > 0.5 * s.channel.tank_width)
+    fail_key(sc, blamed(sc, {"structure.profile", "structure.start_z", "tank.width"}),
+             fmt::format("the hull's widest part (radius {:.3f} m) at z = {} m (structure.start_z) reaches beyond "
+                         "the tank's side at |z| = {} m (tank.width / 2): it does not fit in the tank",
+                         widest, s.structure.start_z, 0.5 * s.channel.tank_width));
 }
 
 // Level ice (ice.cover = "level", dem/fracture/level_ice.hpp): a breakable sheet that moves near

@@ -14,6 +14,7 @@ std::optional<EndWallMeeting> end_wall_meeting(const Scene& scene) {
   const double r = hull_radius_over(hull, hull.front().y, hull.back().y);
   const double wall = scene.channel.start_x + scene.channel.length;
   const double reach = wall - r - scene.ice.thickness;  // the axis's x when the squeeze begins
+  if (scene.structure.start_x - r > wall) return std::nullopt;  // past the wall, towed away from it
   const double t = (reach - scene.structure.start_x) / scene.structure.speed;
   return EndWallMeeting{std::max(0.0, t), wall, r};
 }

@@ -24,7 +24,7 @@ struct EndWallMeeting {
 };
 
 /// When the structure's path meets the channel's end wall, if the channel has one and the
-/// structure is towed towards it; none otherwise (whether or not it happens within the run).
+/// structure is towed towards it (not from beyond it); none otherwise (whether or not it happens within the run).
 /// The squeeze is taken to begin when the gap between the hull's widest part and the wall is one
 /// ice thickness: no floe passes between them then, and on the bench field above the load left its
 /// level 0.1-0.2 s later.

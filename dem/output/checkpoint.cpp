@@ -240,7 +240,8 @@ void verify_checkpoint(const std::string& path) {
       60.0 + (ec ? 0.0 : megabytes / 20.0));  // the digest reads 400 MB/s here: twenty times that
   if (!result.ok) {
     if (result.value.rfind(path + ": ", 0) == 0) throw InputError(result.value);  // the reader's own refusal
-    throw InputError(fmt::format("{}: the checkpoint is damaged ({}): it cannot be resumed; run the scenario again",
+    throw InputError(fmt::format("{}: the file is damaged ({}): the checkpoint cannot be resumed; run the scenario "
+                                 "again",
                                  path, result.value));
   }
 }

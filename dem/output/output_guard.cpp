@@ -101,7 +101,7 @@ void guard_outputs(const std::vector<PlannedOutput>& outputs, const std::vector<
     if (::access(dir.c_str(), W_OK) != 0 || (exists && ::access(path.c_str(), W_OK) != 0))
       throw InputError(fmt::format("{} {}: cannot write there ({} is not writable)", o.option, path,
                                    exists ? path : dir.string()));
-    if (exists && o.kind != OutputKind::kDirectory && fs::file_size(path, ec) > 0) {
+    if (exists && o.kind != OutputKind::kDirectory && !o.torn && fs::file_size(path, ec) > 0) {
       if (o.kind == OutputKind::kFile && is_hdf5(path))
         throw InputError(fmt::format("{} {}: that is an HDF5 file (a run's output, a checkpoint or a contact "
                                      "problem) and would be replaced; choose another file",

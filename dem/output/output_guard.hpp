@@ -23,6 +23,8 @@ struct PlannedOutput {
   std::string path;
   OutputKind kind = OutputKind::kFile;
   bool checkpoints = false;  // a run's output whose run writes PATH.checkpoint and PATH.checkpoint.tmp too
+  bool torn = false;         // a killed run's output too damaged to read, which the command keeps aside
+                             // (dem/output/run_files.hpp) before it replaces it: what is in it is not checked
 };
 
 /// Refuses (InputError naming the option, the file and the reason) an output that
@@ -32,7 +34,7 @@ struct PlannedOutput {
 ///  - is an existing directory (a file output) or an existing file (a directory output);
 ///  - lies in a directory that does not exist or cannot be written;
 ///  - would replace an HDF5 file with a text file, a checkpoint or a file that is not HDF5 with
-///    a run's output (an empty file may be replaced).
+///    a run's output (an empty file may be replaced; a torn run output kept aside may be too).
 void guard_outputs(const std::vector<PlannedOutput>& outputs, const std::vector<std::string>& inputs);
 
 /// Whether two paths name one file (the same path once resolved, or one file under two names).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -101,38 +102,126 @@ void refuse_floes_in_structure(const Scene& scene, const std::vector<Floe>& floe
 
 }  // namespace
 
-std::vector<std::string> layout_warnings(const Scene& scene, const Layout& layout) {
-  // A floating prism of draft d and thickness h floats flat only with a positive metacentric
-  // height: KB + BM > KG, d/2 + w^2 / (12 d) > h/2 for a width w, so w^2 > 6 d (h - d). Narrower
-  // floes turn over onto a side (and, being small and light, take the largest accelerations
-  // of the pack)
+namespace {
+
+// a convex outline's least width: over its edges' normals
+double least_width(const Polygon& s) {
+  double width = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Eigen::Vector2d e = s[(i + 1) % s.size()] - s[i];
+    const Eigen::Vector2d n = Eigen::Vector2d(e.y(), -e.x()).normalized();
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Eigen::Vector2d& v : s) lo = std::min(lo, n.dot(v)), hi = std::max(hi, n.dot(v));
+    width = std::min(width, hi - lo);
+  }
+  return width;
+}
+
+// A floating prism of draft d and thickness h floats flat only with a positive metacentric
+// height: KB + BM > KG, d/2 + w^2 / (12 d) > h/2 for a width w, so w^2 > 6 d (h - d). Narrower
+// floes turn over onto a side (and, being small and light, take the largest accelerations
+// of the pack)
+std::optional<std::string> narrow_floes_warning(const Scene& scene, const Layout& layout) {
   const double h = scene.ice.thickness, d = scene.ice.draft;
   const double narrowest = std::sqrt(std::max(0.0, 6 * d * (h - d)));
   int narrow = 0, first = -1;
   double smallest = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < layout.floes.size(); ++k) {
-    const Polygon& s = layout.floes[k].shape;
-    // the floe's least width: over its edges' normals (a convex outline)
-    double width = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const Eigen::Vector2d e = s[(i + 1) % s.size()] - s[i];
-      const Eigen::Vector2d n = Eigen::Vector2d(e.y(), -e.x()).normalized();
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      for (const Eigen::Vector2d& v : s) lo = std::min(lo, n.dot(v)), hi = std::max(hi, n.dot(v));
-      width = std::min(width, hi - lo);
-    }
+    const double width = least_width(layout.floes[k].shape);
     if (width < narrowest) {
       ++narrow;
       if (first < 0) first = static_cast<int>(k);
       smallest = std::min(smallest, width);
     }
   }
-  if (!narrow) return {};
-  return {fmt::format("{} floe(s) (the first: floe {}) are narrower than {:.4f} m, down to {:.4f} m: a floe of "
-                      "{} m ice floats flat only if wider than sqrt(6 d (h - d)) (a positive metacentric height); "
-                      "narrower ones turn over onto a side, and small light bodies take the pack's largest "
-                      "accelerations (a run may blow up)",
-                      narrow, first, narrowest, smallest, h)};
+  if (!narrow) return std::nullopt;
+  return fmt::format("{} floe(s) (the first: floe {}) are narrower than {:.4f} m, down to {:.4f} m: a floe of "
+                     "{} m ice floats flat only if wider than sqrt(6 d (h - d)) (a positive metacentric height); "
+                     "narrower ones turn over onto a side, and small light bodies take the pack's largest "
+                     "accelerations (a run may blow up)",
+                     narrow, first, narrowest, smallest, h);
+}
+
+// The structure's path over the run against the floes: a hull that never reaches one (standing
+// still, started too far back, or past them and towed away) records no ice load at all
+std::optional<std::string> no_ice_met_warning(const Scene& scene, const Layout& layout) {
+  if (scene.validation.kind != ValidationKind::kNone || layout.floes.empty()) return std::nullopt;
+  double first = std::numeric_limits<double>::infinity(), last = -first;  // m, the floes' extent in x
+  for (const Floe& f : layout.floes)
+    for (const Eigen::Vector2d& v : transformed(f.shape, f.centre, f.yaw)) {
+      first = std::min(first, v.x());
+      last = std::max(last, v.x());
+    }
+  const StructureSettings& st = scene.structure;
+  const double r = hull_radius_in_ice(scene), T = scene.time.duration;
+  if (st.start_x - r > last)
+    return fmt::format("the structure (structure.start_x = {} m, radius {:.3f} m where it meets the ice) starts past "
+                       "every floe (the last ends by x = {:.3f} m) and is towed away from them: it meets no ice",
+                       st.start_x, r, last);
+  const double front = st.start_x + st.speed * T + r;  // the hull's leading edge at the run's end
+  if (front >= first) return std::nullopt;
+  if (st.speed <= 0)
+    return fmt::format("structure.speed = 0: the structure stands still {:.3f} m short of the nearest floe, and "
+                       "nothing else moves the ice (the water is still): the run records no ice load",
+                       first - (st.start_x + r));
+  return fmt::format("the structure does not reach the ice within the run: its hull (radius {:.3f} m where it meets "
+                     "the ice) ends at x = {:.3f} m at t = {} s (time.duration), short of the nearest floe at x = "
+                     "{:.3f} m, which it would reach at t = {:.1f} s; start it closer (structure.start_x) or run longer",
+                     r, front, T, first, (first - st.start_x - r) / st.speed);
+}
+
+// Breakable floes narrower than an element, or cut into one element only: a single element has no
+// joint and never breaks, and a floe narrower than the elements is cut into parts of cells, not
+// into the elements asked
+std::optional<std::string> element_size_warning(const Scene& scene, const Layout& layout) {
+  if (scene.validation.kind != ValidationKind::kNone || scene.ice.cover != IceCover::kFloes) return std::nullopt;
+  const double size = scene.fracture.element_size;
+  int flagged = 0, first = -1, single = 0;
+  double narrowest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < layout.floes.size(); ++k) {
+    const Polygon& shape = layout.floes[k].shape;
+    if (!is_breakable(scene, shape)) continue;
+    double yaw = 0;
+    const std::size_t elements = paper_lattice(shape, scene.fracture)
+                                     ? floe_lattice(shape, size, yaw).centres.size()
+                                     : floe_outline_lattice(shape, scene.fracture, yaw).elements.size();
+    const double width = least_width(shape);
+    if (elements > 1 && width >= size * (1 - 1e-9)) continue;
+    if (flagged++ == 0) first = static_cast<int>(k);
+    single += elements == 1;
+    narrowest = std::min(narrowest, width);
+  }
+  if (!flagged) return std::nullopt;
+  return fmt::format("{} breakable floe(s) (the first: floe {}; least width down to {:.3f} m) are no wider than "
+                     "fracture.element_size = {} m: {} of them a single element, which has no joint and never "
+                     "breaks, the others cut into parts of cells rather than elements of that size; use smaller "
+                     "elements or make such floes rigid (fracture.mode)",
+                     flagged, first, narrowest, size, single);
+}
+
+// A generated field holds a whole number of floes: with few of them, its concentration can be far
+// from ice.concentration (the generator refuses only one that cannot be packed at all)
+std::optional<std::string> concentration_warning(const Scene& scene, const Layout& layout) {
+  if (scene.validation.kind != ValidationKind::kNone || scene.ice.cover != IceCover::kFloes ||
+      !scene.layout.file.empty() || layout.floes.empty())
+    return std::nullopt;
+  const double per_layer = layout.achieved_concentration / scene.layout.layers;
+  if (std::abs(per_layer - scene.ice.concentration) <= 0.01) return std::nullopt;
+  return fmt::format("ice.concentration = {} asked; the layout's {} floes of ice.floe_size = {} m cover {:.2f} % of "
+                     "the channel{}: a whole number of floes comes no closer. Use smaller floes or a larger channel "
+                     "for the concentration asked",
+                     scene.ice.concentration, layout.floes.size(), scene.ice.floe_size, 100 * per_layer,
+                     scene.layout.layers > 1 ? " (each layer)" : "");
+}
+
+}  // namespace
+
+std::vector<std::string> layout_warnings(const Scene& scene, const Layout& layout) {
+  std::vector<std::string> out;
+  for (const auto& w : {narrow_floes_warning(scene, layout), no_ice_met_warning(scene, layout),
+                        element_size_warning(scene, layout), concentration_warning(scene, layout)})
+    if (w) out.push_back(*w);
+  return out;
 }
 
 Layout scene_layout(const Scene& scene, const std::function<void(double)>& on_progress) {

@@ -23,8 +23,12 @@ Channel scene_channel(const Scene& scene);
 /// structure at t = 0, or a breakable floe does not cut into elements.
 Layout scene_layout(const Scene& scene, const std::function<void(double)>& on_progress = {});
 
-/// Warnings about floes the scene will not hold well: floes too narrow for their thickness to
-/// float flat (they turn over). Empty if none.
+/// Warnings about floes the scene will not hold well, or not as asked: floes too narrow for their
+/// thickness to float flat (they turn over); a structure whose path meets no floe within the run
+/// (standing still, started too far back, or past them); breakable floes no wider than an
+/// element (one element never breaks; a narrower floe is cut into parts of cells); a generated
+/// field whose whole number of floes is more than one point of concentration from
+/// ice.concentration. Empty if none.
 std::vector<std::string> layout_warnings(const Scene& scene, const Layout& layout);
 
 /// The water velocity model of flow.model ("coupled" from `coupling`).

@@ -114,6 +114,7 @@ fi
 # 5. Ctrl-C (exit 130) and SIGTERM (kill, a Slurm preemption: 143): the file is readable and
 #    marked interrupted
 for sig in INT TERM; do
+  rm -f int.h5 int.h5.checkpoint  # the last one's: an interrupted run's output is resumed, not run over
   "$icedem" run "$src/scenarios/paper/small_floes.toml" -o int.h5 -q --set time.duration=100000 >/dev/null 2>&1 &
   pid=$!
   # interrupt once the file holds some steps (polled: set-up takes longer on a loaded machine)

@@ -199,6 +199,36 @@ os.remove(name)
 p = run("resume", name, "-q")
 check(p.returncode == 0 and contents(name) == full, "the output deleted after the kill: resumed from its checkpoint alone")
 
+# an output torn beyond reading (cut inside HDF5's signature, as a full disk or a lost node can
+# leave it): `icedem info` says it is resumable and how, the checkpoint named by itself is read as
+# one, `run -o` refuses to start the killed run over (--restart does), and resume rebuilds the
+# output from the checkpoint, keeping the torn file aside
+name = "torn_signature.h5"
+check(killed_at(name, 15.0), "killed after its checkpoint at t = 15 s (to tear its output)")
+with open(name, "r+b") as f:
+    f.truncate(4)
+torn, saved = open(name, "rb").read(), open(name + ".checkpoint", "rb").read()
+p = run("info", name)
+check(p.returncode == 0 and "torn" in p.stdout and "resumable from t = 15.00 s" in p.stdout
+      and f"icedem resume {name}" in p.stdout, f"icedem info on a torn output: resumable (exit {p.returncode})")
+p = run("info", name + ".checkpoint")
+check(p.returncode == 0 and f"the checkpoint of {name}" in p.stdout and "resumable from t = 15.00 s" in p.stdout,
+      f"icedem info on the checkpoint by its own name reads it as one (exit {p.returncode})")
+p = run("run", scenario, "-q", "-o", name, *every, expect=2)
+check(p.returncode == 2 and "icedem resume" in p.stderr and "--restart" in p.stderr
+      and open(name, "rb").read() == torn and open(name + ".checkpoint", "rb").read() == saved,
+      f"run -o on the killed run refuses to start it over, naming resume and --restart, touching nothing: "
+      f"{p.stderr.strip()[:120]}")
+p = run("resume", name, "-q")
+check(p.returncode == 0 and contents(name) == full and open(name + ".damaged", "rb").read() == torn,
+      "the torn output resumed from its checkpoint: every dataset, the events and the statistics as the "
+      "uninterrupted run; the torn file kept as .damaged")
+name = "restarted.h5"
+check(killed_at(name, 15.0), "killed after its checkpoint at t = 15 s (to start over)")
+p = run("run", scenario, "-q", "-o", name, *every, "--restart")
+check(p.returncode == 0 and contents(name) == full and not os.path.exists(name + ".checkpoint"),
+      "run -o --restart starts the killed run over: as the uninterrupted run, its checkpoint gone")
+
 # a checkpoint changed or damaged after it was written is refused (exit 2), naming what differs,
 # and neither it nor the output is touched: an edited scenario (friction 0.5 -> 0.9), a changed
 # recorded row, a flipped bit in the world's records, a flipped bit in the file's own structures

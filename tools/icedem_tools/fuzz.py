@@ -3,7 +3,7 @@
 through runs whose outputs name their inputs, and through runs stopped by a signal.
 
     scripts/fuzz [--mutations N] [--runs K] [--guards G] [--signals S] [--outputs O] [--tampers T]
-                 [--scenes C] [--walls W] [--seed S] [--icedem PATH] [--out DIR] [--timeout S]
+                 [--torn R] [--scenes C] [--walls W] [--seed S] [--icedem PATH] [--out DIR] [--timeout S]
 
 Each mutation takes a shipped scenario (scenarios/**/*.toml) or layout file
 (scenarios/examples/*.csv, and a JSON version of it) and changes it the way a user's
@@ -35,9 +35,13 @@ What counts:
   recorded row or of the state's records changed, a bit flipped anywhere or the file cut short:
   `resume` refuses it (exit 2) or, where the change touched nothing the run reads, ends bit for bit as
   the uninterrupted run; continuing to other loads is severe;
+- torn (--torn): a killed run's output cut short, zeroed in part or deleted, its checkpoint whole: `info`
+  says it is resumable, `run -o` on it is refused touching nothing, and `resume` ends bit for bit as the
+  uninterrupted run, the torn file kept aside; a resumable run lost is severe;
 - scenes (--scenes): a shipped scenario with one inconsistency (a quoted dotted key, a two-line --set,
-  a seed past its range, the structure outside the tank, above or under the ice or its keel below the
-  bottom, unreached floes kept out with sleeping off, intervals below the step, a plate loaded past its
+  a seed past its range, the structure outside the tank, wider than it, above or under the ice, standing
+  still, out of reach of the ice, or its keel below the bottom, an unpackable concentration, elements as
+  wide as the floes or not dividing them, unreached floes kept out with sleeping off, intervals below the step, a plate loaded past its
   freeboard): `check` refuses or warns as each class should, naming the key (fuzz_scenes.py);
 - wall (--walls): the short tow driven into its channel's end wall: `check` warns, the summary names
   the squeeze and the statistics end before it;
@@ -288,6 +292,7 @@ def main(argv=None):
     ap.add_argument("--outputs", type=int, default=0,
                     help="accepted scenarios whose commands aim outputs at inputs and other runs' files")
     ap.add_argument("--tampers", type=int, default=0, help="checkpoints tampered with, then resumed")
+    ap.add_argument("--torn", type=int, default=0, help="killed runs' outputs torn, then resumed")
     ap.add_argument("--scenes", type=int, default=0, help="inconsistent scenes through check")
     ap.add_argument("--walls", type=int, default=0, help="tows driven into the channel's end wall")
     ap.add_argument("--seed", type=int, default=1)
@@ -385,8 +390,8 @@ def main(argv=None):
         if problem:
             keep_finding(f"signal {sig.name} after {delay:.2f} s", problem, path, tail, bad)
     # the file classes (tools/icedem_tools/fuzz_files.py) and the scene classes (fuzz_scenes.py)
-    outputs_tried = tampered = refused_tampers = scenes_tried = walls_tried = 0
-    if a.outputs or a.tampers:
+    outputs_tried = tampered = refused_tampers = torn_tried = scenes_tried = walls_tried = 0
+    if a.outputs or a.tampers or a.torn:
         fx = fuzz_files.Fixture(a.icedem, os.path.join(out, "files"), a.timeout)
         for path in rng.sample(accepted, min(a.outputs, len(accepted))):
             outputs_tried += 1
@@ -399,6 +404,13 @@ def main(argv=None):
             if problem:
                 text, bad, tail = problem[0], problem[1], problem[2]
                 findings.append(("tamper", text, fx.killed + ".checkpoint", tail.strip()[-300:]))
+                severe += bad
+        for i in range(a.torn):
+            problem, how = fuzz_files.torn_problem(fx, rng, i)
+            torn_tried += 1
+            if problem:
+                text, bad, tail = problem
+                findings.append(("torn", text, fx.killed, tail.strip()[-300:]))
                 severe += bad
         fuzz_files.cleanup(fx)
     for i in range(a.scenes):
@@ -418,14 +430,14 @@ def main(argv=None):
         os.remove(path)
 
     cases = a.mutations + min(a.runs, len(accepted)) + len(guards) + len(signals) + outputs_tried + tampered + \
-        scenes_tried + walls_tried
+        torn_tried + scenes_tried + walls_tried
     print(f"fuzz: {cases} cases. {a.mutations} mutations (scenario {counts['scenario']}, layout CSV {counts['csv']}, "
           f"layout JSON {counts['json']}): {counts['accepted']} accepted, {counts['refused']} refused; "
           f"{min(a.runs, len(accepted))} accepted scenarios run, {len(guards)} with outputs naming inputs, "
           f"{len(signals)} stopped by a signal; {outputs_tried} with every command's outputs aimed at what a user "
           f"has; {tampered} checkpoints tampered with ({refused_tampers} refused, the others changed nothing the "
-          f"run reads); {scenes_tried} inconsistent scenes; {walls_tried} tows into the end wall; "
-          f"{severe} crashes, hangs, files overwritten or tampered checkpoints continued, "
+          f"run reads); {torn_tried} killed runs' outputs torn and resumed; {scenes_tried} inconsistent scenes; {walls_tried} tows into the end wall; "
+          f"{severe} crashes, hangs, files overwritten, tampered checkpoints continued or resumable runs lost, "
           f"{len(findings) - severe} other findings (seed {a.seed})")
     for what, problem, keep, tail in findings:
         print(f"  {what}: {problem}: {keep}\n    {tail[:300]!r}")

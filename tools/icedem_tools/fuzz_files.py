@@ -1,18 +1,23 @@
 """The fuzzer's classes on files (scripts/fuzz): the outputs of every command aimed at what a user has,
-and checkpoints tampered with or damaged before a resume.
+checkpoints tampered with or damaged before a resume, and killed runs whose output was torn.
 
 - outputs: every command that writes (run, resume, stl, flow, foam-case, calibrate --write,
   scripts/layout_from_photo) with an output naming its scenario, the layout file, another run's output,
-  another run's checkpoint, a directory or an empty name. Each must be refused (exit 2), and every one of
-  those files must be byte for byte as before.
+  another run's checkpoint, a killed run's output (without --restart), a directory or an empty name.
+  Each must be refused (exit 2), and every one of those files must be byte for byte as before.
 - tamper: a killed run's checkpoint changed the way an accident would (a number of the stored scenario
   edited, a value of a recorded row or of the state's records changed, a bit flipped anywhere, the file
   cut short). `icedem resume` must refuse it (exit 2), or, where the change touched nothing the run reads
   (a flip in bytes HDF5 leaves unused), end bit for bit as the uninterrupted run. `icedem info` must not
   crash on it.
 
+- torn: a killed run's output cut short (inside HDF5's signature or anywhere), zeroed in part or lost,
+  its checkpoint whole. `icedem info` must say it is resumable (exit 0), `icedem run -o` on it must be
+  refused (exit 2) touching nothing, and `icedem resume` must end bit for bit as the uninterrupted run,
+  the torn file kept aside (OUT.damaged) byte for byte.
+
 Each yields (problem, is severe, output tail); severe: a crash, a hang, a file overwritten, a tampered
-checkpoint continued.
+checkpoint continued, a resumable run lost.
 """
 import hashlib
 import os
@@ -105,6 +110,7 @@ def output_attempts(fx, scenario, layout):
     attempts = [
         ("run -o the scenario", [icedem, "run", scenario, "-q", "-o", scenario, *short]),
         ("run -o another run's checkpoint", [icedem, "run", scenario, "-q", "-o", chk, *short]),
+        ("run -o a killed run's output", [icedem, "run", scenario, "-q", "-o", fx.killed, *short]),
         ("run --summary-json another run's output", [icedem, "run", scenario, "-q", "-o",
                                                       os.path.join(fx.work, "new.h5"), "--summary-json", other, *short]),
         ("run -o a directory", [icedem, "run", scenario, "-q", "-o", d, *short]),
@@ -149,7 +155,7 @@ def output_problems(fx, scenario, rng, count):
     """`count` attempts of output_attempts on `scenario`: each refused, nothing a user has touched."""
     layout = layout_of(scenario)
     layout = layout if layout and os.path.isfile(layout) else None
-    kept = [scenario, fx.other, fx.killed + ".checkpoint", fx.directory] + ([layout] if layout else [])
+    kept = [scenario, fx.other, fx.killed, fx.killed + ".checkpoint", fx.directory] + ([layout] if layout else [])
     attempts = output_attempts(fx, scenario, layout)
     for what, cmd in rng.sample(attempts, min(count, len(attempts))):
         before = {p: digest(p) for p in kept}
@@ -245,6 +251,71 @@ def tamper_problem(fx, rng, index):
         if os.path.exists(p):
             os.remove(p)
     return problem, code, how
+
+
+# --- a killed run's output torn, its checkpoint whole -------------------------------------------------
+
+def _tear(path, rng):
+    data = open(path, "rb").read()
+    how = rng.choice(["cut", "cut in the signature", "zeroed", "lost"])
+    if how == "lost":
+        os.remove(path)
+        return "the output deleted"
+    if how == "cut in the signature":
+        n = rng.randrange(1, 8)
+        open(path, "wb").write(data[:n])
+        return f"the output cut to {n} bytes (inside HDF5's signature)"
+    if how == "cut":
+        n = rng.randrange(len(data))
+        open(path, "wb").write(data[:n])
+        return f"the output cut to {n} bytes"
+    i = rng.randrange(len(data))
+    n = rng.randint(1, 65536)
+    open(path, "wb").write(data[:i] + bytes(min(n, len(data) - i)) + data[i + n:])
+    return f"{n} bytes of the output zeroed from byte {i}"
+
+
+def torn_problem(fx, rng, index):
+    """The killed run's output torn (cut short, zeroed in part, or lost), its checkpoint whole: `icedem
+    info` says it is resumable (exit 0), `run -o` on it is refused (exit 2) touching nothing, and `icedem
+    resume` ends bit for bit as the uninterrupted run, the torn file kept aside byte for byte.
+    (problem or None, is severe, output), how it was torn."""
+    name = os.path.join(fx.work, f"torn{index}.h5")
+    for p in (name, name + ".checkpoint", name + ".damaged"):
+        if os.path.exists(p):
+            os.remove(p)
+    open(name + ".checkpoint", "wb").write(fx.checkpoint_bytes)
+    open(name, "wb").write(fx.output_bytes)
+    how = _tear(name, rng)
+    torn = open(name, "rb").read() if os.path.exists(name) else None
+    problem = None
+    code, text = run([fx.icedem, "info", name], fx.timeout)
+    said_torn = code == 0 and ": torn, it cannot be read" in text  # else still readable (zeroed where nothing is read) or lost
+    if code is None or code < 0:
+        problem = (f"{how}: icedem info crashed or hung (exit {code})", True, text)
+    elif code != 0 or "resumable from" not in text:
+        problem = (f"{how}: icedem info exit {code}, not saying it is resumable", False, text)
+    if not problem:
+        code, text = run([fx.icedem, "run", fx.scenario, "-q", "-o", name, *fx.options], 4 * fx.timeout)
+        now = open(name, "rb").read() if os.path.exists(name) else None
+        if code != 2 or now != torn or open(name + ".checkpoint", "rb").read() != fx.checkpoint_bytes:
+            problem = (f"{how}: run -o on the killed run: exit {code}, expected 2 touching nothing",
+                       code is None or code < 0 or now != torn, text)
+    if not problem:
+        code, text = run([fx.icedem, "resume", name, "-q"], 4 * fx.timeout)
+        kept = name + ".damaged"
+        if code is None or code < 0:
+            problem = (f"{how}: resume crashed or hung (exit {code})", True, text)
+        elif code != 0:
+            problem = (f"{how}: resume exit {code}: a resumable run lost", True, text)
+        elif surge(name) != fx.full_surge:
+            problem = (f"{how}: resumed to other loads than the uninterrupted run's", True, text)
+        elif said_torn and (not os.path.exists(kept) or open(kept, "rb").read() != torn):
+            problem = (f"{how}: the torn output was not kept aside as it was", True, text)
+    for p in (name, name + ".checkpoint", name + ".damaged"):
+        if os.path.exists(p):
+            os.remove(p)
+    return problem, how
 
 
 def cleanup(fx):

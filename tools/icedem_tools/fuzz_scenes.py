@@ -2,9 +2,11 @@
 run as meant, and structures driven into the channel's end wall.
 
 - scenes: a shipped scenario given one inconsistency: a quoted dotted key, a --set value of two lines,
-  a seed past its range, the structure outside the tank or wholly above the ice, its keel below the
-  tank's bottom, unreached floes kept out with sleeping off, snapshot or checkpoint intervals below the
-  step, a plate case loaded past its freeboard. `icedem check` must refuse it (exit 2, naming the key)
+  a seed past its range, the structure outside the tank, wider than it or wholly above the ice, its keel
+  below the tank's bottom, standing still, too far back to reach the ice or past every floe, a
+  concentration a whole number of floes cannot make, breakable floes no wider than an element or
+  elements that do not divide them, unreached floes kept out with sleeping off, snapshot or checkpoint
+  intervals below the step, a plate case loaded past its freeboard. `icedem check` must refuse it (exit 2, naming the key)
   or accept it with a warning naming the key, as each class says.
 - wall: the short tow in a channel of random length, towed into its end wall within the run. `check`
   must warn, and the run's summary must name the squeeze (`squeeze`) and end its statistics before it.
@@ -45,6 +47,21 @@ def scene_cases(rng, scenarios):
          "output.snapshot_interval"),
         ("checkpoints more often than the step", base, None, ["output.checkpoint_interval=0.005"], "warned",
          "output.checkpoint_interval"),
+        ("the structure standing still", base, None, ["structure.speed=0"], "warned", "structure.speed"),
+        ("the structure too far back to reach the ice", base, None, ["structure.start_x=-60"], "warned",
+         "structure.start_x"),
+        ("the structure past every floe", base, None, ["structure.start_x=500"], "warned", "structure.start_x"),
+        ("a hull wider than the tank", base, None, ["structure.profile=[[-0.443, 0.171], [0.0, 0.614], [0.3, 3.5]]"],
+         "refused", "structure.profile"),
+        ("a concentration a whole number of floes cannot make", TOW, None,
+         ["ice.floe_size=1", "channel.length=2", "channel.width=2.1", "ice.concentration=0.9",
+          "layout.size_spread=0.1"], "warned", "ice.concentration"),
+        ("breakable floes no wider than an element", TOW, None,
+         ["fracture.mode=on"] + rng.choice([["fracture.element_size=0.3"],
+                                            ["fracture.element_shape=hexagon", "fracture.element_size=0.5"]]),
+         "warned", "fracture.element_size"),
+        ("square elements that do not divide the floe", TOW, None, ["fracture.mode=on", "fracture.element_size=0.25"],
+         "refused", "fracture.element_size"),
         ("a plate loaded past its freeboard", PLATE, None, [f"validation.load={rng.choice([100, 1000, 10000])}"],
          "warned", "validation.load"),
     ])

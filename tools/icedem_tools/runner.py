@@ -48,9 +48,10 @@ RUN_FILES = {"h5": "run.h5", "summary": "summary.json", "log": "log.txt"}
 
 
 def run_args(icedem, scenario, h5, summary, sets=()):
-    """The argv of `icedem run SCENARIO -q -o H5 --summary-json SUMMARY --set ...`: every tool
-    (this runner, a sweep's job list) runs icedem with it."""
-    return [icedem, "run", scenario, "-q", "-o", h5, "--summary-json", summary] + sets_args(sets)
+    """The argv of `icedem run SCENARIO -q -o H5 --summary-json SUMMARY --restart --set ...`: every
+    tool (this runner, a sweep's job list) runs icedem with it. --restart: a tool starts a run over
+    on purpose (a sweep's job resumes a killed run first, and starts over only one that cannot be)."""
+    return [icedem, "run", scenario, "-q", "-o", h5, "--summary-json", summary, "--restart"] + sets_args(sets)
 
 
 def resume_args(icedem, h5, summary):
