@@ -290,7 +290,7 @@ int cone_load_command(const std::string& scenario_path, const std::vector<std::s
   in.rubble = pile;
   const ConeLoad r = iso19906_cone_load(in);
   const RalstonLoad ralston = ralston_cone_load(in);  // no pile in its method
-  if (json) {  // for the report's comparison of fracture models (tools/icedem_tools/report_fracture_models.py)
+  if (json) {  // for the report's comparison of fracture models (tools/icedem_tools/reports/report_fracture_models.py)
     const nlohmann::json j{{"friction", in.friction},
                            {"ice_friction", in.ice_friction},
                            {"ride_height_m", r.ride_height},

@@ -73,7 +73,7 @@ for v in "${variants[@]}"; do
   row=$(ICEDEM_ROOT="$ICEDEM_ROOT" /usr/bin/python3 - "$work/run.json" "$work/run.h5" "${base_wall:-0}" "$name" <<'PY'
 import json, os, sys
 sys.path.insert(0, os.path.join(os.environ["ICEDEM_ROOT"], "tools"))
-from icedem_tools import results
+from icedem_tools.runs import results
 s = json.load(open(sys.argv[1])); base = float(sys.argv[3])
 pts = results.load_run(sys.argv[2])["/diagnostics/contact_points"].mean()
 ratio = s["wall_time_s"] / base if base > 0 else 1.0

@@ -10,34 +10,34 @@ import importlib
 import os
 import sys
 
-# command (as scripts/ names it) -> (module of tools/icedem_tools, what it does)
+# command (as scripts/ names it) -> (room.module of tools/icedem_tools, what it does)
 COMMANDS = {
-    "sweep": ("sweep", "parameter sweeps of icedem runs: scenarios x variants x grid x seeds"),
-    "report": ("report", "a sweep's report beside the seed paper"),
-    "sweep_figures.py": ("figures", "a sweep's figures (and XDMF views for ParaView)"),
-    "full_runs": ("full_runs", "the contact solve judged on the paper's full runs"),
-    "convergence": ("convergence", "convergence of the contact solve, error against cost"),
-    "convergence_check": ("convergence_check", "whether a <model>+<numerics> sweep's findings move with its numerics"),
-    "level_ice_report": ("level_ice_report", "a level-ice sweep's loads against ISO 19906 and Ralston, and where it broke"),
-    "ladder": ("ladder", "run time against error, a ladder of solver settings"),
-    "budget": ("budget", "the model-error budget against the tank: what each factor does to the loads"),
-    "tank_maxima": ("tank_maxima", "the tank's largest load against the distribution of the runs' maxima"),
-    "stress": ("stress", "the numerical stability stress suite"),
-    "fuzz": ("fuzz", "fuzz icedem's input handling with mutated scenario and layout files"),
-    "layout_from_photo": ("layout_from_photo", "a floe layout file from a top-view photo of the floes"),
-    "photo_layout_validation.py": ("photo_layout_validation",
+    "sweep": ("sweeps.sweep", "parameter sweeps of icedem runs: scenarios x variants x grid x seeds"),
+    "report": ("reports.report", "a sweep's report beside the seed paper"),
+    "sweep_figures.py": ("reports.figures", "a sweep's figures (and XDMF views for ParaView)"),
+    "full_runs": ("studies.full_runs", "the contact solve judged on the paper's full runs"),
+    "convergence": ("studies.convergence", "convergence of the contact solve, error against cost"),
+    "convergence_check": ("studies.convergence_check", "whether a <model>+<numerics> sweep's findings move with its numerics"),
+    "level_ice_report": ("studies.level_ice_report", "a level-ice sweep's loads against ISO 19906 and Ralston, and where it broke"),
+    "ladder": ("studies.ladder", "run time against error, a ladder of solver settings"),
+    "budget": ("studies.budget", "the model-error budget against the tank: what each factor does to the loads"),
+    "tank_maxima": ("studies.tank_maxima", "the tank's largest load against the distribution of the runs' maxima"),
+    "stress": ("studies.stress", "the numerical stability stress suite"),
+    "fuzz": ("fuzzing.fuzz", "fuzz icedem's input handling with mutated scenario and layout files"),
+    "layout_from_photo": ("photo.layout_from_photo", "a floe layout file from a top-view photo of the floes"),
+    "photo_layout_validation.py": ("photo.photo_layout_validation",
                                    "validation of scripts/layout_from_photo on synthetic photos of known layouts"),
-    "validation_report.py": ("validation_report", "run the validation scenarios (scenarios/validation/) and plot them"),
-    "fig6_modulus_vs_cfm.py": ("fig6_modulus_vs_cfm",
+    "validation_report.py": ("studies.validation_report", "run the validation scenarios (scenarios/validation/) and plot them"),
+    "fig6_modulus_vs_cfm.py": ("studies.fig6_modulus_vs_cfm",
                                "the seed paper's Figure 6 for this solver: elastic modulus against the joints' CFM"),
-    "edge_load.py": ("edge_load", "the vertical edge load that breaks a square floe floating on water, in bending"),
-    "break_pictures.py": ("break_pictures", "pictures of breaks like the seed paper's Fig. 18"),
-    "piece_sizes": ("pieces", "the sizes of the pieces a run's breakable ice broke into"),
-    "fracture_events.py": ("fracture_events", "the joint breaks of one run: count by mode, and where they happened"),
-    "compare_flow_models.py": ("compare_flow_models",
+    "edge_load.py": ("studies.edge_load", "the vertical edge load that breaks a square floe floating on water, in bending"),
+    "break_pictures.py": ("reports.break_pictures", "pictures of breaks like the seed paper's Fig. 18"),
+    "piece_sizes": ("runs.pieces", "the sizes of the pieces a run's breakable ice broke into"),
+    "fracture_events.py": ("runs.fracture_events", "the joint breaks of one run: count by mode, and where they happened"),
+    "compare_flow_models.py": ("studies.compare_flow_models",
                                "the flow models compared on one scenario: still water, analytic and OpenFOAM"),
-    "xdmf_snapshots.py": ("xdmf", "a run's snapshots as an XDMF view for ParaView"),
-    "movie": ("movie", "a movie of a run: the floes from above and the side, the cracks, the load beside them"),
+    "xdmf_snapshots.py": ("runs.xdmf", "a run's snapshots as an XDMF view for ParaView"),
+    "movie": ("reports.movie", "a movie of a run: the floes from above and the side, the cracks, the load beside them"),
 }
 
 
@@ -57,7 +57,7 @@ def main():
         print(f"{name}: not a command of scripts/icedem_tool.py (run it alone for the list)", file=sys.stderr)
         return 2
     module = importlib.import_module(f"icedem_tools.{COMMANDS[name][0]}")
-    from icedem_tools import output_guard  # noqa: E402 (on the path set above)
+    from icedem_tools.runs import output_guard  # noqa: E402 (on the path set above)
     try:
         return module.main()
     except output_guard.Refused as e:  # before any work: nothing written

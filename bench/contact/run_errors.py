@@ -30,7 +30,7 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
-from icedem_tools import results  # noqa: E402
+from icedem_tools.runs import results  # noqa: E402
 
 
 def run(cmd):

@@ -202,7 +202,7 @@ std::string output_markdown() {
       "(the first stores every body), so that a field of resting floes costs nothing per snapshot:\n"
       "snapshot i is rows end_row[i-1] (0 for the first) to end_row[i] of /snapshots/rows/*, and the\n"
       "full field at snapshot i is every row up to end_row[i], each body at its latest row.\n"
-      "`tools/icedem_tools/results.py` (`load_run(path, snapshots=True)`, `snapshot_field`) gives it\n"
+      "`tools/icedem_tools/runs/results.py` (`load_run(path, snapshots=True)`, `snapshot_field`) gives it\n"
       "as k x nb arrays. The file is\n"
       "written in the HDF5 1.8 format and flushed every few seconds of wall time, so it stays\n"
       "readable after a crash or a kill. `scripts/xdmf_snapshots.py OUT.h5` makes a view of the\n"

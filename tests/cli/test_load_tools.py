@@ -18,7 +18,7 @@ import sys
 
 src, work, icedem = sys.argv[1:4]
 sys.path.insert(0, os.path.join(src, "tools"))
-from icedem_tools import tank_maxima  # noqa: E402
+from icedem_tools.studies import tank_maxima  # noqa: E402
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(os.path.join(work, "no_runs"))
 failures = []
@@ -70,7 +70,7 @@ ours = tank_maxima.filtered_maxima(os.path.join(run_dir, "run.h5"), plain)
 check(abs(ours["5"] - by_icedem) <= 1e-9 * abs(by_icedem) and ours["0"] == plain["max_fx_N"],
       f"the 5 Hz maximum is icedem's: {ours['5']!r} N against {by_icedem!r} N (unfiltered {ours['0']} N)")
 # a sweep's record keeps the same filtered maximum (what scripts/budget's "max at 5 Hz" column reads)
-from icedem_tools import aggregate  # noqa: E402
+from icedem_tools.sweeps import aggregate  # noqa: E402
 kept = aggregate.make_record(run_dir)["window"]["max_lowpass_fx_N"]
 check(abs(kept["5"] - by_icedem) <= 1e-9 * abs(by_icedem),
       f"the record's 5 Hz maximum is icedem's: {kept['5']!r} N against {by_icedem!r} N")

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The scripts' one output guard (tools/icedem_tools/output_guard.py), as the program's
+"""The scripts' one output guard (tools/icedem_tools/runs/output_guard.py), as the program's
 (tests/unit/test_output_guard.cpp): a table of outputs it must refuse and allow, its writes whole or
 not at all, and scripts/layout_from_photo end to end (its overlay defaults to OUTPUT with .png, which
 may be the photo itself).
@@ -16,7 +16,7 @@ import numpy as np
 
 src, work = sys.argv[1:3]
 sys.path.insert(0, os.path.join(src, "tools"))
-from icedem_tools import output_guard as og  # noqa: E402
+from icedem_tools.runs import output_guard as og  # noqa: E402
 
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)

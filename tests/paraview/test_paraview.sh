@@ -49,8 +49,8 @@ import sys
 import h5py
 import numpy as np
 sys.path.insert(0, sys.argv[1] + "/tools")
-from icedem_tools.xdmf import nearest_edge, quat_to_matrix
-from icedem_tools.results import snapshot_field
+from icedem_tools.runs.xdmf import nearest_edge, quat_to_matrix
+from icedem_tools.runs.results import snapshot_field
 with h5py.File("lattice.h5", "r") as h, h5py.File("lattice_views.h5", "r") as v:
     off, verts = h["/bodies/vertex_offset"][:], h["/bodies/vertices"][:]
     positions, orientations, _ = snapshot_field(h)

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""scripts/convergence_check (tools/icedem_tools/convergence_check.py): a <model>+<numerics>
+"""scripts/convergence_check (tools/icedem_tools/studies/convergence_check.py): a <model>+<numerics>
 sweep judged on its own runs: each model's numerics against its own "default" (no other sweep
 pooled in), scenarios without a "+" left out; no finished run says so; the page is not
 written over the sweep file it reads."""
@@ -10,7 +10,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
 from checks import ROOT, check, finish  # noqa: E402
-from icedem_tools import convergence_check  # noqa: E402
+from icedem_tools.studies import convergence_check  # noqa: E402
 
 
 SWEEP = """name = "check_test"

@@ -10,7 +10,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
 from checks import check, finish  # noqa: E402
-from icedem_tools.full_runs import TOLERANCE, judge  # noqa: E402
+from icedem_tools.studies.full_runs import TOLERANCE, judge  # noqa: E402
 
 
 SEEDS = [1, 2, 3, 4, 5]

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""scripts/level_ice_report (tools/icedem_tools/level_ice_report.py): each finished level-ice run
+"""scripts/level_ice_report (tools/icedem_tools/studies/level_ice_report.py): each finished level-ice run
 beside the design loads `icedem cone-load` gives for its own scenario and sets (max over ISO and
 over Ralston), the breaking lengths' median against 1.11 l_c; no finished run says so; a missing
 build is said, not dropped; the page is not written over the sweep file it reads."""
@@ -10,7 +10,8 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
 from checks import ROOT, check, finish  # noqa: E402
-from icedem_tools import execute, level_ice_report  # noqa: E402
+from icedem_tools.sweeps import execute  # noqa: E402
+from icedem_tools.studies import level_ice_report
 
 
 SWEEP = """name = "level_test"

@@ -1,13 +1,13 @@
 #!/usr/bin/python3
 """The report names every finding whose agreement with the paper changed between an earlier
-grid and this one, or whose number moved by more than 10 % (tools/icedem_tools/paper_findings.py,
+grid and this one, or whose number moved by more than 10 % (tools/icedem_tools/reports/paper_findings.py,
 changed_findings), in a sentence with both numbers, and counts the others."""
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
 from checks import check, finish  # noqa: E402
-from icedem_tools.paper_findings import changed_findings  # noqa: E402
+from icedem_tools.reports.paper_findings import changed_findings  # noqa: E402
 
 
 # (finding, paper, icedem, agrees?, cause)

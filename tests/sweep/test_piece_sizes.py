@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""scripts/piece_sizes (tools/icedem_tools/pieces.py): the fragments of a lattice over its intact
+"""scripts/piece_sizes (tools/icedem_tools/runs/pieces.py): the fragments of a lattice over its intact
 joints, the pieces broken off (every fragment of a broken floe but its largest) with their true
 areas, the breaks up to a time, the element's area from the commonest one, and an unreadable run
 named. On hand-made runs: a strip of four 0.15 m squares (floe 0) and a rigid floe (floe 1); a level
@@ -13,7 +13,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
 from checks import ROOT, check, finish  # noqa: E402
-from icedem_tools import pieces  # noqa: E402
+from icedem_tools.runs import pieces  # noqa: E402
 
 
 class FakeRun(dict):

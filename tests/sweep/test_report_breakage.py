@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The report's mechanism shares and the paper's Fig. 18 shift are judged with intervals
-that take the runs, not the breaks, as the samples (tools/icedem_tools/report_breakage.py):
+that take the runs, not the breaks, as the samples (tools/icedem_tools/reports/report_breakage.py):
 a shift every run shows is found, no shift is not, and one run's burst of breaks is not
 taken for a shift (a binomial interval over the breaks would take it)."""
 import os
@@ -10,7 +10,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
 from checks import check, finish  # noqa: E402
-from icedem_tools.report_breakage import bootstrap_shares, fig18_shift, interval  # noqa: E402
+from icedem_tools.reports.report_breakage import bootstrap_shares, fig18_shift, interval  # noqa: E402
 
 MECHANISMS = ["on the slope", "pressed under", "in the rubble", "in the pack"]
 

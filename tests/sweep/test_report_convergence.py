@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The report's check of whether the findings are converged (tools/icedem_tools/report_convergence.py):
+"""The report's check of whether the findings are converged (tools/icedem_tools/reports/report_convergence.py):
 a number whose every seed moves the same way by far more than the tolerance and the seeds'
 scatter is beyond it; one whose interval excludes no change but straddles the tolerance moves;
 one that moves within a tight interval inside the tolerance is within; the larger/smaller
@@ -11,8 +11,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
 from checks import check, finish  # noqa: E402
-from icedem_tools.report_convergence import (  # noqa: E402
-    MEAN_TOLERANCE, headline_section, log_change, max_bounds, seeds_for_tolerance, verdict)
+from icedem_tools.reports.report_convergence import (  # noqa: E402
+    MEAN_TOLERANCE, headline_section, max_bounds, seeds_for_tolerance, verdict)
+from icedem_tools.stats.verdict import log_change  # noqa: E402
 
 
 def summary(mean, peak, breaks=0, mechanisms=None, p99=None):

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The report's comparison of fracture models (tools/icedem_tools/report_fracture_models.py)
+"""The report's comparison of fracture models (tools/icedem_tools/reports/report_fracture_models.py)
 compares the models over the seeds every model with runs finished, the same layouts, at the paper's
 Fig. 18 frictions only: a seed one model lacks is left out of every model's numbers (a model
 without any run is n/a and leaves the others' seeds alone), other
@@ -13,7 +13,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
 from checks import check, finish  # noqa: E402
-from icedem_tools.report_fracture_models import (FII, FIS, MODELS, SHAPES, comparison, iso19906,  # noqa: E402
+from icedem_tools.reports.report_fracture_models import (FII, FIS, MODELS, SHAPES, comparison, iso19906,  # noqa: E402
                                                  shape_comparison, shape_lines)
 
 Run = collections.namedtuple("Run", "seed labels")

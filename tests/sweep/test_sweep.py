@@ -12,7 +12,8 @@ import unittest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
-from icedem_tools import execute, spec  # noqa: E402
+from icedem_tools.sweeps import execute  # noqa: E402
+from icedem_tools.runs import spec
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # same_runs, beside this file
 
 ICEDEM = None
@@ -140,17 +141,17 @@ class Expansion(unittest.TestCase):
 
 class Aggregation(unittest.TestCase):
     def test_confidence_interval_of_three_values(self):
-        from icedem_tools import aggregate as agg
-        m, half = agg.mean_ci([1.0, 2.0, 3.0])
+        from icedem_tools.stats.intervals import mean_ci
+        m, half = mean_ci([1.0, 2.0, 3.0])
         # t(0.975, 2) = 4.302653, sample std 1: 4.302653 / sqrt(3)
         self.assertAlmostEqual(m, 2.0, places=12)
         self.assertAlmostEqual(half, 4.302653 / 3 ** 0.5, places=5)
-        m1, half1 = agg.mean_ci([5.0])
+        m1, half1 = mean_ci([5.0])
         self.assertEqual(m1, 5.0)
         self.assertTrue(half1 != half1)  # nan: no interval from one seed
 
     def test_spectral_peak_of_a_noisy_sine(self):
-        from icedem_tools import aggregate as agg
+        from icedem_tools.sweeps import aggregate as agg
         import numpy as np
         rng = np.random.default_rng(1)
         t = np.arange(0, 300, 0.02)
@@ -159,7 +160,7 @@ class Aggregation(unittest.TestCase):
         self.assertLess(abs(agg.spectral_peak(t, x) - 0.233), 1 / 60)
 
     def test_spectral_peak_ignores_the_slow_drift_of_a_pack(self):
-        from icedem_tools import aggregate as agg
+        from icedem_tools.sweeps import aggregate as agg
         import numpy as np
         rng = np.random.default_rng(2)
         t = np.arange(0, 216, 0.02)
@@ -170,7 +171,7 @@ class Aggregation(unittest.TestCase):
         self.assertLess(abs(agg.peak_frequency(f, p) - 1 / 8.57), 1 / 60)
 
     def test_ensemble_spectrum_finds_a_peak_no_single_seed_shows(self):
-        from icedem_tools import aggregate as agg
+        from icedem_tools.sweeps import aggregate as agg
         import numpy as np
         rng = np.random.default_rng(3)
         t = np.arange(0, 200, 0.02)
@@ -184,22 +185,22 @@ class Aggregation(unittest.TestCase):
         self.assertTrue(np.allclose(p, np.mean([q for _, q in seeds], axis=0)))
 
     def test_gumbel_moment_fit_recovers_its_parameters(self):
-        from icedem_tools import aggregate as agg
+        from icedem_tools.stats.intervals import gumbel_fit
         import numpy as np
         rng = np.random.default_rng(4)
         x = rng.gumbel(100.0, 15.0, 20000)
-        u, beta = agg.gumbel_fit(x)
+        u, beta = gumbel_fit(x)
         # standard errors of moment estimates at n = 20000 are about 0.2 (u) and 0.15 (beta)
         self.assertAlmostEqual(u, 100.0, delta=1.0)
         self.assertAlmostEqual(beta, 15.0, delta=1.0)
         # exact for two values: s = |a - b| / sqrt(2)
-        u2, b2 = agg.gumbel_fit([10.0, 20.0])
+        u2, b2 = gumbel_fit([10.0, 20.0])
         self.assertAlmostEqual(b2, 6 ** 0.5 * (10 / 2 ** 0.5) / np.pi)
         self.assertAlmostEqual(u2, 15.0 - 0.5772156649 * b2)
-        self.assertTrue(np.isnan(agg.gumbel_fit([5.0])[0]))
+        self.assertTrue(np.isnan(gumbel_fit([5.0])[0]))
 
     def test_rows_average_over_seeds_and_sum_breaks(self):
-        from icedem_tools import aggregate as agg
+        from icedem_tools.sweeps import aggregate as agg
         # a summary counts every mode icedem has, also those that never fired (here shear)
         recs = [{"mean_fx_N": m, "max_fx_N": 10 * m, "peak_interval_s": 4.0, "spectral_peak_hz": 0.25,
                  "breaks_by_mode": {"bending": b, "shear": 0, agg.mode_key("in-plane bending"): 1},
@@ -231,7 +232,7 @@ class Aggregation(unittest.TestCase):
             self.assertEqual(h["configurations"]["variant"][0].decode(), "dt 0.01")
 
     def test_a_cause_cites_its_supplements_ratios(self):
-        from icedem_tools import paper_findings
+        from icedem_tools.reports import paper_findings
         rows = [{"configuration": "a/base", "mean_fx_N": "10", "max_fx_N": "40"},
                 {"configuration": "b/base", "mean_fx_N": "12", "max_fx_N": "60"},
                 {"configuration": "c/base", "mean_fx_N": "5", "max_fx_N": "nan"}]
@@ -263,7 +264,7 @@ class XdmfExport(unittest.TestCase):
         with h5py.File(run, "r") as h:
             self.assertEqual(len(grids), len(h["/snapshots/time"]))
             nb = len(h["/bodies/floe_id"])
-            from icedem_tools.results import snapshot_field
+            from icedem_tools.runs.results import snapshot_field
             pos0 = snapshot_field(h)[0][0]
             thick = h["/bodies/thickness"][:]
         with h5py.File(os.path.join(out, "run_views.h5"), "r") as v:
@@ -291,7 +292,7 @@ class XdmfExport(unittest.TestCase):
 
 class RunnerAndReader(unittest.TestCase):
     def test_a_run_reads_back_with_units_and_named_breaks_and_a_failure_names_its_error(self):
-        from icedem_tools import results, runner
+        from icedem_tools.runs import results, runner
         out = os.path.join(WORK, "runner")
         # joints weak enough to break within the run (the golden breakable case, shortened)
         sets = ["time.duration=3", "channel.start_x=3.0", "channel.length=3.6", "channel.width=3.0",

@@ -1,8 +1,13 @@
-"""icedem's Python tools, one package: one runner of the icedem command (runner), one reader of
-what a run writes (results), sweeps (spec, execute, aggregate, sweep), the report beside the
-seed paper (report, figures, break_pictures, xdmf), the studies, each a sweep file of
-sweeps/studies/ (ladder, convergence, stress, with pareto), the validations (validation_report,
-fig6_modulus_vs_cfm, edge_load, photo_layout_validation), the flow-model comparison, the input
-fuzzer and the photo-to-layout pipeline (photolayout, layout_from_photo). docs/model/architecture.md
-lists every module's concern. The commands in scripts/ are thin entry points over it; from a
-notebook, put tools/ on sys.path and `from icedem_tools import results`."""
+"""icedem's Python tools, in rooms by what they do, lowest first; a room imports only from rooms
+below it (tests/cli/test_architecture.py checks it, and that no module imports itself back):
+
+- runs: one run: running icedem (runner), reading what it writes (results), sweep files (spec),
+  the guard of every file a tool writes (output_guard), pieces, breaks and XDMF views of a run;
+- stats: the statistics of a verdict: error against cost (pareto);
+- sweeps: sweeps of runs (sweep, execute) and their aggregation over seeds (aggregate);
+- reports: a sweep's report beside the seed paper, its tables, figures, pictures and movies;
+- studies: the studies and validations, each running its sweep file and writing its page;
+- fuzzing: the input fuzzer; photo: floe layouts from photos.
+
+docs/model/architecture.md lists every module's concern. The commands in scripts/ are thin entry
+points over it; from a notebook, put tools/ on sys.path and `from icedem_tools.runs import results`."""

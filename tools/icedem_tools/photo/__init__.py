@@ -1,0 +1,1 @@
+"""Floe layouts from top-view photos, and their validation on synthetic photos."""

@@ -1,0 +1,1 @@
+"""One run: running icedem, reading what it writes, sweep files, the guard of every output."""

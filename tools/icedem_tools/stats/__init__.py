@@ -1,0 +1,1 @@
+"""The statistics the verdicts are made with."""

@@ -1,0 +1,79 @@
+"""The project's one verdict on a change: a number of a setting against the reference's, with its 95 %
+interval over seeds, judged against a tolerance (change_verdict), per criterion over the seeds both
+ran (judge); breaks compared as Poisson rates (breaks_agree); a change as a log ratio (log_change)."""
+import math
+
+import numpy as np
+
+from .intervals import mean_ci
+
+
+def change_verdict(interval, tolerance):
+    """The project's one rule for a change of a number with its 95 % interval (lo, hi),
+    against a tolerance (the same units; None: no tolerance): "within" when the whole interval
+    lies inside +-tolerance, "beyond" when the whole interval lies outside it, "moves" when it
+    excludes no change but the seeds cannot tell its size against the tolerance (it straddles
+    a bound), "unresolved" otherwise (or without an interval). scripts/full_runs accepts a
+    setting on it and the paper report judges its findings' convergence on it."""
+    if interval is None:
+        return "unresolved"
+    lo, hi = interval
+    if tolerance is not None and -tolerance <= lo and hi <= tolerance:
+        return "within"
+    if tolerance is not None and (lo > tolerance or hi < -tolerance):
+        return "beyond"
+    return "moves" if lo > 0 or hi < 0 else "unresolved"
+
+
+def breaks_agree(e, ref):
+    """Whether a setting's floes break as often as the reference's ("floes_broken" per run in
+    both ensembles): the exact test of two Poisson rates (given the total count, the setting's
+    share is binomial with its share of the runs), two-sided at 5 %. Floes, not joints: joints
+    break in clusters (a floe at several in a step or two), the floes are the independent events.
+    At the paper's strength a floe breaks in one run of several, where Student's interval of the
+    reference would be [0, 0] after five runs without one."""
+    from scipy.stats import binomtest
+    k1, k2 = round(e["floes_broken"][0] * e["n"]), round(ref["floes_broken"][0] * ref["n"])
+    if k1 + k2 == 0:
+        return True
+    return binomtest(k1, k1 + k2, e["n"] / (e["n"] + ref["n"])).pvalue >= 0.05
+
+
+def judge(e, ref, tolerances):
+    """A setting's ensemble against the reference's, by the project's one rule: per criterion of
+    `tolerances` ({name: bound on the relative change}) that both have, the relative change over
+    the seeds both ran, paired seed by seed (the same seed is the same floe layout, so a layout's
+    own effect drops out), with the half-width of its 95 % interval and change_verdict's verdict
+    (with one common seed its point estimate alone is judged); whether floes break as often
+    (breaks_agree, where both count them); overall "yes" when every criterion is within and the
+    floes agree, "no" when one is beyond or they do not, else "undecided".
+    Returns (changes {name: (change, half-width, verdict)}, floes agree, overall, seeds paired)."""
+    common = [x for x in e["seeds"] if x in ref["seeds"]]
+    out = {}
+    for k, bound in tolerances.items():
+        if k not in e["runs"] or k not in ref["runs"] or not common:
+            continue
+        a = np.array([e["runs"][k][e["seeds"].index(x)] for x in common])
+        b = np.array([ref["runs"][k][ref["seeds"].index(x)] for x in common])
+        if not b.mean():
+            continue
+        diff = (a - b) / b.mean()
+        d = float(diff.mean())
+        hw = float("nan") if len(common) < 2 else mean_ci(diff)[1] if diff.any() else 0.0
+        out[k] = (d, hw, change_verdict((d, d) if len(common) < 2 else (d - hw, d + hw), bound))
+    floes_ok = breaks_agree(e, ref) if "floes_broken" in e and "floes_broken" in ref else True
+    verdicts = [v for _, _, v in out.values()]
+    overall = ("no" if "beyond" in verdicts or not floes_ok
+               else "yes" if verdicts and all(v == "within" for v in verdicts) else "undecided")
+    return out, floes_ok, overall, len(common)
+
+
+def log_change(pairs):
+    """(change, (lo, hi), n): the mean over seeds of log(here / default) with its 95 %
+    interval, as fractions (exp - 1); the interval is None for fewer than 2 seeds."""
+    d = [math.log(a / b) for a, b in pairs if a and b and a > 0 and b > 0]
+    if not d:
+        return None
+    m, h = mean_ci(d)
+    iv = (math.expm1(m - h), math.expm1(m + h)) if math.isfinite(h) else None
+    return math.expm1(m), iv, len(d)

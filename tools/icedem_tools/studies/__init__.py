@@ -1,0 +1,1 @@
+"""The studies and validations: each runs its sweep file and writes its page."""

@@ -1,0 +1,132 @@
+"""Level ice against the design methods: each finished run of a level-ice sweep
+(sweeps/studies/level_ice.toml, ice.cover = "level") beside ISO 19906's and Ralston's loads for its
+own cone, ice and friction (`icedem cone-load`), and where its sheet broke against the
+characteristic-length estimate of the breaking length. Reported, not tuned: the standards' loads
+are upper references (ISO's over-predicted 50 field events by a factor of about 1.6).
+
+    scripts/level_ice_report SWEEP.toml [--out DIR] [--icedem PATH] [--report PAGE.md]
+
+--out is the sweep's run directory (default sweeps/<name>); finished runs count (or their kept
+records), so it can report while the sweep runs. Without --report the page is printed."""
+import os
+import tomllib
+
+import numpy as np
+
+from ..sweeps import aggregate as agg, execute
+from ..runs import pieces, spec
+from ..reports import report_sweeps
+from ..reports.report_tables import fmt
+
+
+def design_loads(icedem, run):
+    """(`icedem cone-load --json` for the run's scenario and --set's, None) or (None, why not)."""
+    return execute.cone_load(icedem, run.scenario_file, run.sets)
+
+
+def bullet_step(run, summary):
+    """The run's Bullet step, time.dt / time.substeps (s): its summary's bullet_step_s; for a
+    record made before the summary carried it, from its scenario file and its --set's (the
+    keys' defaults 0.02 s and 1 where neither gives them); None if the file cannot be read.
+    The 0.15 m sheet's loads move with it (docs/model/breakage.md, "Level ice"), so runs at two
+    steps are not one sample."""
+    if summary.get("bullet_step_s"):
+        return float(summary["bullet_step_s"])
+    try:
+        with open(run.scenario_file, "rb") as f:
+            time = tomllib.load(f).get("time", {})
+    except (OSError, tomllib.TOMLDecodeError):
+        return None
+    dt, substeps = float(time.get("dt", 0.02)), int(time.get("substeps", 1))
+    for s in run.sets:
+        key, _, value = s.partition("=")
+        if key.strip() == "time.dt":
+            dt = float(value)
+        elif key.strip() == "time.substeps":
+            substeps = int(value)
+    return dt / substeps
+
+
+def breaking_lengths(record):
+    """The horizontal distances (m) of the broken joints from the structure's section at their
+    height (/fracture/events distance): how far from the cone the sheet broke."""
+    return np.array([e["distance"] for e in record.get("fracture_events", []) if "distance" in e], dtype=float)
+
+
+def page(sweep, out, icedem):
+    """The page's Markdown lines for the sweep file `sweep` with its runs in `out`."""
+    name, runs = spec.load(sweep)
+    L = [f"# {name}: level ice against ISO 19906 and Ralston", "",
+         f"Runs of `{os.path.relpath(sweep, spec.ROOT)}` finished so far (`scripts/level_ice_report`). "
+         "Loads over each run's analysis window, surge, N. ISO 19906 (Croasdale and Cammaert) and "
+         "Ralston (IEC 61400-3) are `icedem cone-load` for the run's own cone, ice and friction "
+         "(dem/validation/iso19906.hpp, ralston.hpp): loads of level ice failing in bending, the "
+         "references a designer checks against, with about 40 % between methods and ISO's bias of about "
+         "1.6 against field events (docs/model/validation_targets.md, 4a).", ""]
+    rows, lengths, piece_rows, lc = [], [], [], None
+    for r in runs:
+        if execute.status(r, out).state != "done":
+            continue
+        rec = agg.load_record(r, out)
+        s, w = rec["summary"], rec.get("window", {})
+        loads, why = design_loads(icedem, r)
+        lc = loads["characteristic_length_m"] if loads else lc
+        d = breaking_lengths(rec)
+        lengths.append((r.scenario, d, s.get("held_edge_overloads"), s.get("breaks_by_mode")))
+        piece_rows.append((r.scenario, rec.get("pieces")))
+        cpu, sim = s.get("cpu_time_s"), s.get("sim_time_s")
+        step = bullet_step(r, s)
+        rows.append([r.scenario, f"{loads['friction']:g}" if loads else "n/a", f"{step:g}" if step else "n/a",
+                     s.get("mean_fx_N"), w.get("p99_fx_N"), s.get("max_fx_N"),
+                     loads["total_N"] if loads else None, loads["ralston_total_N"] if loads else None,
+                     s.get("breaks"), sim / cpu if cpu and sim else None,
+                     (s.get("solver") or {}).get("capped_window_fraction"), why])
+    if not rows:
+        return L + ["No finished run yet.", ""]
+
+    L += ["| run | mu | Bullet step, s | mean | p99 | max | ISO 19906 | Ralston | max / ISO | max / Ralston | breaks "
+          "| real time (CPU) | window steps capped |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for name_, mu, step, mean, p99, mx, iso, ral, breaks, rtf, capped, why in rows:
+        L.append(f"| {name_} | {mu} | {step} | {fmt(mean)} | {fmt(p99)} | {fmt(mx)} | {fmt(iso)} | {fmt(ral)} | "
+                 f"{fmt(mx / iso if mx and iso else None, digits=2)} | {fmt(mx / ral if mx and ral else None, digits=2)} | "
+                 f"{breaks} | {fmt(rtf, digits=2)} | {'n/a' if capped is None else f'{100 * capped:.1f} %'} |")
+    L += ["", "Window steps capped: the share of the analysis window's steps whose solve stopped at "
+          "solver.method_iterations above its merit tolerance (the summary's solver block): the loads of those "
+          "steps are not converged, and a run with many of them is labelled so, not corrected. Bullet step: "
+          "time.dt / time.substeps; at 0.02 s the 0.15 m sheet's loads fall short of 0.01 s's (docs/model/"
+          "breakage.md, \"Level ice\"), so only runs at one step compare."]
+    for name_, *_, why in rows:
+        if why:
+            L.append(f"\n{name_}: no design loads ({why}).")
+    L += ["", "Where the sheet broke: the broken joints' horizontal distance from the cone's section at their "
+          "height (/fracture/events distance), against the characteristic-length estimate of the breaking "
+          "length, pi/(4 beta) = pi sqrt(2) l_c / 4 = 1.11 l_c for a semi-infinite floating beam under an "
+          "edge load" + (f" ({1.11 * lc:.3f} m, l_c {lc:.3f} m)" if lc else "") + ". A cone's breaking "
+          "front is a wedge, not a beam, and field breaking lengths are shorter. Held-edge overloads: "
+          "how often a joint between the free sheet and the held sheet reached its capacity (not broken: the "
+          "held sheet's clamp, summary held_edge_overloads); many say the radius is too small.", "",
+          "| run | breaks | median m | quartiles m | median / (1.11 l_c) | held-edge overloads | modes |",
+          "|---|---|---|---|---|---|---|"]
+    for name_, d, held, modes in lengths:
+        held = "n/a" if held is None else str(held)
+        modes = ", ".join(f"{m} {n}" for m, n in (modes or {}).items() if n) or "n/a"
+        if d.size == 0:
+            L.append(f"| {name_} | 0 | n/a | n/a | n/a | {held} | {modes} |")
+            continue
+        q1, med, q3 = np.quantile(d, [0.25, 0.5, 0.75])
+        L.append(f"| {name_} | {d.size} | {med:.3f} | {q1:.3f}-{q3:.3f} | "
+                 f"{fmt(med / (1.11 * lc) if lc else None, digits=2)} | {held} | {modes} |")
+    L += ["", "The pieces broken off the sheet at the run's end (every fragment but the sheet, `scripts/piece_sizes`): "
+          "their true areas and equivalent diameters, and the share of the broken-off area in pieces of one "
+          "element, the lattice's grain.", ""]
+    L += pieces.table(piece_rows)
+    return L + [""]
+
+
+def main(argv=None):
+    def options(ap):
+        ap.add_argument("--icedem", default=execute.DEFAULT_ICEDEM, help="the build whose `cone-load` gives the "
+                        "design loads (default build/dem/icedem)")
+    return report_sweeps.page_command(argv, __doc__, "the sweep file of level-ice runs",
+                                      lambda sweep, out, args: page(sweep, out, args.icedem), options)

@@ -1,0 +1,1 @@
+"""Sweeps of runs, their execution and their aggregation over seeds."""
