@@ -21,6 +21,8 @@ COMMANDS = {
     "level_ice_report": ("studies.level_ice_report", "a level-ice sweep's loads against ISO 19906 and Ralston, and where it broke"),
     "ladder": ("studies.ladder", "run time against error, a ladder of solver settings"),
     "budget": ("studies.budget", "the model-error budget against the tank: what each factor does to the loads"),
+    "estimator_coverage": ("studies.estimator_coverage",
+                           "which interval the verdicts use: each estimator's coverage on the budget's records"),
     "tank_maxima": ("studies.tank_maxima", "the tank's largest load against the distribution of the runs' maxima"),
     "stress": ("studies.stress", "the numerical stability stress suite"),
     "fuzz": ("fuzzing.fuzz", "fuzz icedem's input handling with mutated scenario and layout files"),

@@ -1,10 +1,13 @@
 """The project's one verdict on a change: a number of a setting against the reference's, with its 95 %
-interval over seeds, judged against a tolerance (change_verdict), per criterion over the seeds both
-ran (judge); breaks compared as Poisson rates (breaks_agree); a change as a log ratio (log_change)."""
+interval over seeds (paired: the log ratio, chosen by its coverage on the records,
+docs/model/estimators.md), judged against a tolerance (change_verdict), per criterion over the seeds
+both ran (judge); breaks compared as Poisson rates (breaks_agree); a change as a log ratio from
+pairs that may hold gaps (log_change)."""
 import math
 
 import numpy as np
 
+from . import paired_change
 from .intervals import mean_ci
 
 
@@ -39,15 +42,29 @@ def breaks_agree(e, ref):
     return binomtest(k1, k1 + k2, e["n"] / (e["n"] + ref["n"])).pvalue >= 0.05
 
 
+def paired(a, b):
+    """The change of `a` over `b` (arrays over the same seeds) and its 95 % interval (None for one
+    seed): the log ratio (paired_change.log_ratio), the estimator whose interval covers best on the
+    records (docs/model/estimators.md); where a value is not positive (a share that is 0 in a run),
+    the ratio of means with the delta method's interval, which takes zeros."""
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    estimator = paired_change.log_ratio if (a > 0).all() and (b > 0).all() else paired_change.ratio_delta
+    if len(a) < 2:
+        d = float(a.mean() / b.mean() - 1)
+        return d, None
+    d, lo, hi = estimator(a, b)
+    return float(d), (float(lo), float(hi))
+
+
 def judge(e, ref, tolerances):
     """A setting's ensemble against the reference's, by the project's one rule: per criterion of
     `tolerances` ({name: bound on the relative change}) that both have, the relative change over
     the seeds both ran, paired seed by seed (the same seed is the same floe layout, so a layout's
-    own effect drops out), with the half-width of its 95 % interval and change_verdict's verdict
-    (with one common seed its point estimate alone is judged); whether floes break as often
-    (breaks_agree, where both count them); overall "yes" when every criterion is within and the
-    floes agree, "no" when one is beyond or they do not, else "undecided".
-    Returns (changes {name: (change, half-width, verdict)}, floes agree, overall, seeds paired)."""
+    own effect drops out; `paired`), with its 95 % interval and change_verdict's verdict (with one
+    common seed its point estimate alone is judged); whether floes break as often (breaks_agree,
+    where both count them); overall "yes" when every criterion is within and the floes agree, "no"
+    when one is beyond or they do not, else "undecided".
+    Returns (changes {name: (change, (lo, hi) or None, verdict)}, floes agree, overall, seeds paired)."""
     common = [x for x in e["seeds"] if x in ref["seeds"]]
     out = {}
     for k, bound in tolerances.items():
@@ -57,15 +74,20 @@ def judge(e, ref, tolerances):
         b = np.array([ref["runs"][k][ref["seeds"].index(x)] for x in common])
         if not b.mean():
             continue
-        diff = (a - b) / b.mean()
-        d = float(diff.mean())
-        hw = float("nan") if len(common) < 2 else mean_ci(diff)[1] if diff.any() else 0.0
-        out[k] = (d, hw, change_verdict((d, d) if len(common) < 2 else (d - hw, d + hw), bound))
+        d, iv = paired(a, b)
+        out[k] = (d, iv, change_verdict(iv if iv else (d, d), bound))
     floes_ok = breaks_agree(e, ref) if "floes_broken" in e and "floes_broken" in ref else True
     verdicts = [v for _, _, v in out.values()]
     overall = ("no" if "beyond" in verdicts or not floes_ok
                else "yes" if verdicts and all(v == "within" for v in verdicts) else "undecided")
     return out, floes_ok, overall, len(common)
+
+
+def change_text(change, digits=1):
+    """A change of judge's as the pages print it: "+12.3 % (+4.0 to +21.2) (moves)"."""
+    d, iv, word = change
+    interval = f" ({100 * iv[0]:+.{digits}f} to {100 * iv[1]:+.{digits}f})" if iv else ""
+    return f"{100 * d:+.{digits}f} %{interval} ({word})"
 
 
 def log_change(pairs):

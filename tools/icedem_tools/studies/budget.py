@@ -36,6 +36,7 @@ from ..sweeps import aggregate as agg, execute
 from ..runs import output_guard, spec
 from ..stats import verdict
 from ..stats.intervals import share_text
+from ..stats.verdict import change_text
 from ..runs.spec import ROOT
 
 STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "load_budget.toml")
@@ -57,22 +58,18 @@ def ensemble(records, tank):
     return agg.ensemble(records, per_run, summary=lambda r: r["summary"], counts=lambda r: agg.finished(r["summary"]))
 
 
-def with_interval(value, half, scale=1.0, unit=""):
+def with_interval(value, half):
     """A number and the half-width of its interval ("n/a" for one seed)."""
-    hw = "n/a" if half != half else f"{scale * half:.{0 if unit else 1}f}"
-    return f"{scale * value:+.0f} %" + f" ± {hw}" if unit else f"{value:.1f} ± {hw}"
+    return f"{value:.1f} ± {'n/a' if half != half else f'{half:.1f}'}"
 
 
 def change_cell(changes, key):
-    if key not in changes:
-        return "n/a"
-    d, hw, verdict = changes[key]
-    return f"{with_interval(d, hw, 100, '%')} ({verdict})"
+    return change_text(changes[key], digits=0) if key in changes else "n/a"
 
 
 def tables(name, runs, found, tanks):
     """The budget's tables, one per scenario, as Markdown lines, and what the figure draws:
-    {scenario: [(variant label, change of the maxima, of the 5 Hz maxima: (change, half-width) or None)]}."""
+    {scenario: [(variant label, change of the maxima, of the 5 Hz maxima: (change, (lo, hi)) or None)]}."""
     lines, ranked = [], {}
     seeds = sorted({r.seed for r in runs})
     study = tomllib.load(open(STUDY_FILE, "rb"))["study"]
@@ -147,8 +144,10 @@ def figure(ranked, path):
         y = np.arange(len(rows))
         def bars(values, offset, colour, label):
             d = np.array([100 * v[0] if v else np.nan for v in values])
-            hw = np.array([100 * v[1] if v and v[1] == v[1] else 0.0 for v in values])
-            ax.errorbar(d, y + offset, xerr=hw, fmt="o", ms=3.5, color=colour, lw=1, capsize=2, label=label)
+            lo = np.array([100 * v[1][0] if v and v[1] else x for v, x in zip(values, d)])
+            hi = np.array([100 * v[1][1] if v and v[1] else x for v, x in zip(values, d)])
+            ax.errorbar(d, y + offset, xerr=[d - lo, hi - d], fmt="o", ms=3.5, color=colour, lw=1, capsize=2,
+                        label=label)
             for k in np.flatnonzero(d > XMAX):  # off the scale: named at its edge
                 ax.annotate(f"{d[k]:+.0f} % →", (XMAX, y[k] + offset), fontsize=6, color=colour, ha="right",
                             va="center")
@@ -194,8 +193,9 @@ def main(argv=None):
     today = datetime.date.today().isoformat()
     lines = [BEGIN, "", f"Made {today} by `scripts/budget` from {done} of {len(runs)} runs of "
              f"`{os.path.relpath(STUDY_FILE, ROOT)}` in `{os.path.relpath(out, ROOT)}`. "
-             "± is the half-width of the 95 % interval over the seeds; a change is paired seed by seed with the "
-             "default's run of the same layout, judged within 5 % (mean) and 10 % (p99, maxima). \"max at 5 Hz\" is "
+             "± is the half-width of the 95 % interval over the seeds. A change is paired seed by seed with the "
+             "default's run of the same layout (the log ratio, docs/model/estimators.md), its 95 % interval in "
+             "brackets, judged within 5 % (mean) and 10 % (p99, maxima). \"max at 5 Hz\" is "
              "the mean of the runs' maxima after the 5 Hz low-pass `stats.lowpass_hz` applies.", ""]
     table_lines, ranked = tables(name, runs, found, study["tank_max_N"])  # per scenario
     figure(ranked, figure_path)

@@ -75,7 +75,7 @@ def judge(e, ref):
     """The setting against the reference by the project's one rule (stats.verdict.judge): the mean
     within MEAN_TOLERANCE, p99 and mean of maxima within PEAK_TOLERANCE, each paired change's
     whole 95 % interval; floes broken as often (stats.verdict.breaks_agree).
-    Returns (changes {name: (change, half-width, verdict)}, floes agree, overall)."""
+    Returns (changes {name: (change, (lo, hi) or None, verdict)}, floes agree, overall)."""
     changes, floes_ok, overall, _ = verdict.judge(e, ref, TOLERANCE)
     return changes, floes_ok, overall
 
@@ -162,8 +162,7 @@ def report(a, runs, found, out, start, wall):
             changes, floes_ok, overall = judge(e, ref)
             ratio = e["cpu"] / base["cpu"]
             failed = f" ({e['failed']} failed)" if e["failed"] else ""
-            change = lambda k: (f"{100 * changes[k][0]:+.1f} ± {100 * changes[k][1]:.1f} % ({changes[k][2]})"
-                                if k in changes else "")
+            change = lambda k: verdict.change_text(changes[k]) if k in changes else ""  # noqa: E731
             lines.append(f"| {n} | {e['n']}{failed} | {e['mean'][0]:.2f} | {change('mean')} | {e['p99'][0]:.2f} | "
                          f"{change('p99')} | {e['max'][0]:.2f} ± {e['max'][1]:.2f} | {change('max')} | "
                          f"{e['gumbel_u']:.2f} | {e['breaks'][0]:.1f} ± {e['breaks'][1]:.1f} | "

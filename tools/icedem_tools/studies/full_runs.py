@@ -36,6 +36,7 @@ import sys
 from ..sweeps import execute
 from ..runs import output_guard, spec
 from ..sweeps.aggregate import TOP_FLOES, ensemble, fracture_figures, window_loads
+from ..stats.verdict import change_text
 from ..stats.verdict import judge as verdict_judge
 from ..runs.spec import ROOT
 
@@ -94,7 +95,7 @@ def table(name, variants, found):
             if v == REFERENCE:
                 continue
             out, breaks_ok, overall, paired = judge(e, ref)
-            row = [f"{100 * out[k][0]:+.1f} ± {100 * out[k][1]:.1f} % ({out[k][2]})" if k in out else "" for k in keys]
+            row = [change_text(out[k]) if k in out else "" for k in keys]
             lines.append(f"| {v} | {paired} | " + " | ".join(row) + f" | {'as often' if breaks_ok else 'more or fewer'} "
                          f"| {overall} |")
         lines.append("")
@@ -122,8 +123,9 @@ def main(argv=None):
              "5 %, mean of maxima within 10 % of the reference, floes breaking as often as in the reference (the exact "
              "test of two Poisson rates at 5 %: joints break in clusters, a floe at several), and for "
              f"lattices the failure ratio (the mean of the {TOP_FLOES} largest per-floe load / capacity ratios of a "
-             "run) within 5 %. ± is the half-width of the 95 % confidence interval over the seeds (of a difference: "
-             "over the seeds both runs have, paired seed by seed); a difference is *within* its bound when its whole interval is, "
+             "run) within 5 %. ± is the half-width of the 95 % confidence interval over the seeds; a difference is "
+             "paired seed by seed over the seeds both runs have (the log ratio, docs/model/estimators.md), its 95 % "
+             "interval in brackets; it is *within* its bound when its whole interval is, "
              "*beyond* when its whole interval is outside, *moves* when it excludes no change but straddles the bound, "
              "else *unresolved* by the seeds.", ""]
     for scenario in dict.fromkeys(r.scenario for r in runs):

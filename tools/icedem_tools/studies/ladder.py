@@ -135,8 +135,7 @@ def main(argv=None):
             changes, _, overall, _ = verdict.judge(e, r0, TOLERANCE)
             em, ex = changes["mean"][0], changes["max"][0]
             def cell(k):
-                d, hw, verdict = changes[k]
-                return f"{100 * d:+.1f}{'' if math.isnan(hw) else f' ± {100 * hw:.1f}'} % ({verdict})"
+                return verdict.change_text(changes[k])
             lines.append(f"| {n} | {e['mean'][0]:.2f} | {cell('mean')} | {e['max'][0]:.2f} | {cell('max')} | "
                          f"{e['breaks'][0]:.1f} | {e['cpu']:.1f} | {e['rtf']:.1f} | {e['cpu'] / d0['cpu']:.2f} | "
                          f"{overall} |")
