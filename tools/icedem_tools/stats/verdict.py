@@ -6,6 +6,7 @@ pairs that may hold gaps (log_change)."""
 import math
 
 import numpy as np
+from scipy import stats
 
 from . import paired_change
 from .intervals import mean_ci
@@ -56,6 +57,48 @@ def paired(a, b):
     return float(d), (float(lo), float(hi))
 
 
+def paired_values(e, ref, k):
+    """(a, b): criterion `k` of two ensembles over the seeds both ran, in the same order; None where
+    one has no such criterion, they share no seed, or the reference's mean is 0."""
+    common = [x for x in e["seeds"] if x in ref["seeds"]]
+    if k not in e["runs"] or k not in ref["runs"] or not common:
+        return None
+    a = np.array([e["runs"][k][e["seeds"].index(x)] for x in common])
+    b = np.array([ref["runs"][k][ref["seeds"].index(x)] for x in common])
+    return None if not b.mean() else (a, b)
+
+
+def paired_p(a, b):
+    """The two-sided p-value of "no change" for the pairs `paired` judges, by the same estimator:
+    Student's t on the seeds' log ratios (on the delta method's residuals where a value is not
+    positive). 1 for fewer than two seeds or no change at all."""
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    n = len(a)
+    if n < 2:
+        return 1.0
+    if (a > 0).all() and (b > 0).all():
+        d = np.log(a / b)
+        m, s = d.mean(), d.std(ddof=1) / math.sqrt(n)
+    else:
+        r = a.mean() / b.mean()
+        m, s = r - 1, (a - r * b).std(ddof=1) / math.sqrt(n) / b.mean()
+    if s == 0:
+        return 1.0 if m == 0 else 0.0
+    return float(2 * stats.t.sf(abs(m / s), n - 1))
+
+
+def family(pvalues, level=0.05):
+    """A page's family of changes judged at 95 % each, corrected for their number: (which hold under
+    Holm's correction, controlling the chance of any false "moves" at `level`; which under
+    Benjamini-Hochberg's, the expected share of false ones among those that hold), as boolean lists."""
+    from statsmodels.stats.multitest import multipletests
+    if not len(pvalues):
+        return [], []
+    holm = multipletests(pvalues, alpha=level, method="holm")[0]
+    bh = multipletests(pvalues, alpha=level, method="fdr_bh")[0]
+    return [bool(x) for x in holm], [bool(x) for x in bh]
+
+
 def judge(e, ref, tolerances):
     """A setting's ensemble against the reference's, by the project's one rule: per criterion of
     `tolerances` ({name: bound on the relative change}) that both have, the relative change over
@@ -68,13 +111,10 @@ def judge(e, ref, tolerances):
     common = [x for x in e["seeds"] if x in ref["seeds"]]
     out = {}
     for k, bound in tolerances.items():
-        if k not in e["runs"] or k not in ref["runs"] or not common:
+        pairs = paired_values(e, ref, k)
+        if pairs is None:
             continue
-        a = np.array([e["runs"][k][e["seeds"].index(x)] for x in common])
-        b = np.array([ref["runs"][k][ref["seeds"].index(x)] for x in common])
-        if not b.mean():
-            continue
-        d, iv = paired(a, b)
+        d, iv = paired(*pairs)
         out[k] = (d, iv, change_verdict(iv if iv else (d, d), bound))
     floes_ok = breaks_agree(e, ref) if "floes_broken" in e and "floes_broken" in ref else True
     verdicts = [v for _, _, v in out.values()]

@@ -85,7 +85,7 @@ def tables(name, runs, found, tanks):
             lines += ["The default has no finished run yet.", ""]
             continue
         k0 = int(round(base["runs"]["reach"].sum()))
-        rows = []
+        rows, tests = [], []  # tests: (label, criterion, p of "no change") of every change judged
         for n in names:
             e = ens[n]
             if e is None:
@@ -100,6 +100,9 @@ def tables(name, runs, found, tanks):
                 changes, p = {}, None
             else:
                 changes, _, _, _ = verdict.judge(e, ref, TOLERANCE)
+                for c in changes:
+                    tests.append((n if against == study["baseline"] else f"{n} (against {against})", c,
+                                  verdict.paired_p(*verdict.paired_values(e, ref, c))))
                 k_ref = int(round(ref["runs"]["reach"].sum()))
                 p = stats.fisher_exact([[k, e["n"] - k], [k_ref, ref["n"] - k_ref]])[1]
             label = n if against == study["baseline"] else f"{n} (against {against})"
@@ -120,7 +123,22 @@ def tables(name, runs, found, tanks):
                   "runs reaching the tank (95 %) | at 5 Hz | Fisher p | CPU s/run |",
                   "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         lines += [row for _, row in sorted(rows, key=lambda x: -x[0])] + [""]
+        lines += multiplicity(tests)
     return lines, ranked
+
+
+def multiplicity(tests):
+    """A scenario's family of changes judged at 95 % each, and what holds of them corrected for their
+    number (stats.verdict.family), as Markdown lines."""
+    if not tests:
+        return []
+    holm, bh = verdict.family([p for _, _, p in tests])
+    raw = sum(p < 0.05 for _, _, p in tests)
+    held = [f"{label}: {c}" for (label, c, _), h in zip(tests, holm) if h]
+    return [f"Of its {len(tests)} changes, {raw} exclude no change at 95 % each (about {0.05 * len(tests):.1f} would by "
+            f"chance if nothing changed); {sum(holm)} hold under Holm's correction over the {len(tests)} (the chance of "
+            f"any false one 5 %), {sum(bh)} under Benjamini-Hochberg's (a 5 % share of false ones expected)"
+            + (f": {'; '.join(held)}." if held else "."), ""]
 
 
 def figure(ranked, path):
