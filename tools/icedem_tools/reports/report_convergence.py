@@ -214,15 +214,30 @@ def mechanism_rows(got, numerics_list):
     return rows
 
 
-def headline_section(got, pooled=True):
+def step_label(numerics, model, steps):
+    """The numerics with the two Bullet steps its change compares, "dt_half (0.01 s against 0.02 s)";
+    the name alone where the steps are not known (a model of the ratios: its two models' steps)."""
+    here, default = steps.get((model, numerics)), steps.get((model, "default"))
+    if here is None or default is None:
+        return numerics
+    return f"{numerics} ({here:g} s against {default:g} s)"
+
+
+def headline_section(got, pooled=True, steps=None):
     """Markdown lines: the table of every headline number's change with the numerics, and a
     sentence listing those that move. `got`: {(model, numerics): {seed: summary}}; `pooled`:
-    whether it holds the supplements' and the grid's runs too (the report's), or one sweep's."""
+    whether it holds the supplements' and the grid's runs too (the report's), or one sweep's;
+    `steps`: {(model, numerics): Bullet step s}, to label each change with the steps it compares."""
     numerics_list = sorted({n for _, n in got} - {"default"})
     rows = (load_rows(got, numerics_list) + ratio_rows(got, numerics_list) + breaks_rows(got, numerics_list)
             + mechanism_rows(got, numerics_list))
     if not rows:
         return []
+    if steps:
+        models = sorted({m for m, _ in got}, key=len, reverse=True)
+        def model_of(number):
+            return next((m for m in models if number.startswith(m + " ")), None)
+        rows = [(r[0], step_label(r[1], model_of(r[0]), steps)) + tuple(r[2:]) for r in rows]
     L = ["### Are the findings converged?", "",
          "Each headline number at the friction of the convergence runs (the grid's models: the reference "
          "f_ii 0.5, f_is 0.2) at the default numerics "

@@ -207,7 +207,25 @@ def convergence_section(conv_sweep, records, title="## Convergence of the grid's
     if same or differ:
         L += ["", f"The default runs repeat the grid's: {same} of {same + len(differ)} runs give the same max load "
               "to the last digit" + (" (**not**: " + "; ".join(differ) + ")" if differ else "") + "."]
-    return L + [""] + headline_section(pooled_numerics(got, records, supplements))
+    return L + [""] + headline_section(pooled_numerics(got, records, supplements),
+                                       steps=compared_steps(runs, records, supplements))
+
+
+def compared_steps(runs, records, supplements):
+    """{(model, numerics): Bullet step s} of the pooled runs (pooled_numerics): the grid's own runs at the
+    reference friction give each model's default, the convergence sweep and its supplements the other
+    numerics. The report labels each change with the two steps it compares, since a model's scenario
+    can take another step than it did when its checks were run."""
+    steps = {}
+    for r in list(runs) + [r for _, _, rs, _, _ in supplements for r in rs]:
+        model, plus, numerics = r.scenario.partition("+")
+        if plus:
+            steps.setdefault((model, numerics), set()).add(round(spec.bullet_step(r), 9))
+    for model, rows in records.items():
+        grid = {round(spec.bullet_step(r), 9) for r, _ in rows if at_reference(r)}
+        if grid:
+            steps[(model, "default")] = grid
+    return {k: v.pop() if len(v) == 1 else None for k, v in steps.items()}
 
 
 def page_command(argv, doc, sweep_help, page, add_options=None):

@@ -223,3 +223,25 @@ def load(path, seeds=None, extra=()):
                                  + [f"seed={seed}"])
                     runs.append(Run(sc_name, full, g, seed, sets, records, variant))
     return name, runs
+
+
+def key_default(key):
+    """A scenario key's default as icedem declares it (docs/user/scenario_keys.md, made by `icedem keys`)."""
+    for line in open(os.path.join(ROOT, "docs", "user", "scenario_keys.md"), encoding="utf-8"):
+        if line.startswith(f"| `{key}` |"):
+            return tomllib.loads("v = " + line.split("|")[3].strip().strip("`"))["v"]
+    raise KeyError(key)
+
+
+def bullet_step(run):
+    """The Bullet step a run takes, time.dt / time.substeps, s: from its --set values (the last wins),
+    else its scenario file, else icedem's defaults. Read from what the sweep declares, since a run's
+    record keeps only its outer step."""
+    with open(run.scenario_file, "rb") as f:
+        time = tomllib.load(f).get("time", {})
+    values = {"dt": time.get("dt", key_default("time.dt")), "substeps": time.get("substeps", key_default("time.substeps"))}
+    for s in run.sets:
+        key, _, value = s.partition("=")
+        if key in ("time.dt", "time.substeps"):
+            values[key[5:]] = tomllib.loads("v = " + value)["v"]
+    return values["dt"] / values["substeps"]
