@@ -31,7 +31,7 @@ import numpy as np
 from scipy import stats
 
 from ..stats.intervals import mean_ci
-from ..stats.verdict import change_verdict, log_change
+from ..stats.verdict import change_verdict, family, log_change, paired_p
 from ..runs import spec
 from .report_breakage import BOOTSTRAP, interval, resampled_shares
 
@@ -86,6 +86,22 @@ def paired_load_change(got, model, numerics, key):
     base, runs = got.get((model, "default"), {}), got.get((model, numerics), {})
     seeds = sorted(set(runs) & set(base))
     return seeds, log_change([(runs[s].get(key), base[s].get(key)) for s in seeds])
+
+
+def load_pvalues(got, numerics_list):
+    """The p-values of "no change" of load_rows' changes, in their order (stats.verdict.paired_p: the
+    same log ratios the rows' intervals are made of)."""
+    out = []
+    for model in dict.fromkeys(m for m, _ in got):
+        base = got.get((model, "default"), {})
+        for key, _, _ in LOADS:
+            for numerics in numerics_list:
+                runs = got.get((model, numerics), {})
+                pairs = [(runs[s].get(key), base[s].get(key)) for s in sorted(set(runs) & set(base))]
+                pairs = [(a, b) for a, b in pairs if a and b and a > 0 and b > 0]
+                if pairs:
+                    out.append(paired_p([a for a, _ in pairs], [b for _, b in pairs]))
+    return out
 
 
 def load_rows(got, numerics_list):
@@ -263,6 +279,12 @@ def headline_section(got, pooled=True, steps=None):
     moved = [f"{r[0]} with {r[1]} ({r[5]})" for r in rows if r[6] == "**moves**"]
     within = sum(1 for r in rows if r[6] == "within")
     L += [""]
+    ps = load_pvalues(got, numerics_list)
+    if ps:
+        holm, bh = family(ps)
+        L += [f"Of its {len(ps)} load changes, {sum(p < 0.05 for p in ps)} exclude no change at 95 % each (about "
+              f"{0.05 * len(ps):.1f} would by chance if nothing changed); {sum(holm)} hold under Holm's correction over "
+              f"the {len(ps)}, {sum(bh)} under Benjamini-Hochberg's.", ""]
     if beyond:
         L += [f"Beyond tolerance with the numerics: {'; '.join(beyond)}."]
     if moved:
