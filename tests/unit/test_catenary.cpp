@@ -1,0 +1,122 @@
+// The elastic catenary of a mooring line (dem/mooring/catenary.hpp) against its closed forms: the
+// inextensible line's tension for a given span, an elastic line's tension and stiffness, the stiffness
+// against the solver's own finite differences, a line hanging whole, a slack line, the seabed's
+// friction, and bad input refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "dem/mooring/catenary.hpp"
+
+namespace icedem {
+namespace {
+
+// the example line: 6 m, 2 N/m submerged, its fairlead 2 m above the anchor
+constexpr double kLength = 6.0, kWeight = 2.0, kHeight = 2.0;
+
+CatenaryLine line(double ea, double cb = 0) { return CatenaryLine{kLength, kWeight, ea, cb}; }
+
+// An inextensible line partly on the seabed, in closed form from its horizontal tension: the hanging
+// part's vertical tension VF = sqrt(w^2 ZF^2 + 2 w ZF HF), and its span XF = L - VF/w + (HF/w) asinh(VF/HF)
+TEST(Catenary, AnInextensibleLineReturnsTheTensionItsSpanWasMadeFrom) {
+  // the reference's round trip: (HF, XF) = (0.5, 4.48575), (1, 4.69673), (2, 4.93432), (4, 5.16981) N, m
+  const double table[][2] = {{0.5, 4.48575}, {1.0, 4.69673}, {2.0, 4.93432}, {4.0, 5.16981}};
+  for (const auto& [hf, xf_table] : table) {
+    const double vf = std::sqrt(kWeight * kWeight * kHeight * kHeight + 2 * kWeight * kHeight * hf);
+    const double xf = kLength - vf / kWeight + hf / kWeight * std::asinh(vf / hf);
+    EXPECT_NEAR(xf, xf_table, 5e-6) << "the closed form reproduces the table's five digits";
+    // EA 1e12 N: the stretch, HF L / EA, is 1e-11 m at most: the inextensible line to round-off
+    const CatenaryState s = solve_catenary(line(1e12), xf, kHeight);
+    EXPECT_NEAR(s.horizontal, hf, 1e-8 * hf) << "HF " << hf;
+    EXPECT_NEAR(s.vertical, vf, 1e-8 * vf);
+    EXPECT_NEAR(s.laid_length, kLength - vf / kWeight, 1e-8);
+    EXPECT_DOUBLE_EQ(s.anchor_horizontal, s.horizontal) << "no seabed friction: the anchor takes all of HF";
+    EXPECT_EQ(s.anchor_vertical, 0.0);
+  }
+}
+
+// The reference's elastic example (EA 5e4 N), derived with the same equations: tensions, laid length and
+// stiffness to the digits given
+TEST(Catenary, AnElasticLinesTensionAndStiffness) {
+  struct Row { double xf, hf, vf, laid, k[2][2]; };
+  const Row rows[] = {{5.4, 8.658, 9.233, 1.384, {{32.51, 14.08}, {14.08, 8.84}}},
+                      {5.5, 12.937, 10.930, 0.535, {{55.83, 20.42}, {20.42, 10.57}}}};
+  for (const Row& r : rows) {
+    const CatenaryState s = solve_catenary(line(5e4), r.xf, kHeight);
+    EXPECT_NEAR(s.horizontal, r.hf, 6e-4) << r.xf;
+    EXPECT_NEAR(s.vertical, r.vf, 6e-4);
+    EXPECT_NEAR(s.laid_length, r.laid, 6e-4);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) EXPECT_NEAR(s.stiffness(i, j), r.k[i][j], 6e-3) << i << j;
+    EXPECT_LT(s.iterations, 30);
+  }
+  // four such lines at 45, 135, 225 and 315 degrees: K11 = 2 (k_HH + HF / XF) = 68.2 N/m at 5.4 m
+  const CatenaryState s = solve_catenary(line(5e4), 5.4, kHeight);
+  EXPECT_NEAR(2 * (s.stiffness(0, 0) + s.horizontal / 5.4), 68.2, 0.05);
+}
+
+// The stiffness is the inverse of the equations' analytic Jacobian: it must be what solving again at a
+// nearby position gives (central differences, 1e-6 m: their error is of order 1e-12 relative)
+void expect_stiffness_is_the_solvers(const CatenaryLine& l, double xf, double zf) {
+  const CatenaryState s = solve_catenary(l, xf, zf);
+  const double d = 1e-6;
+  for (int j = 0; j < 2; ++j) {
+    const CatenaryState plus = solve_catenary(l, xf + (j == 0 ? d : 0), zf + (j == 1 ? d : 0));
+    const CatenaryState minus = solve_catenary(l, xf - (j == 0 ? d : 0), zf - (j == 1 ? d : 0));
+    const double dh = (plus.horizontal - minus.horizontal) / (2 * d), dv = (plus.vertical - minus.vertical) / (2 * d);
+    const double scale = s.stiffness.cwiseAbs().maxCoeff();
+    EXPECT_NEAR(s.stiffness(0, j), dh, 1e-6 * scale) << "d HF / d " << (j ? "ZF" : "XF") << " at " << xf;
+    EXPECT_NEAR(s.stiffness(1, j), dv, 1e-6 * scale) << "d VF / d " << (j ? "ZF" : "XF") << " at " << xf;
+  }
+}
+
+TEST(Catenary, TheStiffnessIsTheSolversOwnDerivative) {
+  expect_stiffness_is_the_solvers(line(5e4), 5.4, kHeight);         // on the seabed
+  expect_stiffness_is_the_solvers(line(5e4), 5.9, kHeight);         // hanging whole, stretched
+  expect_stiffness_is_the_solvers(line(5e4, 0.5), 5.0, kHeight);    // friction, tension zero on the seabed
+  expect_stiffness_is_the_solvers(line(5e4, 0.05), 5.45, kHeight);  // friction, tension all along
+}
+
+// Hanging whole, the line carries its own weight: VF - VA = w L; and a stretched span beyond the
+// unstretched length is reached by the stretch
+TEST(Catenary, ALineHangingWholeCarriesItsWeight) {
+  const CatenaryState s = solve_catenary(line(5e4), 5.9, kHeight);  // sqrt(5.9^2 + 2^2) = 6.23 m > 6 m
+  EXPECT_EQ(s.laid_length, 0.0);
+  EXPECT_NEAR(s.vertical - s.anchor_vertical, kWeight * kLength, 1e-9);
+  EXPECT_GT(s.horizontal, 100.0) << "pulled taut: the span is the stretch";
+}
+
+// So slack that it hangs straight down from the fairlead: no horizontal tension, the hanging part's weight
+TEST(Catenary, ASlackLineHangsStraightDown) {
+  const double ea = 5e4;
+  const CatenaryState s = solve_catenary(line(ea), 2.0, kHeight);
+  const double hanging = 2 * kHeight / (1 + std::sqrt(1 + 2 * kHeight * kWeight / ea));
+  EXPECT_NEAR(hanging + kWeight * hanging * hanging / (2 * ea), kHeight, 1e-12) << "stretched by its own weight";
+  EXPECT_EQ(s.horizontal, 0.0);
+  EXPECT_NEAR(s.vertical, kWeight * hanging, 1e-12);
+  EXPECT_NEAR(s.laid_length, kLength - hanging, 1e-12);
+}
+
+// Friction on the laid part takes some of the tension before the anchor: HA = max(HF - CB w L_B, 0), and
+// the laid part stretches less, so the same span needs a little more tension than without it
+TEST(Catenary, SeabedFrictionTakesTensionBeforeTheAnchor) {
+  const CatenaryState free = solve_catenary(line(5e4), 5.4, kHeight);
+  const CatenaryState held = solve_catenary(line(5e4, 1.0), 5.4, kHeight);
+  EXPECT_NEAR(held.anchor_horizontal, std::max(held.horizontal - 1.0 * kWeight * held.laid_length, 0.0), 1e-12);
+  EXPECT_LT(held.anchor_horizontal, held.horizontal);
+  EXPECT_GT(held.horizontal, free.horizontal);
+  EXPECT_LT(held.horizontal, 1.001 * free.horizontal) << "the stretch is small beside the span: a small effect";
+}
+
+TEST(Catenary, BadLinesAndPositionsAreRefused) {
+  EXPECT_THROW(solve_catenary(CatenaryLine{0, 2, 5e4}, 5, 2), std::invalid_argument);
+  EXPECT_THROW(solve_catenary(CatenaryLine{6, -2, 5e4}, 5, 2), std::invalid_argument);
+  EXPECT_THROW(solve_catenary(CatenaryLine{6, 2, NAN}, 5, 2), std::invalid_argument);
+  EXPECT_THROW(solve_catenary(CatenaryLine{6, 2, 5e4, -1}, 5, 2), std::invalid_argument);
+  EXPECT_THROW(solve_catenary(line(5e4), 5, 0), std::invalid_argument) << "a fairlead on the seabed";
+  EXPECT_THROW(solve_catenary(line(5e4), -1, 2), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace icedem
