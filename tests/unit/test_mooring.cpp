@@ -1,13 +1,14 @@
-// The elastic catenary of a mooring line (dem/mooring/catenary.hpp) against its closed forms: the
+// The mooring room (dem/mooring/): the elastic catenary of one line against its closed forms (the
 // inextensible line's tension for a given span, an elastic line's tension and stiffness, the stiffness
 // against the solver's own finite differences, a line hanging whole, a slack line, the seabed's
-// friction, and bad input refused.
+// friction, bad input refused), and a spread of lines on a body against the reference's solved offsets.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
 #include "dem/mooring/catenary.hpp"
+#include "dem/mooring/spread.hpp"
 
 namespace icedem {
 namespace {
@@ -116,6 +117,63 @@ TEST(Catenary, BadLinesAndPositionsAreRefused) {
   EXPECT_THROW(solve_catenary(CatenaryLine{6, 2, 5e4, -1}, 5, 2), std::invalid_argument);
   EXPECT_THROW(solve_catenary(line(5e4), 5, 0), std::invalid_argument) << "a fairlead on the seabed";
   EXPECT_THROW(solve_catenary(line(5e4), -1, 2), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace icedem
+
+namespace icedem {
+namespace {
+
+// The reference's spread: four of the elastic example's lines at 45, 135, 225 and 315 degrees, each
+// anchor 5.4 m from its fairlead horizontally and 2 m below it, the fairleads at the body's point
+std::vector<MooringLine> four_lines() {
+  std::vector<MooringLine> out;
+  for (double deg : {45.0, 135.0, 225.0, 315.0}) {
+    const double a = deg * M_PI / 180;
+    out.push_back(MooringLine{Eigen::Vector3d(5.4 * std::cos(a), -2.0, 5.4 * std::sin(a)), Eigen::Vector3d::Zero(),
+                              CatenaryLine{6.0, 2.0, 5e4, 0}});
+  }
+  return out;
+}
+
+TEST(MooringSpread, FourLinesHoldTheBodyInPlace) {
+  const MooringLoad at_rest = mooring_load(four_lines(), Eigen::Vector3d::Zero());
+  EXPECT_NEAR(at_rest.force.x(), 0, 1e-12);
+  EXPECT_NEAR(at_rest.force.z(), 0, 1e-12);
+  EXPECT_NEAR(at_rest.force.y(), -4 * at_rest.lines[0].vertical, 1e-12) << "the lines' pull down";
+  EXPECT_NEAR(-at_rest.force.y(), 36.9, 0.05) << "the reference's 4 x 9.23 N";
+}
+
+// Offset in surge, every line solved again: the reference's restoring forces 0.683, 3.44 and 7.03 N at
+// 0.01, 0.05 and 0.10 m (secant stiffness 68.3, 68.7, 70.3 N/m: the spread stiffens as it is pulled)
+TEST(MooringSpread, AnOffsetIsRestoredAsTheReferenceSolvedIt) {
+  const double offsets[] = {0.01, 0.05, 0.10}, forces[] = {0.683, 3.44, 7.03};
+  for (int k = 0; k < 3; ++k) {
+    const MooringLoad l = mooring_load(four_lines(), Eigen::Vector3d(offsets[k], 0, 0));
+    EXPECT_NEAR(-l.force.x(), forces[k], 0.006 * forces[k] + 0.001) << offsets[k] << " m";
+    EXPECT_NEAR(l.force.z(), 0, 1e-12) << "symmetric in sway";
+  }
+  // the linear stiffness of the spread, 2 (k_HH + HF / XF), is the small offset's secant
+  const CatenaryState s = solve_catenary(CatenaryLine{6.0, 2.0, 5e4, 0}, 5.4, 2.0);
+  const double k11 = 2 * (s.stiffness(0, 0) + s.horizontal / 5.4);
+  const MooringLoad small = mooring_load(four_lines(), Eigen::Vector3d(1e-5, 0, 0));
+  EXPECT_NEAR(-small.force.x() / 1e-5, k11, 1e-3 * k11);
+}
+
+// A fairlead off the reference point: its line's force acts there, so the body feels a moment
+TEST(MooringSpread, AFairleadOffThePointGivesAMoment) {
+  std::vector<MooringLine> one = {MooringLine{Eigen::Vector3d(5.4, -2.0, 0), Eigen::Vector3d(0, 0, 0.5),
+                                              CatenaryLine{6.0, 2.0, 5e4, 0}}};
+  one[0].anchor.z() = 0.5;  // the line in the x-y plane through the fairlead
+  const MooringLoad l = mooring_load(one, Eigen::Vector3d::Zero());
+  const Eigen::Vector3d expected = Eigen::Vector3d(0, 0, 0.5).cross(l.force);
+  EXPECT_NEAR((l.moment - expected).norm(), 0, 1e-12);
+  EXPECT_GT(l.moment.norm(), 1.0);
+  EXPECT_THROW(mooring_load({MooringLine{Eigen::Vector3d(5, 1, 0), Eigen::Vector3d::Zero(), CatenaryLine{6, 2, 5e4}}},
+                            Eigen::Vector3d::Zero()),
+               std::invalid_argument)
+      << "an anchor above its fairlead";
 }
 
 }  // namespace
