@@ -51,7 +51,7 @@ with tempfile.TemporaryDirectory() as d:
     made = open(page).read()
     begin = made.index("<!-- estimator coverage")
     cmd = re.search(r"`scripts/estimator_coverage ([^`]*)`", made[begin:]).group(1).split()
-    open(out, "w").write(made[:begin])  # the page's own text, so that the block lands where it was
+    open(out, "w").write(made)  # the page's own text stays; the tool replaces its block
     p = subprocess.run([os.path.join(ROOT, "scripts", "estimator_coverage"), *cmd, "--report", out],
                        capture_output=True, text=True)
     again = open(out).read()

@@ -37,6 +37,7 @@ from ..runs import output_guard, spec
 from ..stats import verdict
 from ..stats.intervals import share_text
 from ..stats.verdict import change_text
+from ..reports import spans
 from ..runs.spec import ROOT
 
 STUDY_FILE = os.path.join(ROOT, "sweeps", "studies", "load_budget.toml")
@@ -70,7 +71,7 @@ def change_cell(changes, key):
 def tables(name, runs, found, tanks):
     """The budget's tables, one per scenario, as Markdown lines, and what the figure draws:
     {scenario: [(variant label, change of the maxima, of the 5 Hz maxima: (change, (lo, hi)) or None)]}."""
-    lines, ranked = [], {}
+    lines, ranked, facts = [], {}, {}
     seeds = sorted({r.seed for r in runs})
     study = tomllib.load(open(STUDY_FILE, "rb"))["study"]
     for m in dict.fromkeys(r.scenario for r in runs):
@@ -105,6 +106,7 @@ def tables(name, runs, found, tanks):
                                   verdict.paired_p(*verdict.paired_values(e, ref, c))))
                 k_ref = int(round(ref["runs"]["reach"].sum()))
                 p = stats.fisher_exact([[k, e["n"] - k], [k_ref, ref["n"] - k_ref]])[1]
+            facts[(m, n)] = {"e": e, "changes": changes, "reach": k}
             label = n if against == study["baseline"] else f"{n} (against {against})"
             cells = [label, str(e["n"]), with_interval(*e["mean"]), change_cell(changes, "mean"),
                      with_interval(*e["p99"]), change_cell(changes, "p99"),
@@ -124,7 +126,28 @@ def tables(name, runs, found, tanks):
                   "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         lines += [row for _, row in sorted(rows, key=lambda x: -x[0])] + [""]
         lines += multiplicity(tests)
-    return lines, ranked
+    return lines, ranked, facts
+
+
+def resolver(facts):
+    """What the page's prose spans (reports/spans.py) name, "SCENARIO | VARIANT | WHAT": WHAT a
+    criterion of TOLERANCE, its change against the run the variant is paired with, with its interval
+    and verdict; "CRITERION N" its mean over the seeds with its half-width; "reach" and "reach5" the
+    runs reaching the tank as recorded and at 5 Hz, "k of n"."""
+    def resolve(key):
+        m, n, what = (x.strip() for x in key.split("|"))
+        f = facts[(m, n)]
+        e = f["e"]
+        if what in TOLERANCE:
+            return change_text(f["changes"][what], digits=0)
+        if what.endswith(" N") and what[:-2] in TOLERANCE:
+            return f"{with_interval(*e[what[:-2]])} N"
+        if what == "reach":
+            return f"{f['reach']} of {e['n']}"
+        if what == "reach5":
+            return f"{int(round(e['runs']['reach5'].sum()))} of {e['n']}"
+        raise KeyError(key)
+    return resolve
 
 
 def multiplicity(tests):
@@ -215,13 +238,17 @@ def main(argv=None):
              "default's run of the same layout (the log ratio, docs/model/estimators.md), its 95 % interval in "
              "brackets, judged within 5 % (mean) and 10 % (p99, maxima). \"max at 5 Hz\" is "
              "the mean of the runs' maxima after the 5 Hz low-pass `stats.lowpass_hz` applies.", ""]
-    table_lines, ranked = tables(name, runs, found, study["tank_max_N"])  # per scenario
+    table_lines, ranked, facts = tables(name, runs, found, study["tank_max_N"])  # per scenario
     figure(ranked, figure_path)
     lines += [f"![each variant's change of the maxima, ranked]({os.path.basename(figure_path)})", ""]
     lines += table_lines + [END]
     text = "\n".join(lines)
     print(text)
     page = open(path).read() if os.path.isfile(path) else ""
+    try:  # the numbers of the page's own text, in their spans
+        page = spans.fill(page, resolver(facts))
+    except spans.UnknownKey as e:
+        sys.exit(f"scripts/budget: {path}: {e}")
     if BEGIN in page and END in page:  # the page's own text stays; the tables are replaced
         text = page[:page.index(BEGIN)] + text + page[page.index(END) + len(END):]
     else:

@@ -1,0 +1,33 @@
+"""Numbers in a page's prose made by the tool that makes the page: a marked span
+
+    <!-- = KEY -->text<!-- end -->
+
+holds what the tool's resolver gives for KEY (a change with its interval and verdict, a count, a
+mean); the tool replaces every span's text each time it writes the page, and a test that makes the
+page again from the committed records fails on any difference. The markers do not show in the
+rendered page; a number typed outside a span is one no tool answers for."""
+import re
+
+SPAN = re.compile(r"<!-- = (.+?) -->(.*?)<!-- end -->", re.S)
+
+
+class UnknownKey(KeyError):
+    pass
+
+
+def fill(text, resolve):
+    """`text` with every span's content replaced by resolve(KEY); UnknownKey names a key the resolver
+    does not know (resolve raises KeyError for it)."""
+    def one(m):
+        key = m.group(1).strip()
+        try:
+            value = resolve(key)
+        except KeyError:
+            raise UnknownKey(f"the page's span <!-- = {key} --> names nothing the tool makes") from None
+        return f"<!-- = {key} -->{value}<!-- end -->"
+    return SPAN.sub(one, text)
+
+
+def keys(text):
+    """The keys of the page's spans, in order."""
+    return [m.group(1).strip() for m in SPAN.finditer(text)]
