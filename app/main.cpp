@@ -119,7 +119,8 @@ int run_command(const std::string& scenario_path, std::string output, const std:
   if (output.empty()) output = std::filesystem::path(scenario_path).stem().string() + ".h5";
   // a killed run's output is continued by resume; starting it over loses its progress, so only
   // on request (a finished or failed run's output is replaced, as a re-run is meant to)
-  const RunFiles before = look_at_run(output);
+  // (only a checkpoint makes a run resumable: without one, the output is not read here)
+  const RunFiles before = std::filesystem::exists(checkpoint_path(output)) ? look_at_run(output) : RunFiles{};
   if (before.resumable() && !restart)
     throw InputError(fmt::format(
         "{} {}: a killed run's output ({}), resumable from its checkpoint {}: `icedem resume {}` continues it; "

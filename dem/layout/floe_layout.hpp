@@ -82,6 +82,9 @@ struct Layout {
   double channel_area = 0.0;            // m^2, (x_max - x_min) (z_max - z_min)
   double achieved_concentration = 0.0;  // total floe area / channel_area
   double acceptance_rate = 0.0;         // fraction of Monte-Carlo moves accepted (0 if none)
+  // per floe, the elements its lattice is cut into if it is breakable (0: rigid, or not counted);
+  // counted once where a scene's floes are checked (scene_layout), for its warnings
+  std::vector<std::size_t> floe_elements;
 };
 
 /// Generates N = round(C A / L^2) non-overlapping square floes in the channel

@@ -172,20 +172,18 @@ std::optional<std::string> no_ice_met_warning(const Scene& scene, const Layout& 
 
 // Breakable floes narrower than an element, or cut into one element only: a single element has no
 // joint and never breaks, and a floe narrower than the elements is cut into parts of cells, not
-// into the elements asked
+// into the elements asked (the counts scene_layout made)
 std::optional<std::string> element_size_warning(const Scene& scene, const Layout& layout) {
-  if (scene.validation.kind != ValidationKind::kNone || scene.ice.cover != IceCover::kFloes) return std::nullopt;
+  if (scene.validation.kind != ValidationKind::kNone || scene.ice.cover != IceCover::kFloes ||
+      layout.floe_elements.size() != layout.floes.size())
+    return std::nullopt;
   const double size = scene.fracture.element_size;
   int flagged = 0, first = -1, single = 0;
   double narrowest = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < layout.floes.size(); ++k) {
-    const Polygon& shape = layout.floes[k].shape;
-    if (!is_breakable(scene, shape)) continue;
-    double yaw = 0;
-    const std::size_t elements = paper_lattice(shape, scene.fracture)
-                                     ? floe_lattice(shape, size, yaw).centres.size()
-                                     : floe_outline_lattice(shape, scene.fracture, yaw).elements.size();
-    const double width = least_width(shape);
+    const std::size_t elements = layout.floe_elements[k];
+    if (!elements) continue;  // rigid
+    const double width = least_width(layout.floes[k].shape);
     if (elements > 1 && width >= size * (1 - 1e-9)) continue;
     if (flagged++ == 0) first = static_cast<int>(k);
     single += elements == 1;
@@ -251,12 +249,21 @@ Layout scene_layout(const Scene& scene, const std::function<void(double)>& on_pr
   refuse_floes_in_structure(scene, layout.floes);
   // a breakable floe is cut into the paper's lattice (a rectangle of whole squares) or filled
   // with elements cut at its outline; one too small to hold an element is refused here,
-  // naming the input the floes came from, before anything is built
+  // naming the input the floes came from, before anything is built. Each floe's elements are
+  // counted for the warnings (layout_warnings), so that no lattice is cut twice (level ice's
+  // sheet has no such warning)
+  layout.floe_elements.assign(layout.floes.size(), 0);
   for (std::size_t i = 0; i < layout.floes.size(); ++i) {
     const Floe& floe = layout.floes[i];
-    if (!is_breakable(scene, floe.shape) || paper_lattice(floe.shape, scene.fracture)) continue;
+    if (!is_breakable(scene, floe.shape)) continue;
     double yaw = 0;
-    if (floe_outline_lattice(floe.shape, scene.fracture, yaw).elements.empty())
+    if (paper_lattice(floe.shape, scene.fracture)) {
+      if (scene.ice.cover == IceCover::kFloes)
+        layout.floe_elements[i] = floe_lattice(floe.shape, scene.fracture.element_size, yaw).centres.size();
+      continue;
+    }
+    layout.floe_elements[i] = floe_outline_lattice(floe.shape, scene.fracture, yaw).elements.size();
+    if (layout.floe_elements[i] == 0)
       throw InputError(fmt::format("{}: floe {} ({:.4g} m^2) is smaller than a quarter of an element of "
                                    "fracture.element_size = {} m; make it rigid (fracture.mode = \"auto\" "
                                    "or \"off\") or the elements smaller",
