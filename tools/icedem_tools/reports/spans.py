@@ -1,4 +1,5 @@
-"""Numbers in a page's prose made by the tool that makes the page: a marked span
+"""Numbers in a page's prose made by the tool that makes the page, and the page's tool-made block
+(replace_block). A marked span
 
     <!-- = KEY -->text<!-- end -->
 
@@ -31,3 +32,11 @@ def fill(text, resolve):
 def keys(text):
     """The keys of the page's spans, in order."""
     return [m.group(1).strip() for m in SPAN.finditer(text)]
+
+
+def replace_block(page, block, begin, end):
+    """`page` with its tool-made block, from the line `begin` to the line `end`, replaced by `block`
+    (which holds both); the page's own text around it stays. A page without the block gets it at its end."""
+    if begin in page and end in page:
+        return page[:page.index(begin)] + block + page[page.index(end) + len(end):]
+    return (page.rstrip("\n") + "\n\n" if page.strip() else "") + block + "\n"

@@ -9,7 +9,6 @@ import numpy as np
 from scipy import stats
 
 from . import paired_change
-from .intervals import mean_ci
 
 
 def change_verdict(interval, tolerance):
@@ -131,11 +130,12 @@ def change_text(change, digits=1):
 
 
 def log_change(pairs):
-    """(change, (lo, hi), n): the mean over seeds of log(here / default) with its 95 %
-    interval, as fractions (exp - 1); the interval is None for fewer than 2 seeds."""
-    d = [math.log(a / b) for a, b in pairs if a and b and a > 0 and b > 0]
-    if not d:
+    """(change, (lo, hi), n): paired_change's log ratio of the pairs (here, default) whose values are
+    both positive (a seed without one left out), as fractions; the interval is None for one seed."""
+    kept = [(a, b) for a, b in pairs if a and b and a > 0 and b > 0]
+    if not kept:
         return None
-    m, h = mean_ci(d)
-    iv = (math.expm1(m - h), math.expm1(m + h)) if math.isfinite(h) else None
-    return math.expm1(m), iv, len(d)
+    if len(kept) < 2:
+        return math.expm1(math.log(kept[0][0] / kept[0][1])), None, 1
+    change, lo, hi = paired_change.log_ratio([a for a, _ in kept], [b for _, b in kept])
+    return float(change), (float(lo), float(hi)), len(kept)

@@ -249,11 +249,7 @@ def main(argv=None):
         page = spans.fill(page, resolver(facts))
     except spans.UnknownKey as e:
         sys.exit(f"scripts/budget: {path}: {e}")
-    if BEGIN in page and END in page:  # the page's own text stays; the tables are replaced
-        text = page[:page.index(BEGIN)] + text + page[page.index(END) + len(END):]
-    else:
-        text = page + ("\n" if page else "") + text + "\n"
-    output_guard.write_text(path, text)
+    output_guard.write_text(path, spans.replace_block(page, text, BEGIN, END))  # the tables replaced
     print(f"wrote {path}")
     return 0
 

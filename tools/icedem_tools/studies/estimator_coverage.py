@@ -19,6 +19,7 @@ The page says which estimator covers best over the sets and how the verdicts on 
 between estimators. Only the kept records are read (docs/model/load_budget_records)."""
 import argparse
 import datetime
+import json
 import os
 import sys
 import tomllib
@@ -26,6 +27,7 @@ import tomllib
 import numpy as np
 
 from ..runs import output_guard, spec
+from ..reports import spans
 from ..runs.spec import ROOT
 from ..stats import paired_change
 from ..stats.verdict import change_verdict
@@ -54,7 +56,6 @@ def paired_sets():
     records = {}
     for r in runs:
         if r.record_file and os.path.isfile(r.record_file):
-            import json
             with open(r.record_file) as f:
                 rec = json.load(f)
             if rec.get("summary", {}).get("status") == "complete":
@@ -150,7 +151,7 @@ def page(sets, results, words, samples, seed):
     best = max(names, key=lambda n: min(summary[(n, "resampled")], summary[(n, "lognormal")]))
     lines += ["", f"Best covered in its worse world: **{best}** "
               f"({100 * min(summary[(best, 'resampled')], summary[(best, 'lognormal')]):.1f} %).", "", END]
-    return "\n".join(lines), best
+    return "\n".join(lines)
 
 
 def main(argv=None):
@@ -167,14 +168,10 @@ def main(argv=None):
         sys.exit("scripts/estimator_coverage: no kept records of the budget")
     results = [coverage(s[4], s[5], a.samples, rng) for s in sets]
     words = verdicts(sets, rng)
-    text, best = page(sets, results, words, a.samples, a.seed)
+    text = page(sets, results, words, a.samples, a.seed)
     print(text)
     old = open(path).read() if os.path.isfile(path) else ""
-    if BEGIN in old and END in old:
-        text = old[:old.index(BEGIN)] + text + old[old.index(END) + len(END):]
-    else:
-        text = (old.rstrip("\n") + "\n\n" if old.strip() else "") + text + "\n"
-    output_guard.write_text(path, text)
+    output_guard.write_text(path, spans.replace_block(old, text, BEGIN, END))
     print(f"wrote {path}")
     return 0
 
