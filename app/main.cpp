@@ -34,6 +34,7 @@
 #include "dem/core/errors.hpp"
 #include "dem/input/scenario.hpp"
 #include "dem/input/scene_builder.hpp"
+#include "dem/mooring/floating_structure.hpp"
 #include "dem/output/checkpoint.hpp"
 #include "dem/output/lock.hpp"
 #include "dem/output/output_guard.hpp"
@@ -264,12 +265,15 @@ int check_command(const std::string& scenario_path, const std::vector<std::strin
   const Scene scene = load_scene(scenario_path, sets);
   // also validates layout files, concentration, and that breakable floes cut into elements
   const Layout layout = scene_layout(scene);
+  const std::string moored =
+      scene.structure.motion == StructureMotion::kMoored ? describe(checked_floating_structure(scene)) : "";
   const std::string ice = scene.ice.cover == IceCover::kLevel
                               ? fmt::format("level ice over {:.2f} % of the channel", 100 * layout.achieved_concentration)
                               : fmt::format("{} floes, concentration {:.2f} %", layout.floes.size(),
                                             100 * layout.achieved_concentration);
   std::cout << fmt::format("{}: ok ({}, {:.0f} s at dt {} s)\n", scenario_path, ice, scene.time.duration,
                            scene.time.dt);
+  std::cout << moored;
   for (const std::string& w : scene_warnings(scene, layout)) std::cout << "warning: " << w << "\n";
   return kExitOk;
 }

@@ -32,6 +32,9 @@ KeySpec text(std::string path, std::string def, std::string doc) {
   return KeySpec{std::move(path), KeyType::kString, "", std::move(def), -kInf, kInf, false, {},
                  std::move(doc)};
 }
+KeySpec vector3(std::string path, std::string unit, Vector3Value def, double min, double max, std::string doc) {
+  return KeySpec{std::move(path), KeyType::kVector3, std::move(unit), def, min, max, false, {}, std::move(doc)};
+}
 KeySpec choice(std::string path, std::string def, std::vector<std::string> choices, std::string doc) {
   return KeySpec{std::move(path), KeyType::kChoice, "", std::move(def), -kInf, kInf, false,
                  std::move(choices), std::move(doc)};
@@ -172,8 +175,13 @@ std::vector<KeySpec> make_keys() {
                    "fraction of contact penetration corrected per step"));
 
   // structure
+  k.push_back(choice("structure.motion", "towed", {"towed", "moored"},
+                     "\"towed\": the structure moves with the carriage at structure.speed (the paper's); \"moored\": it "
+                     "floats, in six degrees of freedom, held by a mooring (mooring.*) whose attachment moves with the "
+                     "carriage (docs/model/mooring.md)"));
   k.push_back(real("structure.speed", "m/s", 0.07, 0.0, 10.0,
-                   "prescribed surge speed of the carriage (paper: 0.07 m/s)"));
+                   "prescribed surge speed of the carriage (paper: 0.07 m/s); moored: the speed of the mooring's "
+                   "attachment"));
   k.push_back(real("structure.start_x", "m", 2.0, -1.0e4, 1.0e4,
                    "x of the structure axis at t = 0 (paper: 2 m)"));
   k.push_back(real("structure.start_z", "m", 0.0, -1.0e4, 1.0e4, "z of the structure axis"));
@@ -192,6 +200,65 @@ std::vector<KeySpec> make_keys() {
   k.push_back(positive("structure.collision_margin", "m", 0.001, 0.1,
                        "Bullet's collision margin of the hull's pieces, which rounds them and grows them by "
                        "it (Bullet's own default: 0.04 m)"));
+  // a moored structure's body (structure.motion = "moored"; dem/mooring/floating_structure.hpp)
+  k.push_back(real("structure.mass", "kg", 0.0, 0.0, 1.0e9,
+                   "moored: the structure's mass; 0: the mass that floats at the still-water line with its mooring's "
+                   "pull, the water the hull displaces there less the lines' vertical pull over g (237.2 kg for the "
+                   "default hull and linear mooring)"));
+  // -0.05662 m: the default hull's centroid as a uniform solid (tests/physics/test_moored_structure.cpp
+  // checks it against dem/mooring/floating_structure.cpp's hull_solid)
+  k.push_back(real("structure.gravity_centre_y", "m", -0.05662, -100.0, 100.0,
+                   "moored: height of the centre of gravity on the axis above the waterline (the default hull as a "
+                   "uniform solid from keel to deck; `icedem check` prints a changed hull's)"));
+  k.push_back(vector3("structure.inertia", "kg m^2", {0.0, 0.0, 0.0}, 0.0, 1.0e12,
+                      "moored: moments of inertia about the centre of gravity, about x (roll), y (yaw) and z (pitch); "
+                      "0: those of the hull as a uniform solid of structure.mass"));
+  k.push_back(vector3("structure.added_mass", "kg", {-1.0, -1.0, -1.0}, -1.0, 1.0e12,
+                      "moored: the water's added mass in surge (x), heave (y) and sway (z), constant; a negative "
+                      "component: the estimate (surge and sway: strips of circles, the water the hull displaces; "
+                      "heave: half the open-water disc of the waterline radius, (4/3) rho a^3)"));
+  k.push_back(vector3("structure.added_inertia", "kg m^2", {-1.0, -1.0, -1.0}, -1.0, 1.0e12,
+                      "moored: the water's added moment of inertia in roll (x), yaw (y) and pitch (z), constant; a "
+                      "negative component: the estimate (the strips' added mass moving about the centre of gravity, "
+                      "and the waterline disc's (8/45) rho a^5; none in yaw, the hull being round)"));
+  k.push_back(vector3("structure.damping_ratio", "-", {0.05, 0.05, 0.05}, 0.0, 10.0,
+                      "moored: linear damping in surge, heave and sway as a fraction of each motion's critical "
+                      "damping 2 sqrt(k (m + m_a)), k the hydrostatic or mooring stiffness (an assumed value: set it "
+                      "from a decay test or a radiation solver's damping)"));
+  k.push_back(vector3("structure.angular_damping_ratio", "-", {0.05, 0.05, 0.05}, 0.0, 10.0,
+                      "moored: the same in roll, yaw and pitch"));
+
+  // mooring (structure.motion = "moored"; dem/mooring/)
+  k.push_back(choice("mooring.model", "linear", {"linear", "catenary"},
+                     "\"linear\": springs of mooring.stiffness and mooring.angular_stiffness between the structure's "
+                     "attachment point and the carriage; \"catenary\": mooring.lines elastic catenary lines from "
+                     "anchors on the tank's floor, moving with the carriage, to fairleads on the hull, quasi-static"));
+  // 935 N/m: the static offset under the fixed cone's mean load on the paper's small floes (11.5 N, the
+  // grid's records at f_ii 0.5, f_is 0.2) is then 1 % of the waterline diameter (12.3 mm), the
+  // middle of the study's range (docs/model/mooring.md)
+  k.push_back(vector3("mooring.stiffness", "N/m", {935.0, 0.0, 935.0}, 0.0, 1.0e12,
+                      "linear: the mooring's stiffness along x (surge), y (heave) and z (sway) at its attachment point "
+                      "(935 N/m: the fixed cone's mean load on the paper's small floes, 11.5 N, moves it 1 % of the "
+                      "waterline diameter)"));
+  k.push_back(vector3("mooring.angular_stiffness", "N m/rad", {0.0, 352.0, 0.0}, 0.0, 1.0e12,
+                      "linear: about x (roll), y (yaw) and z (pitch); yaw 352: the surge stiffness spread at the "
+                      "waterline radius, 935 x 0.614^2"));
+  k.push_back(real("mooring.attachment_y", "m", 0.0, -100.0, 100.0,
+                   "linear: height of the attachment point on the axis above the waterline"));
+  k.push_back(integer("mooring.lines", 4, 1, 64, "catenary: number of lines, spread evenly around the axis"));
+  k.push_back(real("mooring.first_line_angle", "deg", 45.0, -360.0, 360.0,
+                   "catenary: direction of the first line from the axis, from +x towards +z"));
+  k.push_back(positive("mooring.fairlead_radius", "m", 0.4, 100.0, "catenary: fairleads' distance from the axis"));
+  k.push_back(real("mooring.fairlead_y", "m", -0.2, -100.0, 100.0, "catenary: fairleads' height above the waterline"));
+  k.push_back(positive("mooring.anchor_radius", "m", 4.0, 1.0e4,
+                       "catenary: anchors' distance from the axis, on the tank's floor (tank.depth)"));
+  // the default lines: 0.21 m of each on the floor at rest, a spread about as stiff in surge as the
+  // linear mooring's default (docs/model/mooring.md)
+  k.push_back(positive("mooring.line_length", "m", 4.06, 1.0e4, "catenary: each line's unstretched length"));
+  k.push_back(positive("mooring.line_weight", "N/m", 20.0, 1.0e6, "catenary: each line's submerged weight per metre"));
+  k.push_back(positive("mooring.line_stiffness", "N", 1.0e5, 1.0e12, "catenary: each line's axial stiffness EA"));
+  k.push_back(real("mooring.seabed_friction", "-", 0.0, 0.0, 10.0,
+                   "catenary: friction of the part of a line lying on the floor"));
 
   // channel and tank
   k.push_back(real("channel.start_x", "m", 6.0, -1.0e4, 1.0e4,

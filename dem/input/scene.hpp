@@ -31,13 +31,42 @@ struct TimeSettings {
   int substeps;     // Bullet steps per dt
 };
 
+// towed at a prescribed speed (the paper's), or floating and held by a mooring (dem/mooring/)
+enum class StructureMotion { kTowed, kMoored };
 struct StructureSettings {
-  double speed;                         // m/s, surge, prescribed
+  StructureMotion motion;
+  double speed;                         // m/s, surge, prescribed (moored: the carriage's, which the mooring follows)
   double start_x;                       // m, axis position at t = 0
   double start_z;                       // m
   std::vector<ProfileStation> profile;  // keel to deck, y increasing
   int segments;                         // polygon sides per station
   double collision_margin;              // m, Bullet's margin on the hull's pieces (grows them by it)
+  // structure.motion = "moored" (dem/mooring/floating_structure.hpp); 0 or negative where derived from the hull
+  double mass;                            // kg; 0: the water the hull displaces at its waterline
+  double gravity_centre_y;                // m, on the axis above the waterline
+  Eigen::Vector3d inertia;                // kg m^2 about the centre of gravity (roll x, yaw y, pitch z); 0: the solid's
+  Eigen::Vector3d added_mass;             // kg (surge x, heave y, sway z); negative: the estimate
+  Eigen::Vector3d added_inertia;          // kg m^2 (roll, yaw, pitch); negative: the estimate
+  Eigen::Vector3d damping_ratio;          // -, of critical, in surge, heave and sway
+  Eigen::Vector3d angular_damping_ratio;  // -, in roll, yaw and pitch
+};
+
+// what holds a moored structure (dem/mooring/mooring.hpp)
+enum class MooringModel { kLinear, kCatenary };
+struct MooringSettings {
+  MooringModel model;
+  double attachment_y;                // m, linear: height of the attachment point on the axis
+  Eigen::Vector3d stiffness;          // N/m, linear, along x, y, z
+  Eigen::Vector3d angular_stiffness;  // N m/rad, linear, about x, y, z
+  int lines;                          // catenary: lines, spread evenly
+  double first_line_angle;            // rad, catenary: the first line's direction from +x towards +z
+  double fairlead_radius;             // m, from the axis
+  double fairlead_y;                  // m, above the waterline
+  double anchor_radius;               // m, from the axis, on the seabed
+  double line_length;                 // m, unstretched
+  double line_weight;                 // N/m, submerged
+  double line_stiffness;              // N, EA
+  double seabed_friction;             // -
 };
 
 struct ChannelSettings {
@@ -213,6 +242,7 @@ struct Scene {
   TimeSettings time;
   SolverSettings solver;
   StructureSettings structure;
+  MooringSettings mooring;
   ChannelSettings channel;
   IceSettings ice;
   LayoutSettings layout;

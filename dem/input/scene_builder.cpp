@@ -95,6 +95,41 @@ void check_limits(const Scenario& sc, const Scene& s) {
   }
 }
 
+// The moored structure's body and mooring (structure.motion = "moored"): what the keys give, with
+// the derived values (the hull's own mass and inertia, the added-mass estimate) left to
+// dem/mooring/floating_structure.cpp, which reads the sentinels the key table documents (values no
+// body has: a mass or inertia of 0, a negative added mass), so that a run's resolved scenario, which
+// writes every key, makes the same body.
+Eigen::Vector3d vector3(const Scenario& sc, const std::string& path) {
+  const Vector3Value& v = get<Vector3Value>(sc, path);
+  return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+void read_floating_structure(const Scenario& sc, Scene& s) {
+  StructureSettings& st = s.structure;
+  st.mass = real(sc, "structure.mass");
+  st.gravity_centre_y = real(sc, "structure.gravity_centre_y");
+  st.inertia = vector3(sc, "structure.inertia");
+  st.added_mass = vector3(sc, "structure.added_mass");
+  st.added_inertia = vector3(sc, "structure.added_inertia");
+  st.damping_ratio = vector3(sc, "structure.damping_ratio");
+  st.angular_damping_ratio = vector3(sc, "structure.angular_damping_ratio");
+  MooringSettings& m = s.mooring;
+  m.model = choice<MooringModel>(sc, "mooring.model", {{"linear", MooringModel::kLinear}, {"catenary", MooringModel::kCatenary}});
+  m.attachment_y = real(sc, "mooring.attachment_y");
+  m.stiffness = vector3(sc, "mooring.stiffness");
+  m.angular_stiffness = vector3(sc, "mooring.angular_stiffness");
+  m.lines = integer(sc, "mooring.lines");
+  m.first_line_angle = real(sc, "mooring.first_line_angle") * kPi / 180.0;
+  m.fairlead_radius = real(sc, "mooring.fairlead_radius");
+  m.fairlead_y = real(sc, "mooring.fairlead_y");
+  m.anchor_radius = real(sc, "mooring.anchor_radius");
+  m.line_length = real(sc, "mooring.line_length");
+  m.line_weight = real(sc, "mooring.line_weight");
+  m.line_stiffness = real(sc, "mooring.line_stiffness");
+  m.seabed_friction = real(sc, "mooring.seabed_friction");
+}
+
 }  // namespace
 
 // The structure can meet the ice and stays within the tank: a hull wholly above the floating ice
@@ -194,6 +229,8 @@ Scene make_scene(const Scenario& sc) {
   s.solver.position_iterations = integer(sc, "solver.position_iterations");
 
   // structure profile: y strictly increasing, radii >= 0, some radius > 0
+  s.structure.motion =
+      choice<StructureMotion>(sc, "structure.motion", {{"towed", StructureMotion::kTowed}, {"moored", StructureMotion::kMoored}});
   s.structure.speed = real(sc, "structure.speed");
   s.structure.start_x = real(sc, "structure.start_x");
   s.structure.start_z = real(sc, "structure.start_z");
@@ -211,6 +248,7 @@ Scene make_scene(const Scenario& sc) {
     s.structure.profile.push_back({profile[i][0], profile[i][1]});
   }
   if (!any_radius) fail_key(sc, "structure.profile", "at least one station needs a radius > 0");
+  read_floating_structure(sc, s);
 
   s.channel.start_x = real(sc, "channel.start_x");
   s.channel.length = real(sc, "channel.length");

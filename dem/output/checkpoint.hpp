@@ -31,6 +31,10 @@ namespace icedem {
 /// What the run loop accumulates for the summary at the end, step by step.
 struct RunHistory {
   std::vector<double> time, surge, heave, sway;  // s, N: per step
+  // a moored structure's, per step (empty when towed): the mooring's force along the travel (N, holding
+  // the structure against the ice), the structure's surge offset from its attachment's rest (m,
+  // negative: pushed back) and the largest line tension (N)
+  std::vector<double> mooring_surge, surge_offset, max_tension;
   std::vector<StepDiagnostics> diagnostics;      // per step
   double awake_sum = 0;                          // awake floes summed over the steps
   DiagnosticExtremes health;                     // extremes of the diagnostics
@@ -46,6 +50,9 @@ std::enable_if_t<std::is_same_v<std::remove_const_t<History>, RunHistory>> visit
   visit("surge", h.surge);
   visit("heave", h.heave);
   visit("sway", h.sway);
+  visit("mooring_surge", h.mooring_surge);
+  visit("surge_offset", h.surge_offset);
+  visit("max_tension", h.max_tension);
   visit("diagnostics", h.diagnostics);
   visit("awake_sum", h.awake_sum);
   visit("health", h.health);

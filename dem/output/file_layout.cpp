@@ -146,7 +146,10 @@ OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const 
   // per-step series: load, structure, diagnostics
   for (std::size_t c = 0; c < d.series.size(); ++c) {
     const SeriesColumn& col = series_columns()[c];
-    const std::vector<hsize_t> row_shape = col.width == 1 ? std::vector<hsize_t>{} : std::vector<hsize_t>{hsize_t(col.width)};
+    if (col.moored && run.mooring_lines == 0) continue;  // a towed run's file has none of a moored one's
+    const std::vector<hsize_t> row_shape = col.per_line      ? std::vector<hsize_t>{hsize_t(run.mooring_lines)}
+                                           : col.width == 1 ? std::vector<hsize_t>{}
+                                                            : std::vector<hsize_t>{hsize_t(col.width)};
     d.series[c] = create_series(parent_group(file, col.path), split_path(col.path).second, file_type(col.element),
                               row_shape, kSeriesChunkRows, col.unit, col.description);
   }
@@ -227,7 +230,15 @@ OutputDatasets open_output_layout(H5::H5File& file) {
     return open_series(file.openGroup(split_path(path).first), split_path(path).second);
   };
   OutputDatasets d;
-  for (const SeriesColumn& col : series_columns()) d.series.push_back(open(col.path));
+  for (const SeriesColumn& col : series_columns()) {
+    // a moored run's columns are in its file only (the group, then the dataset: HDF5 asks in turn)
+    const auto [group, name] = split_path(col.path);
+    if (col.moored && !(file.nameExists(group) && file.openGroup(group).nameExists(name))) {
+      d.series.emplace_back();
+      continue;
+    }
+    d.series.push_back(open(col.path));
+  }
   for (const auto& [member, path] : growing_datasets()) d.*member = open(path);
   return d;
 }

@@ -175,9 +175,11 @@ struct Recorder::Impl {
     std::vector<int> integers;
     for (std::size_t c = 0; c < data.series.size(); ++c) {
       const SeriesColumn& col = series_columns()[c];
-      values.resize(n * col.width);
+      if (!data.series[c].dataset) continue;  // a moored run's column in a towed run's file
+      const int width = col.per_line ? static_cast<int>(data.series[c].row_shape.at(0)) : col.width;
+      values.resize(n * width);
       for (std::size_t i = 0; i < n; ++i)
-        for (int k = 0; k < col.width; ++k) values[col.width * i + k] = col.value(load_buffer[i], k);
+        for (int k = 0; k < width; ++k) values[width * i + k] = col.value(load_buffer[i], k);
       if (col.element == Element::i4) {
         integers.assign(values.begin(), values.end());
         data.series[c].write(integers.data(), n, H5::PredType::NATIVE_INT);

@@ -44,6 +44,7 @@ struct RunMeta {
   std::string bullet_version;  // Bullet version (e.g. "3.24")
   std::string precision;       // "double" or "float"
   uint64_t seed = 0;           // random seed of the layout
+  int mooring_lines = 0;       // a moored structure's lines (1 for the linear mooring); 0: towed
 };
 
 /// What a body is doing at a snapshot (/snapshots/rows/awake).
@@ -70,6 +71,13 @@ struct LoadSample {
   int awake_bodies;                    // bodies being solved
   int contact_points = 0;              // contact points in the whole world (solver load)
   StepDiagnostics diagnostics;         // speeds, energy, ice mass, joint gap, cone penetration
+  // a moored structure (structure.motion = "moored"): its motion and its mooring's load at the step's end
+  Eigen::Vector3d structure_rotation = Eigen::Vector3d::Zero();          // rad, rotation vector
+  Eigen::Vector3d structure_velocity = Eigen::Vector3d::Zero();          // m/s, of the reference point
+  Eigen::Vector3d structure_angular_velocity = Eigen::Vector3d::Zero();  // rad/s
+  Eigen::Vector3d mooring_force = Eigen::Vector3d::Zero();               // N, on the structure
+  Eigen::Vector3d mooring_moment = Eigen::Vector3d::Zero();              // N m, about the reference point
+  std::vector<double> mooring_tension;                                   // N, each line's at its fairlead
 
   /// The surge load, N: the load resisting towing (+x), positive when the ice pushes back,
   /// as the paper plots it. The one place its sign is decided (/load/surge, statistics, progress).

@@ -40,6 +40,21 @@ const std::vector<SeriesColumn>& series_columns() {
          [](L s, int) { return double(s.cone_contacts); }},
         {"/structure/position", Element::f8, 3, "m", "structure reference point, tank frame",
          [](L s, int k) { return s.structure_position[k]; }},
+        {"/structure/rotation", Element::f8, 3, "rad",
+         "moored: the structure's rotation vector (axis times angle, body to tank; x roll, y yaw, z pitch)",
+         [](L s, int k) { return s.structure_rotation[k]; }, true},
+        {"/structure/velocity", Element::f8, 3, "m/s", "moored: the reference point's velocity, tank frame",
+         [](L s, int k) { return s.structure_velocity[k]; }, true},
+        {"/structure/angular_velocity", Element::f8, 3, "rad/s", "moored: the structure's angular velocity, tank frame",
+         [](L s, int k) { return s.structure_angular_velocity[k]; }, true},
+        {"/mooring/force", Element::f8, 3, "N", "moored: the mooring's force on the structure at the step's end, tank frame",
+         [](L s, int k) { return s.mooring_force[k]; }, true},
+        {"/mooring/moment", Element::f8, 3, "N m",
+         "moored: the mooring's moment on the structure about its reference point, tank frame",
+         [](L s, int k) { return s.mooring_moment[k]; }, true},
+        {"/mooring/tension", Element::f8, 0, "N",
+         "moored: each line's tension at its fairlead (n x lines; the linear mooring: its force's magnitude, n x 1)",
+         [](L s, int k) { return s.mooring_tension[k]; }, true, true},
         {"/diagnostics/awake_bodies", Element::i4, 1, "1", "bodies being solved (not sleeping)",
          [](L s, int) { return double(s.awake_bodies); }},
         {"/diagnostics/contact_points", Element::i4, 1, "1", "contact points in the whole world (solver load)",
@@ -213,7 +228,8 @@ std::string output_markdown() {
       "### Per-step series\n\n"
       "| path | shape | type | unit | meaning |\n|---|---|---|---|---|\n";
   for (const SeriesColumn& c : series_columns())
-    md += fmt::format("| `{}` | {} | {} | {} | {} |\n", c.path, c.width == 1 ? "n" : fmt::format("n x {}", c.width),
+    md += fmt::format("| `{}` | {} | {} | {} | {} |\n", c.path,
+                      c.per_line ? "n x lines" : c.width == 1 ? "n" : fmt::format("n x {}", c.width),
                       element_name(c.element), c.unit, cell(c.description));
   md += "\n### Bodies, joints, snapshots and breaks\n\n| path | shape | type | unit | meaning |\n|---|---|---|---|---|\n";
   for (const DatasetEntry& e : other_datasets())

@@ -38,6 +38,8 @@ struct SeriesColumn {
   std::string unit;
   std::string description;
   std::function<double(const LoadSample&, int component)> value;  // the row's value
+  bool moored = false;  // written only by runs of a moored structure (RunMeta::mooring_lines > 0)
+  bool per_line = false;  // one value per mooring line (width: RunMeta::mooring_lines)
 };
 
 /// The per-step series in file order: load, structure, diagnostics (the last from

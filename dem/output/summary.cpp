@@ -127,6 +127,11 @@ std::string summary_table(const RunSummary& s) {
                      st.lowpass_hz > 0 ? fmt::format(", low-pass {} Hz", st.lowpass_hz) : "");
   out += fmt::format("  surge load (resisting towing): mean {:.2f} N   max {:.2f} N   std {:.2f} N\n",
                      st.mean, st.max, st.std);
+  if (s.mooring.present)
+    out += fmt::format("  mooring force (holding it): mean {:.2f} N   max {:.2f} N   std {:.2f} N; surge offset mean {:.1f} mm, "
+                       "std {:.1f} mm, farthest back {:.1f} mm; largest line tension {:.2f} N\n",
+                       s.mooring.force.mean, s.mooring.force.max, s.mooring.force.std, 1e3 * s.mooring.offset_mean_m,
+                       1e3 * s.mooring.offset_std_m, 1e3 * s.mooring.offset_min_m, s.mooring.tension_max_N);
   // the paper's "load network to the sides and end of the channel" (its Fig. 14)
   if (s.locked_window_fraction > 0)
     out += fmt::format("  fixed boundaries (mother ice, walls) carry {:.0f} % of the surge load over the window; "
@@ -266,6 +271,19 @@ const std::vector<SummaryField>& summary_fields() {
          j["ice_mass_initial_kg"] = num(s.health.initial_ice_mass);
          j["ice_mass_max_relative_change"] = num(s.health.max_ice_mass_change);
          return j;
+       }},
+      {"mooring", "", false, false,
+       "a moored structure (structure.motion = \"moored\") over the analysis window, null for a towed one: "
+       "mean_N, max_N, std_N of the mooring's force along the travel (N, holding the structure against the ice; "
+       "low-passed as the ice load), offset_mean_m, offset_std_m and offset_min_m of the structure's surge offset "
+       "from its attachment's rest (m, negative: pushed back), tension_max_N (the largest line tension)",
+       [](S s) {
+         if (!s.mooring.present || !s.has_statistics) return json(nullptr);
+         const MooringSummary& m = s.mooring;
+         return json{{"mean_N", num(m.force.mean)},         {"max_N", num(m.force.max)},
+                     {"std_N", num(m.force.std)},           {"offset_mean_m", num(m.offset_mean_m)},
+                     {"offset_std_m", num(m.offset_std_m)}, {"offset_min_m", num(m.offset_min_m)},
+                     {"tension_max_N", num(m.tension_max_N)}};
        }},
       {"solver", "", false, false,
        "the contact solver over the run: method (solver.method), cap, tolerance, joint_tolerance (islands with "

@@ -39,6 +39,16 @@ struct SolverSummary {
   static constexpr double kCappedWarning = 0.01;
 };
 
+/// A moored structure's mooring and motion over the analysis window (structure.motion = "moored").
+struct MooringSummary {
+  bool present = false;     // false: a towed structure (the summary's "mooring" is null)
+  LoadStatistics force{};   // the mooring's force along the travel (holding the structure against the ice)
+  double offset_mean_m = 0; // the structure's surge offset from its attachment's rest (negative: pushed back)
+  double offset_std_m = 0;
+  double offset_min_m = 0;  // the farthest back
+  double tension_max_N = 0; // the largest line tension
+};
+
 struct RunSummary {
   std::string scenario;  // scenario path
   std::string output;    // HDF5 path
@@ -52,6 +62,7 @@ struct RunSummary {
   double mean_fy_N = 0.0;       // mean heave load over the window (ice on structure, + up)
   double mean_fz_N = 0.0;       // mean sway load over the window
   double first_contact_s = -1;  // s, first ice contact (-1: none)
+  MooringSummary mooring;       // a moored structure's, over the same window
 
   long steps = 0;
   double sim_time_s = 0.0;

@@ -57,6 +57,24 @@ class InterruptGuard {
   void (*previous_term_)(int);
 };
 
+// a moored structure's motion and its mooring's load at the step's end, into the step's sample and
+// the history its statistics are taken from
+void record_moored(const Scene& scene, const State& state, LoadSample& sample, RunHistory& history) {
+  const StructureMotionState& m = state.structure_motion;
+  const MooringLoad mooring = mooring_load_at(scene, *state.floating, state.structure_position, m, state.time);
+  sample.structure_rotation = m.rotation;
+  sample.structure_velocity = state.structure_velocity;
+  sample.structure_angular_velocity = m.angular_velocity;
+  sample.mooring_force = mooring.force;
+  sample.mooring_moment = mooring.moment;
+  sample.mooring_tension = mooring.tensions;
+  const double travel = scene.structure.speed < 0 ? -1.0 : 1.0;
+  history.mooring_surge.push_back(mooring.force.x() * travel);  // holding the structure against the ice
+  history.surge_offset.push_back((state.structure_position.x() - structure_position_at(scene, state.time).x()) * travel);
+  history.max_tension.push_back(mooring.tensions.empty() ? 0.0
+                                                         : *std::max_element(mooring.tensions.begin(), mooring.tensions.end()));
+}
+
 RunMeta run_meta(const Scene& scene, const RunOptions& options) {
   RunMeta m;
   m.scenario_text = scene.resolved_text;
@@ -67,6 +85,7 @@ RunMeta run_meta(const Scene& scene, const RunOptions& options) {
   m.bullet_version = fmt::format("{}.{:02d}", BT_BULLET_VERSION / 100, BT_BULLET_VERSION % 100);
   m.precision = sizeof(btScalar) == 8 ? "double" : "float";
   m.seed = scene.seed;
+  m.mooring_lines = mooring_line_count(scene);
   return m;
 }
 
@@ -220,6 +239,24 @@ void compute_statistics(const Scene& scene, const RunHistory& h, RunSummary& s) 
     if (h.time[i] >= s.surge.window_start && h.time[i] <= s.surge.window_end) fy += h.heave[i], fz += h.sway[i], ++n;
   s.mean_fy_N = n ? fy / n : 0.0;
   s.mean_fz_N = n ? fz / n : 0.0;
+  if (!h.mooring_surge.empty()) {
+    // the mooring's force over the ice load's window, filtered as it is; the offset and tensions as they are
+    MooringSummary& m = s.mooring;
+    m.present = true;
+    m.force = load_statistics(h.time, h.mooring_surge, s.surge.window_start, s.surge.window_end, scene.stats.lowpass_hz,
+                              separation);
+    double sum = 0, sum2 = 0;
+    m.offset_min_m = std::numeric_limits<double>::infinity();
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < h.time.size(); ++i) {
+      if (h.time[i] < s.surge.window_start || h.time[i] > s.surge.window_end) continue;
+      sum += h.surge_offset[i], sum2 += h.surge_offset[i] * h.surge_offset[i], ++k;
+      m.offset_min_m = std::min(m.offset_min_m, h.surge_offset[i]);
+      m.tension_max_N = std::max(m.tension_max_N, h.max_tension[i]);
+    }
+    m.offset_mean_m = sum / k;
+    m.offset_std_m = std::sqrt(std::max(sum2 / k - m.offset_mean_m * m.offset_mean_m, 0.0));
+  }
 }
 
 // the summary's numbers marked for /stats (dem/output/summary.hpp), so the file carries its statistics
@@ -400,8 +437,9 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
 
       // record
       const LoadReading& load = state.load;
-      const LoadSample sample{state.time,     load.force,         load.moment,          state.structure_position,
-                              load.contacts,  state.awake_floes,  state.contact_points, state.diagnostics};
+      LoadSample sample{state.time,     load.force,         load.moment,          state.structure_position,
+                        load.contacts,  state.awake_floes,  state.contact_points, state.diagnostics};
+      if (state.floating) record_moored(scene, state, sample, history);
       recorder.append(sample);
       history.time.push_back(state.time);
       history.surge.push_back(sample.surge());

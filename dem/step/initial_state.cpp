@@ -298,6 +298,13 @@ State initial_state(const Scene& scene, const std::vector<Floe>& floes, const Fl
   if (coupling.drag_exchange) state.drag_exchange = coupling.drag_exchange(scene);
   state.structure_position = structure_position_at(scene, 0.0);
   state.structure_velocity = Eigen::Vector3d(scene.structure.speed, 0.0, 0.0);
+  if (scene.structure.motion == StructureMotion::kMoored) {
+    state.floating = std::make_shared<const FloatingStructure>(checked_floating_structure(scene));
+    // floating at its draft and moving with the carriage, as a tank's model does once towed up to
+    // speed: its mooring at rest, nothing to settle before the ice
+    state.structure_position = state.floating->start;
+    state.structure_motion.velocity = state.structure_velocity;
+  }
   state.flow->set_structure(state.structure_position, state.structure_velocity);
   state.awake_floes = state.world->awake_floes();
   return state;

@@ -18,6 +18,8 @@
 
 #include "dem/core/diagnostics.hpp"
 #include "dem/fracture/fracture_state.hpp"
+#include "dem/mooring/floating_structure.hpp"
+#include "dem/mooring/structure_motion.hpp"
 #include "dem/water/drag_exchange.hpp"
 #include "dem/water/flow_field.hpp"
 #include "dem/world/load_cell.hpp"
@@ -49,7 +51,8 @@ struct StateValues {
   long step = 0;      // completed steps; written by step()
 
   Eigen::Vector3d structure_position = Eigen::Vector3d::Zero();  // m, axis at the waterline
-  Eigen::Vector3d structure_velocity = Eigen::Vector3d::Zero();  // m/s
+  Eigen::Vector3d structure_velocity = Eigen::Vector3d::Zero();  // m/s, of the reference point
+  StructureMotionState structure_motion;  // a moored structure's rotation, velocities, last loads (else zeros)
 
   LoadReading load;  // ice load of the last step; written by read_load_cell
 
@@ -73,6 +76,7 @@ std::enable_if_t<std::is_same_v<std::remove_const_t<Values>, StateValues>> visit
   visit("step", v.step);
   visit("structure_position", v.structure_position);
   visit("structure_velocity", v.structure_velocity);
+  visit("structure_motion", v.structure_motion);
   visit("load", v.load);
   visit("awake_floes", v.awake_floes);
   visit("contact_points", v.contact_points);
@@ -89,6 +93,7 @@ struct State : StateValues {
   std::unique_ptr<World> world;
   std::unique_ptr<FlowField> flow;
   std::unique_ptr<DragExchange> drag_exchange;
+  std::shared_ptr<const FloatingStructure> floating;  // structure.motion = "moored": the body and its mooring
 };
 
 }  // namespace icedem

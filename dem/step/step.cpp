@@ -27,12 +27,22 @@ class StageTimer {
   std::chrono::steady_clock::time_point start_;
 };
 
-// prescribed carriage motion: the kinematic structure reaches x(t + h) at the
-// end of the coming Bullet step, and the flow model follows it
-void move_structure(const Scene& scene, State& state, double t_next) {
-  state.structure_position = structure_position_at(scene, t_next);
-  state.structure_velocity = Eigen::Vector3d(scene.structure.speed, 0.0, 0.0);
-  state.world->set_structure_target(state.structure_position);
+// the kinematic structure reaches its place at t + h at the end of the coming Bullet step, and the
+// flow model follows it: towed, the carriage's prescribed motion; moored, a step of its own motion
+// under the ice's impulses of the step before, the water and its mooring (dem/mooring/structure_motion.hpp)
+void move_structure(const Scene& scene, State& state, double t_next, double h) {
+  if (scene.structure.motion == StructureMotion::kTowed) {
+    state.structure_position = structure_position_at(scene, t_next);
+    state.structure_velocity = Eigen::Vector3d(scene.structure.speed, 0.0, 0.0);
+    state.world->set_structure_target(state.structure_position);
+  } else {
+    StructureMotionState& m = state.structure_motion;
+    advance_structure(scene, *state.floating, h, scene.structure.speed * (t_next - h), state.structure_position, m);
+    const Eigen::Matrix3d r = rotation_matrix(m);
+    // the reference point's velocity: G's and the turn about G
+    state.structure_velocity = m.velocity + m.angular_velocity.cross(-r * Eigen::Vector3d(0, state.floating->gravity_centre_y, 0));
+    state.world->set_structure_target(state.structure_position, r);
+  }
   state.flow->set_structure(state.structure_position, state.structure_velocity);
 }
 
@@ -80,7 +90,9 @@ double travel(const Scene& scene) { return scene.structure.speed < 0 ? -1.0 : 1.
 // boundaries take off it
 void read_load_cell(const Scene& scene, State& state, LoadCell& cell, BoundaryLoad& boundary) {
   const btDispatcher& dispatcher = *state.world->dynamics().getDispatcher();
-  cell.accumulate(dispatcher, state.world->structure(), state.structure_position);
+  const auto [impulse, angular] = cell.accumulate(dispatcher, state.world->structure(), state.structure_position);
+  state.structure_motion.ice_impulse = impulse;  // drives a moored structure's next step
+  state.structure_motion.ice_angular_impulse = angular;
   boundary.accumulate(dispatcher, state.world->structure(), travel(scene));
 }
 
@@ -134,7 +146,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
         });
   for (int k = 1; k <= scene.time.substeps; ++k) {
     const double t_next = t0 + k * h;
-    { StageTimer t(times.structure); move_structure(scene, state, t_next); }
+    { StageTimer t(times.structure); move_structure(scene, state, t_next, h); }
     { StageTimer t(times.water); apply_water_forces(scene, state); }
     if (loads) loads->apply(*state.world);
     // Bullet's step of h, stage by stage (dem/world/dynamics_world.hpp)

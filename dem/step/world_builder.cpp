@@ -1,3 +1,4 @@
+#include "dem/mooring/floating_structure.hpp"
 #include "dem/step/world_builder.hpp"
 
 #include <algorithm>
@@ -78,8 +79,11 @@ void add_profile_structure(World& world, const Scene& scene) {
     compound->addChildShape(identity, hull.get());
     pieces.push_back(std::move(hull));
   }
-  world.add_structure(std::move(compound), Eigen::Vector3d(scene.structure.start_x, 0.0, scene.structure.start_z),
-                      scene.friction.ice_structure, std::move(pieces));
+  // a moored structure starts floating at rest, at the draft its weight and mooring give it
+  const Eigen::Vector3d start = scene.structure.motion == StructureMotion::kMoored
+                                    ? checked_floating_structure(scene).start
+                                    : Eigen::Vector3d(scene.structure.start_x, 0.0, scene.structure.start_z);
+  world.add_structure(std::move(compound), start, scene.friction.ice_structure, std::move(pieces));
 }
 
 void add_boundaries(World& world, const Scene& scene) {

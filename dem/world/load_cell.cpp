@@ -19,9 +19,11 @@ void structure_manifolds(const btDispatcher& dispatcher, const btRigidBody* stru
   });
 }
 
-void LoadCell::accumulate(const btDispatcher& dispatcher, const btRigidBody* structure,
-                          const Eigen::Vector3d& reference) {
+std::pair<Eigen::Vector3d, Eigen::Vector3d> LoadCell::accumulate(const btDispatcher& dispatcher,
+                                                                 const btRigidBody* structure,
+                                                                 const Eigen::Vector3d& reference) {
   contacts_ = 0;
+  Eigen::Vector3d step_impulse = Eigen::Vector3d::Zero(), step_angular = Eigen::Vector3d::Zero();
   structure_manifolds(dispatcher, structure, touching_);
   for (const btPersistentManifold* m : touching_) {
     const bool is_body0 = m->getBody0() == structure;
@@ -33,11 +35,15 @@ void LoadCell::accumulate(const btDispatcher& dispatcher, const btRigidBody* str
       if (j.isZero()) continue;
       const Eigen::Vector3d impulse = sign * to_eigen(j);
       const Eigen::Vector3d at = to_eigen(is_body0 ? p.getPositionWorldOnA() : p.getPositionWorldOnB());
-      impulse_ += impulse;
-      angular_impulse_ += (at - reference).cross(impulse);
+      const Eigen::Vector3d angular = (at - reference).cross(impulse);
+      impulse_ += impulse;  // point by point, as the step's own sum would round otherwise
+      angular_impulse_ += angular;
+      step_impulse += impulse;
+      step_angular += angular;
       ++contacts_;
     }
   }
+  return {step_impulse, step_angular};
 }
 
 LoadReading LoadCell::finish(double dt) {

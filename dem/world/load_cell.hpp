@@ -15,6 +15,7 @@
 #pragma once
 
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -50,9 +51,10 @@ void structure_manifolds(const btDispatcher& dispatcher, const btRigidBody* stru
 /// Accumulates contact impulses over the substeps of one step.
 class LoadCell {
  public:
-  /// Add the impulses of the Bullet step just taken (moment about `reference`, m).
-  void accumulate(const btDispatcher& dispatcher, const btRigidBody* structure,
-                  const Eigen::Vector3d& reference);
+  /// Add the impulses of the Bullet step just taken (moment about `reference`, m); returns them
+  /// (N s and N m s), which drive a moored structure in the next (dem/mooring/structure_motion.hpp).
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> accumulate(const btDispatcher& dispatcher, const btRigidBody* structure,
+                                                         const Eigen::Vector3d& reference);
 
   /// The mean force and moment over a step of length dt (s); resets the cell.
   LoadReading finish(double dt);

@@ -241,6 +241,14 @@ void World::set_structure_target(const Eigen::Vector3d& position) {
   structure_->getMotionState()->setWorldTransform(pose);
 }
 
+void World::set_structure_target(const Eigen::Vector3d& position, const Eigen::Matrix3d& rotation) {
+  btTransform pose;
+  pose.setBasis(btMatrix3x3(rotation(0, 0), rotation(0, 1), rotation(0, 2), rotation(1, 0), rotation(1, 1),
+                            rotation(1, 2), rotation(2, 0), rotation(2, 1), rotation(2, 2)));
+  pose.setOrigin(to_bt(position));
+  structure_->getMotionState()->setWorldTransform(pose);
+}
+
 void World::update_boxes_shuffled(std::vector<btCollisionObject*> objects) {
   shuffle_fixed(objects);
   for (btCollisionObject* o : objects) dynamics_->updateSingleAabb(o);

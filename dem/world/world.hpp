@@ -175,6 +175,8 @@ class World {
   /// Move the kinematic structure so that it reaches `position` at the end of
   /// the next Bullet step; Bullet derives its velocity from the motion.
   void set_structure_target(const Eigen::Vector3d& position);
+  /// The same with the structure turned by `rotation` about its reference point (a moored structure).
+  void set_structure_target(const Eigen::Vector3d& position, const Eigen::Matrix3d& rotation);
 
   /// Let `observer` (not owned; null: none) see the contact problems of the steps it wants.
   void set_problem_observer(ProblemObserver* observer) { solver_->set_observer(observer); }

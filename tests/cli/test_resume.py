@@ -192,6 +192,20 @@ with h5py.File("split_full.h5", "r") as f:
           f"{pieces} pieces)")
 killed_and_resumed("split_killed.h5", 68.25, lattices, split_options, split_full, "the split run", "the pieces")
 
+# a moored structure (structure.motion = "moored"): its pose, velocities, last ice impulse and the
+# history of its mooring's load are in the checkpoint; killed in the ice after the checkpoint at 25 s,
+# the resumed run ends as the uninterrupted one, its motions, mooring load and summary included
+moored_options = every + ["--set", 'structure.motion="moored"']
+p = run("run", scenario, "-q", "-o", "moored_full.h5", *moored_options)
+moored_full = contents("moored_full.h5")
+with h5py.File("moored_full.h5", "r") as f:
+    t, x = f["load/time"][:], f["structure/position"][:, 0]
+    moving = np.abs(np.diff(f["structure/velocity"][:, 0])).max()
+    check(p.returncode == 0 and (f["load/cone_contacts"][:][t > 25.0] > 0).any() and moving > 0,
+          "the moored run meets the ice after t = 25 s and the ice moves the structure")
+killed_and_resumed("moored_killed.h5", 25.0, scenario, moored_options, moored_full, "the moored run",
+                   "the structure's motions and the mooring's load")
+
 # an output lost after the kill: its checkpoint alone resumes it
 name = "lost.h5"
 check(killed_at(name, 25.0), "killed after its checkpoint at t = 25 s")

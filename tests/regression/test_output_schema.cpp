@@ -77,6 +77,10 @@ TEST(OutputSchema, ABreakableRunWritesExactlyTheDeclaredDatasetsAndAttributes) {
   std::set<std::string> declared;
   for (const SeriesColumn& c : series_columns()) {
     declared.insert(c.path);
+    if (c.moored) {  // a moored structure's columns: not in a towed run's file
+      EXPECT_FALSE(found.count(c.path)) << c.path << " is a moored run's, but a towed run wrote it";
+      continue;
+    }
     ASSERT_TRUE(found.count(c.path)) << c.path << " is declared but not written";
     const Found& f = found.at(c.path);
     EXPECT_EQ(f.units, c.unit) << c.path;
@@ -128,3 +132,27 @@ TEST(OutputSchema, ABreakableRunWritesExactlyTheDeclaredDatasetsAndAttributes) {
     }
   }
 }
+
+TEST(OutputSchema, AMooredRunWritesItsMotionsAndEveryLinesTension) {
+  // the catenary's four lines: /mooring/tension is n x 4, the other moored columns n x 3, every row
+  // written, and the lines hold the structure (each pulls)
+  const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/moored/small_floes_moored.toml",
+                                 {"time.duration=2", "mooring.model=\"catenary\"", "output.snapshot_interval=0"});
+  const RunSummary s = run_simulation(scene, icedem::testing::test_run("output_schema_moored.h5", "test"));
+  ASSERT_EQ(s.status, "complete");
+  H5::H5File file(std::string(ICEDEM_TEST_TMP) + "/output_schema_moored.h5", H5F_ACC_RDONLY);
+  const hsize_t steps = static_cast<hsize_t>(s.steps);
+  for (const SeriesColumn& c : series_columns()) {
+    if (!c.moored) continue;
+    ASSERT_TRUE(file.nameExists(c.path.substr(0, c.path.rfind('/')))) << c.path;
+    const H5::DataSet d = file.openDataSet(c.path);
+    hsize_t dims[2] = {0, 0};
+    ASSERT_EQ(d.getSpace().getSimpleExtentDims(dims), 2) << c.path;
+    EXPECT_EQ(dims[0], steps) << c.path;
+    EXPECT_EQ(dims[1], c.per_line ? 4u : 3u) << c.path;
+  }
+  std::vector<double> tension(4 * steps);
+  file.openDataSet("/mooring/tension").read(tension.data(), H5::PredType::NATIVE_DOUBLE);
+  for (double t : tension) EXPECT_GT(t, 0.0);
+}
+

@@ -213,7 +213,7 @@ TEST(Scenario, PaperScenarioFileIsValid) {
 TEST(Scenario, EveryShippedScenarioIsValid) {
   // each scenario under scenarios/ must pass `icedem check`
   int checked = 0;
-  for (const char* dir : {"/scenarios/paper", "/scenarios/validation", "/scenarios/examples"}) {
+  for (const char* dir : {"/scenarios/paper", "/scenarios/validation", "/scenarios/examples", "/scenarios/moored"}) {
     const std::string path = std::string(ICEDEM_SOURCE_DIR) + dir;
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator(path, ec)) {

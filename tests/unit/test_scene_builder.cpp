@@ -37,6 +37,8 @@ std::string chosen(const Scene& s, const std::string& key) {
   if (key == "ice.cover") return std::to_string(static_cast<int>(s.ice.cover));
   if (key == "contact.model") return std::to_string(static_cast<int>(s.contact.model));
   if (key == "contact.crushing_contacts") return std::to_string(static_cast<int>(s.contact.crushing_contacts));
+  if (key == "structure.motion") return std::to_string(static_cast<int>(s.structure.motion));
+  if (key == "mooring.model") return std::to_string(static_cast<int>(s.mooring.model));
   return "";  // a choice key this test does not know: it fails below
 }
 

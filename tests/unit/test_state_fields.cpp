@@ -38,6 +38,11 @@ TEST(StateFields, EveryLoadFieldIsInTheCheckpointsList) {
       << "a field of LoadReading is missing from visit_fields (dem/world/load_cell.hpp)";
 }
 
+TEST(StateFields, EveryStructureMotionFieldIsInTheCheckpointsList) {
+  EXPECT_EQ(field_count<StructureMotionState>(), visited_count<StructureMotionState>())
+      << "a field of StructureMotionState is missing from visit_fields (dem/mooring/structure_motion.hpp)";
+}
+
 TEST(StateFields, EveryHistoryFieldIsInTheCheckpointsList) {
   EXPECT_EQ(field_count<RunHistory>(), visited_count<RunHistory>())
       << "a field of RunHistory is missing from visit_fields (dem/output/checkpoint.hpp)";
@@ -142,9 +147,9 @@ TEST(StateFields, EveryFieldComesBackFromACheckpointFile) {
   visit_fields(read.values, b);
   StateValues fresh;
   visit_fields(fresh, defaults);
-  // the fracture stage's part and the load are groups of their own fields
-  ASSERT_EQ(a.fields.size(),
-            field_count<StateValues>() - 2 + field_count<FractureState>() + field_count<LoadReading>());
+  // the fracture stage's part, the load and a moored structure's motion are groups of their own fields
+  ASSERT_EQ(a.fields.size(), field_count<StateValues>() - 3 + field_count<FractureState>() + field_count<LoadReading>() +
+                                 field_count<StructureMotionState>());
   for (const auto& [name, bytes] : a.fields) {
     EXPECT_NE(bytes, defaults.fields[name]) << name << ": the test should set it to a value other than its default";
     EXPECT_EQ(bytes, b.fields[name]) << name << " does not come back from the checkpoint";

@@ -8,8 +8,9 @@ import os
 
 from ..sweeps import aggregate as agg, execute
 from ..runs import output_guard, spec
+from . import flow_table
 from .report_convergence import headline_section
-from .report_tables import FII, FIS, ci, fmt, num, pick, ratio_to_first, read_rows, supplement_rows, sweep_about
+from .report_tables import FII, FIS, ci, fmt, num, ratio_to_first, read_rows, supplement_rows, sweep_about
 
 
 def at_reference(run):
@@ -31,16 +32,6 @@ def finished_summaries(runs, out):
         if execute.status(r, out).state == "done":
             found[r.scenario][r.seed] = run_numbers(agg.load_record(r, out))
     return found
-
-
-def beyond_scatter(row, ref, key):
-    """(difference "+d (± h)", "**yes**" or "no") of two aggregated rows' `key`: beyond the
-    scatter when the difference exceeds the root sum of squares of their 95 % half-widths."""
-    a, b = num(row, key), num(ref, key)
-    if a is None or b is None:
-        return "n/a", "n/a"
-    h = math.hypot(num(row, key + "_ci95") or 0.0, num(ref, key + "_ci95") or 0.0)
-    return f"{a - b:+.1f} (± {h:.1f})", ("**yes**" if abs(a - b) > h else "no")
 
 
 def supplement_section(sweep_file, name, runs, out, rows):
@@ -109,30 +100,16 @@ def before_section(rows, before_out, note):
     return L + [""]
 
 def flow_section(flow_sweep, rows):
-    """The flow models over seeds (a sweep of the small floes under other flow models) against the
-    grid's own small-floe runs at f_ii 0.5, f_is 0.2 (the analytic potential flow, the default):
-    whether a model moves the mean or the max beyond the seeds' scatter."""
-    name, runs, out, frows = supplement_rows(flow_sweep)
-    L = ["## Flow models over seeds", "", sweep_about(flow_sweep), ""]
-    if frows is None:
-        return L + [f"Not aggregated yet (`scripts/sweep aggregate {os.path.relpath(flow_sweep, spec.ROOT)}`).", ""]
-    ref = pick(rows, "small_rigid")
-    table = ([("analytic potential (the grid's small_rigid runs)", ref)] if ref else []) + \
-            [(r["configuration"].split("/")[0], r) for r in frows]
-    L += ["| flow model | seeds | mean N | max N | mean − potential N | beyond scatter? | max − potential N | "
-          "beyond scatter? | CPU per run s |", "|---|---|---|---|---|---|---|---|---|"]
+    """The flow models over seeds (a sweep of the small floes under other flow models, from its
+    records) against the grid's own small-floe runs at f_ii 0.5, f_is 0.2 (the analytic potential flow,
+    the default), each change paired seed by seed by the project's one rule (flow_table.py). `rows`
+    is not read: the grid's runs come from their records too."""
+    _, runs = spec.load(flow_sweep)
+    records_dir = os.path.dirname(os.path.dirname(os.path.dirname(runs[0].record_file)))
+    f = flow_table.facts(records_dir)
+    return (["## Flow models over seeds", "", sweep_about(flow_sweep), "", flow_table.about(f), ""] +
+            flow_table.table(f) + ["", flow_table.multiplicity(f), ""])
 
-    def diff(r, key):
-        return ("", "") if ref is None or r is ref else beyond_scatter(r, ref, key)
-    for label, r in table:
-        dm, bm = diff(r, "mean_fx_N")
-        dx, bx = diff(r, "max_fx_N")
-        n = num(r, "seeds") or 0
-        cpu = num(r, "run_cpu_time_s")
-        L.append(f"| {label} | {r['seeds']} | {ci(r, 'mean_fx_N')} | {ci(r, 'max_fx_N')} | {dm} | {bm} | {dx} | {bx} | "
-                 f"{fmt(cpu / n if cpu is not None and n else None, '', 0)} |")
-    return L + ["", "± are 95 % confidence half-widths over the seeds; a difference is beyond the scatter when "
-                "it exceeds the root sum of squares of the two half-widths.", ""]
 
 def by_model_numerics(runs, out):
     """{(model, numerics): {seed: run_numbers}} of a sweep's finished runs whose scenarios are

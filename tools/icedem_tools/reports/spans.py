@@ -16,11 +16,14 @@ class UnknownKey(KeyError):
     pass
 
 
-def fill(text, resolve):
+def fill(text, resolve, only=None):
     """`text` with every span's content replaced by resolve(KEY); UnknownKey names a key the resolver
-    does not know (resolve raises KeyError for it)."""
+    does not know (resolve raises KeyError for it). With `only`, the spans whose key begins with it
+    (a page whose spans several tools fill), the others left as they are."""
     def one(m):
         key = m.group(1).strip()
+        if only is not None and not key.startswith(only):
+            return m.group(0)
         try:
             value = resolve(key)
         except KeyError:
