@@ -3,7 +3,9 @@
 figure's data and every number of its prose (the spans of tools/icedem_tools/reports/spans.py). The
 page is made again into a temporary file, from the records alone, and compared (its date and the run
 directory it names aside); a span naming nothing the tool makes is refused. docs/model/tank_maxima.md,
-which scripts/tank_maxima makes whole from the paper grid's records, the same."""
+which scripts/tank_maxima makes whole from the paper grid's records, the same; so the paper report's
+convergence and flow-model sections, and the flow models' page with the numbers of README.md's and
+coupling.md's prose (scripts/flow_models)."""
 import os
 import re
 import shutil
@@ -64,4 +66,28 @@ check(report[at:at + len(section)] == section,
       "the paper report's convergence section is what scripts/report makes from the records")
 check(any("dt_half (0.01 s against 0.01 s)" in line for line in section),
       "the 0.15 m lattices' dt_half is labelled as the step it is: 0.01 s against the grid's 0.01 s")
+
+# the flow models over seeds (scripts/flow_models, from the flow sweep's and the grid's records): its page,
+# the numbers of README.md's and coupling.md's prose, and the paper report's section of the same table
+with tempfile.TemporaryDirectory() as d:
+    page = os.path.join(ROOT, "docs", "coupling", "flow_models_seeds.md")
+    prose = [os.path.join(ROOT, "README.md"), os.path.join(ROOT, "docs", "model", "coupling.md")]
+    out = os.path.join(d, "flow_models_seeds.md")
+    shutil.copy(page, out)
+    copies = [os.path.join(d, f"{i}_{os.path.basename(x)}") for i, x in enumerate(prose)]
+    for x, c in zip(prose, copies):
+        shutil.copy(x, c)
+    p = subprocess.run([os.path.join(ROOT, "scripts", "flow_models"), "--report", out, "--pages", *copies],
+                       capture_output=True, text=True)
+    check(p.returncode == 0 and open(out).read() == open(page).read(),
+          "docs/coupling/flow_models_seeds.md is what scripts/flow_models makes from the records")
+    for x, c in zip(prose, copies):
+        check(len([k for k in spans.keys(open(x).read()) if k.startswith("flow |")]) >= 6
+              and open(c).read() == open(x).read(),
+              f"{os.path.relpath(x, ROOT)}: the flow models' numbers in its prose are what scripts/flow_models makes")
+from icedem_tools.reports.report_sweeps import flow_section  # noqa: E402
+section = flow_section(os.path.join(ROOT, "sweeps", "flow_models.toml"), None)
+at = report.index("## Flow models over seeds")
+check(report[at:at + len(section)] == section,
+      "the paper report's flow models section is what scripts/report makes from the records")
 finish()
