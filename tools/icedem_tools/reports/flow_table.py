@@ -60,7 +60,7 @@ def facts(records_dir):
 
 
 def table(f):
-    L = ["| flow model | seeds | mean N | max N | mean against the analytic flow | max against it | CPU per run s |",
+    L = ["| flow model | seeds | mean N | max N | mean against the analytic flow | max against it | CPU per run s (as recorded, on its machine's load) |",
          "|---|---|---|---|---|---|---|"]
     for model, label in MODELS:
         r = f["runs"][model]
