@@ -280,18 +280,24 @@ inline int joint_sweeps(const Scene& s) {
   return s.fracture.joint_iterations > s.solver.iterations ? s.fracture.joint_iterations : s.solver.iterations;
 }
 
+/// Radius of the profile at height y (linear between stations, as the hull is built; 0 outside).
+inline double profile_radius(const std::vector<ProfileStation>& profile, double y) {
+  if (profile.empty() || y < profile.front().y || y > profile.back().y) return 0.0;
+  for (std::size_t i = 1; i < profile.size(); ++i) {
+    if (y <= profile[i].y) {
+      const ProfileStation& a = profile[i - 1];
+      const ProfileStation& b = profile[i];
+      const double s = (y - a.y) / (b.y - a.y);
+      return a.radius + s * (b.radius - a.radius);
+    }
+  }
+  return profile.back().radius;
+}
+
 /// The hull's largest radius between heights y0 and y1 (m; 0 where the hull is not): its stations
 /// there and the profile interpolated linearly at y0 and y1, as the hull is built between stations.
 inline double hull_radius_over(const std::vector<ProfileStation>& hull, double y0, double y1) {
-  const auto radius_at = [&](double y) {
-    for (std::size_t i = 1; i < hull.size(); ++i)
-      if (y >= hull[i - 1].y && y <= hull[i].y) {
-        const double t = (y - hull[i - 1].y) / (hull[i].y - hull[i - 1].y);
-        return hull[i - 1].radius + t * (hull[i].radius - hull[i - 1].radius);
-      }
-    return 0.0;
-  };
-  double r = std::max(radius_at(y0), radius_at(y1));
+  double r = std::max(profile_radius(hull, y0), profile_radius(hull, y1));
   for (const ProfileStation& p : hull)
     if (p.y >= y0 && p.y <= y1) r = std::max(r, p.radius);
   return r;

@@ -13,14 +13,6 @@
 namespace icedem {
 namespace {
 
-// the radius at height y on the profile (0 outside it)
-double radius_at(const std::vector<ProfileStation>& p, double y) {
-  if (y < p.front().y || y > p.back().y) return 0;
-  for (std::size_t i = 0; i + 1 < p.size(); ++i)
-    if (y <= p[i + 1].y) return p[i].radius + (y - p[i].y) / (p[i + 1].y - p[i].y) * (p[i + 1].radius - p[i].radius);
-  return p.back().radius;
-}
-
 // integral of f(y, r(y)) dy over the profile between y0 and y1 by Gauss-Legendre on each frustum
 // (5 points: exact for the polynomials of degree 9 and below a frustum's integrands are)
 template <typename F>
@@ -34,7 +26,7 @@ double integrate(const std::vector<ProfileStation>& p, double y0, double y1, F f
     if (b <= a) continue;
     for (int k = 0; k < 5; ++k) {
       const double y = 0.5 * (a + b) + 0.5 * (b - a) * x[k];
-      sum += 0.5 * (b - a) * w[k] * f(y, radius_at(p, y));
+      sum += 0.5 * (b - a) * w[k] * f(y, profile_radius(p, y));
     }
   }
   return sum;
@@ -61,10 +53,7 @@ AddedMass6 hull_added_mass(const std::vector<ProfileStation>& p, double rho, dou
   AddedMass6 a;
   if (waterline <= keel) return a;
   // the widest section at or below the waterline: the disc the hull pushes when it heaves
-  double r = 0;
-  for (const ProfileStation& s : p)
-    if (s.y <= 0) r = std::max(r, s.radius);
-  r = std::max(r, radius_at(p, waterline));
+  const double r = hull_radius_over(p, keel, waterline);
   const double strips = rho * integrate(p, keel, waterline, [](double, double rr) { return kPi * rr * rr; });
   a.linear = Eigen::Vector3d(strips, 4.0 / 3.0 * rho * r * r * r, strips);
   const double tilt = rho * integrate(p, keel, waterline, [yg](double y, double rr) { return kPi * rr * rr * (y - yg) * (y - yg); }) +
@@ -91,13 +80,12 @@ FloatingStructure make_floating_structure(const Scene& scene) {
   const Eigen::Vector3d axis(st.start_x, 0, st.start_z);
   std::unique_ptr<Mooring> mooring = make_mooring(scene, axis);
   // mass 0: what floats at the still-water line with the mooring pulling (its lines' weight held there)
-  b.mass = st.mass > 0 ? st.mass
-                       : rho * rest.volume + mooring->load(axis, Eigen::Matrix3d::Identity(), 0).force.y() / g;
+  const double pull_up = mooring->load(axis, Eigen::Matrix3d::Identity(), 0).force.y();
+  b.mass = st.mass > 0 ? st.mass : rho * rest.volume + pull_up / g;
   if (!(b.mass > 0))
     throw std::invalid_argument(fmt::format("the mooring pulls the hull down by {:.1f} N, more than its buoyancy at the "
                                             "waterline holds ({:.1f} N)",
-                                            -mooring->load(axis, Eigen::Matrix3d::Identity(), 0).force.y(),
-                                            rho * g * rest.volume));
+                                            -pull_up, rho * g * rest.volume));
   const HullSolid solid = hull_solid(p);
   b.gravity_centre_y = st.gravity_centre_y;
   b.solid_centroid_y = solid.centroid_y;

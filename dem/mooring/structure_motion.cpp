@@ -15,8 +15,8 @@ MooringLoad mooring_load_at(const Scene& scene, const FloatingStructure& body, c
   return body.mooring->load(reference, rotation_matrix(m), scene.structure.speed * time);
 }
 
-MooringLoad advance_structure(const Scene& scene, const FloatingStructure& body, double h, double carriage,
-                              Eigen::Vector3d& reference, StructureMotionState& m, const Eigen::Vector3d& extra) {
+void advance_structure(const Scene& scene, const FloatingStructure& body, double h, double carriage,
+                       Eigen::Vector3d& reference, StructureMotionState& m, const Eigen::Vector3d& extra) {
   const Eigen::Matrix3d r = rotation_matrix(m);
   const Eigen::Vector3d arm = r * Eigen::Vector3d(0, body.gravity_centre_y, 0);  // reference point to G
   Eigen::Vector3d centre = reference + arm;
@@ -48,11 +48,8 @@ MooringLoad advance_structure(const Scene& scene, const FloatingStructure& body,
   const Eigen::AngleAxisd aa(next);
   m.rotation = aa.angle() * aa.axis();
   reference = centre - next * Eigen::Vector3d(0, body.gravity_centre_y, 0);
-  m.mooring_force = mooring.force;
-  m.mooring_moment = mooring.moment;
   m.ice_impulse.setZero();
   m.ice_angular_impulse.setZero();
-  return mooring;
 }
 
 }  // namespace icedem

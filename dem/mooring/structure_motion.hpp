@@ -39,8 +39,6 @@ struct StructureMotionState {
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, tank frame
   Eigen::Vector3d ice_impulse = Eigen::Vector3d::Zero();       // N s, of the last Bullet step, on the structure
   Eigen::Vector3d ice_angular_impulse = Eigen::Vector3d::Zero();  // N m s, about the reference point then
-  Eigen::Vector3d mooring_force = Eigen::Vector3d::Zero();     // N, on the structure, at the last step
-  Eigen::Vector3d mooring_moment = Eigen::Vector3d::Zero();    // N m, about the reference point
 };
 
 template <typename M, typename Visit>  // M: StructureMotionState or const StructureMotionState
@@ -50,8 +48,6 @@ std::enable_if_t<std::is_same_v<std::remove_const_t<M>, StructureMotionState>> v
   visit("angular_velocity", m.angular_velocity);
   visit("ice_impulse", m.ice_impulse);
   visit("ice_angular_impulse", m.ice_angular_impulse);
-  visit("mooring_force", m.mooring_force);
-  visit("mooring_moment", m.mooring_moment);
 }
 
 /// The body's orientation as a rotation matrix.
@@ -62,11 +58,11 @@ MooringLoad mooring_load_at(const Scene& scene, const FloatingStructure& body, c
                             const StructureMotionState& m, double time);
 
 /// One step of `h` s of the structure whose reference point is at `reference` (moved in place),
-/// driven by the ice impulses stored in `m` (the step before's), when the carriage will have moved
-/// `carriage` m by the step's end. Any external force `extra` (N, at the centre of gravity) is added:
-/// the validations' steady pull. Returns the mooring's load at the step's start.
-MooringLoad advance_structure(const Scene& scene, const FloatingStructure& body, double h, double carriage,
-                              Eigen::Vector3d& reference, StructureMotionState& m,
-                              const Eigen::Vector3d& extra = Eigen::Vector3d::Zero());
+/// driven by the ice impulses stored in `m` (the step before's), the forces taken at the step's start,
+/// when the carriage has moved `carriage` m. Any external force `extra` (N, at the centre of gravity) is
+/// added: the validations' steady pull. (The mooring's load on the pose it reaches: mooring_load_at.)
+void advance_structure(const Scene& scene, const FloatingStructure& body, double h, double carriage,
+                       Eigen::Vector3d& reference, StructureMotionState& m,
+                       const Eigen::Vector3d& extra = Eigen::Vector3d::Zero());
 
 }  // namespace icedem

@@ -292,10 +292,6 @@ std::unique_ptr<FlowField> make_flow(const Scene& scene, const FlowCoupling& cou
 
 State initial_state(const Scene& scene, const std::vector<Floe>& floes, const FlowCoupling& coupling) {
   State state;
-  state.world = build_world(scene, floes);
-  install_activation(scene, *state.world);
-  state.flow = make_flow(scene, coupling);
-  if (coupling.drag_exchange) state.drag_exchange = coupling.drag_exchange(scene);
   state.structure_position = structure_position_at(scene, 0.0);
   state.structure_velocity = Eigen::Vector3d(scene.structure.speed, 0.0, 0.0);
   if (scene.structure.motion == StructureMotion::kMoored) {
@@ -305,6 +301,10 @@ State initial_state(const Scene& scene, const std::vector<Floe>& floes, const Fl
     state.structure_position = state.floating->start;
     state.structure_motion.velocity = state.structure_velocity;
   }
+  state.world = build_world(scene, floes, state.structure_position);
+  install_activation(scene, *state.world);
+  state.flow = make_flow(scene, coupling);
+  if (coupling.drag_exchange) state.drag_exchange = coupling.drag_exchange(scene);
   state.flow->set_structure(state.structure_position, state.structure_velocity);
   state.awake_floes = state.world->awake_floes();
   return state;

@@ -1,4 +1,3 @@
-#include "dem/mooring/floating_structure.hpp"
 #include "dem/step/world_builder.hpp"
 
 #include <algorithm>
@@ -66,7 +65,7 @@ double initial_height(const Scene& scene, const Floe& floe) {
   return h / 2 - scene.ice.draft + floe.layer * (h + scene.layout.min_gap);
 }
 
-void add_profile_structure(World& world, const Scene& scene) {
+void add_profile_structure(World& world, const Scene& scene, const Eigen::Vector3d& start) {
   auto compound = std::make_unique<btCompoundShape>();
   std::vector<std::unique_ptr<btCollisionShape>> pieces;
   btTransform identity;
@@ -79,10 +78,6 @@ void add_profile_structure(World& world, const Scene& scene) {
     compound->addChildShape(identity, hull.get());
     pieces.push_back(std::move(hull));
   }
-  // a moored structure starts floating at rest, at the draft its weight and mooring give it
-  const Eigen::Vector3d start = scene.structure.motion == StructureMotion::kMoored
-                                    ? checked_floating_structure(scene).start
-                                    : Eigen::Vector3d(scene.structure.start_x, 0.0, scene.structure.start_z);
   world.add_structure(std::move(compound), start, scene.friction.ice_structure, std::move(pieces));
 }
 
@@ -140,11 +135,12 @@ void add_floes(World& world, const Scene& scene, const std::vector<Floe>& floes)
   }
 }
 
-std::unique_ptr<World> build_world(const Scene& scene, const std::vector<Floe>& floes) {
+std::unique_ptr<World> build_world(const Scene& scene, const std::vector<Floe>& floes,
+                                   const Eigen::Vector3d& structure_start) {
   // at once, not after filling the sweep and prune up to its limit (World::enter_world)
   if (scene.solver.broadphase == Broadphase::kSweepAndPrune) require_sweep_and_prune_room(floes.size());
   auto world = std::make_unique<World>(world_settings(scene));
-  add_profile_structure(*world, scene);
+  add_profile_structure(*world, scene, structure_start);
   add_boundaries(*world, scene);
   add_floes(*world, scene, floes);
   world->settle_broadphase();

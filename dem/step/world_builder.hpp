@@ -29,8 +29,8 @@ bool is_breakable(const Scene& scene, const Polygon& outline);
 /// resting on the layers below it (rafted ice, layout.layers).
 double initial_height(const Scene& scene, const Floe& floe);
 
-/// Add the scene's hull (structure.profile) at the structure's start position.
-void add_profile_structure(World& world, const Scene& scene);
+/// Add the scene's hull (structure.profile) with its reference point at `start`.
+void add_profile_structure(World& world, const Scene& scene, const Eigen::Vector3d& start);
 
 /// Add the mother ice along the channel sides and end, the tank walls and floor.
 void add_boundaries(World& world, const Scene& scene);
@@ -40,7 +40,9 @@ void add_boundaries(World& world, const Scene& scene);
 /// ids continue from the floes already in the world.
 void add_floes(World& world, const Scene& scene, const std::vector<Floe>& floes);
 
-/// The scene's full world: structure, boundaries and the given floes.
-std::unique_ptr<World> build_world(const Scene& scene, const std::vector<Floe>& floes);
+/// The scene's full world: structure, boundaries and the given floes; the structure's reference point
+/// at `structure_start` (the State's at t = 0: a moored structure floats at its own draft).
+std::unique_ptr<World> build_world(const Scene& scene, const std::vector<Floe>& floes,
+                                   const Eigen::Vector3d& structure_start);
 
 }  // namespace icedem

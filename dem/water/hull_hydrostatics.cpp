@@ -31,14 +31,7 @@ HullHydrostatics hull_hydrostatics(const std::vector<ProfileStation>& profile, d
     h.volume += v;
     moment += v * (lo.y + above);
   }
-  const double r = [&] {
-    for (std::size_t i = 0; i + 1 < profile.size(); ++i)
-      if (profile[i + 1].y >= waterline_y) {
-        const double t = (waterline_y - profile[i].y) / (profile[i + 1].y - profile[i].y);
-        return profile[i].radius + t * (profile[i + 1].radius - profile[i].radius);
-      }
-    return profile.back().radius;
-  }();
+  const double r = profile_radius(profile, waterline_y);
   h.buoyancy_centre_y = h.volume > 0 ? moment / h.volume : waterline_y;
   h.waterplane_area = kPi * r * r;
   h.waterplane_inertia = kPi * std::pow(r, 4) / 4;

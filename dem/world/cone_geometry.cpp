@@ -11,19 +11,6 @@
 
 namespace icedem {
 
-double profile_radius(const std::vector<ProfileStation>& profile, double y) {
-  if (profile.empty() || y < profile.front().y || y > profile.back().y) return 0.0;
-  for (std::size_t i = 1; i < profile.size(); ++i) {
-    if (y <= profile[i].y) {
-      const ProfileStation& a = profile[i - 1];
-      const ProfileStation& b = profile[i];
-      const double s = (y - a.y) / (b.y - a.y);
-      return a.radius + s * (b.radius - a.radius);
-    }
-  }
-  return profile.back().radius;
-}
-
 double equal_area_vertex_radius(double r, int segments) {
   // polygon area n/2 R^2 sin(2 pi/n) = pi r^2
   const double n = segments;

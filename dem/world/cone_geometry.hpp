@@ -16,9 +16,6 @@
 
 namespace icedem {
 
-/// Radius of the profile at height y (linear between stations, 0 outside).
-double profile_radius(const std::vector<ProfileStation>& profile, double y);
-
 /// Radius of the vertices of a regular `segments`-gon whose area equals that of
 /// the circle of radius r, so the faceted hull keeps the cross-section area.
 double equal_area_vertex_radius(double r, int segments);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "dem/step/step.hpp"
 #include "dem/step/world_builder.hpp"
 #include "dem/world/world.hpp"
 #include "tests/support/scenes.hpp"
@@ -18,7 +19,7 @@ TEST(WorldBuilder, RigidFloesAreOneBodyEachAndBreakableOnesLatticesOfElementsAnd
   {
     const Scene rigid = bench_scene({"ice.floe_size=0.6"});
     World world(world_settings(rigid));
-    add_profile_structure(world, rigid);
+    add_profile_structure(world, rigid, structure_position_at(rigid, 0.0));
     add_floes(world, rigid, floes);
     ASSERT_NE(world.structure(), nullptr);
     EXPECT_EQ(world.floes().size(), 2u);
@@ -47,7 +48,7 @@ TEST(WorldBuilder, TheHullsMarginGrowsTheConeByIt) {
   auto widest = [](double margin) {
     const Scene scene = bench_scene({"structure.collision_margin=" + std::to_string(margin)});
     World world(world_settings(scene));
-    add_profile_structure(world, scene);
+    add_profile_structure(world, scene, structure_position_at(scene, 0.0));
     const auto* hull = static_cast<const btCompoundShape*>(world.structure()->getCollisionShape());
     double reach = 0;
     for (int i = 0; i < hull->getNumChildShapes(); ++i) {

@@ -3,29 +3,31 @@ over the seeds with their 95 % intervals, each change against the analytic flow 
 the project's one rule (stats/verdict.py), the family's multiplicity statement, and what the pages'
 spans ("flow | ...") name. The paper report's "Flow models over seeds" (report_sweeps.flow_section)
 and scripts/flow_models (studies/flow_models.py) print it."""
-import glob
 import json
 import os
 
+from ..runs import spec
 from ..runs.spec import ROOT
 from ..stats import verdict
 from ..stats.intervals import mean_ci
+from ..sweeps import aggregate as agg
+from .report_tables import at_reference
 
-GRID_RECORDS = os.path.join(ROOT, "docs", "paper_reproduction", "records", "small_rigid",
-                            "friction.ice_ice=0.5,friction.ice_structure=0.2")
+GRID_SWEEP = os.path.join(ROOT, "sweeps", "paper_grid.toml")
 MODELS = [("analytic", "analytic potential flow (the default; the paper grid's runs)"),
           ("still_water", "still water"), ("openfoam_field", "OpenFOAM, field mode"),
           ("openfoam_probe", "OpenFOAM, probe mode")]
 CRITERIA = [("mean", "mean_fx_N"), ("max", "max_fx_N")]
 
 
-def summaries(folder):
-    """{seed: summary} of the finished runs whose records are in `folder` (seed<N>.json)."""
+def summaries(runs):
+    """{seed: summary} of the `runs` whose kept records say they finished."""
     out = {}
-    for path in glob.glob(os.path.join(folder, "seed*.json")):
-        s = json.load(open(path))["summary"]
-        if s.get("status") == "complete" and s.get("mean_fx_N") is not None:
-            out[int(os.path.basename(path)[4:-5])] = s
+    for r in runs:
+        if r.record_file and os.path.isfile(r.record_file):
+            s = json.load(open(r.record_file))["summary"]
+            if agg.finished(s):
+                out[r.seed] = s
     return out
 
 
@@ -35,11 +37,15 @@ def solve_of(s):
     return f"{v.get('method', 'pgs')} to {v.get('tolerance')}"
 
 
-def facts(records_dir):
-    """Each model's runs, means and changes against the analytic flow over the seeds both ran."""
-    runs = {"analytic": summaries(GRID_RECORDS)}
+def facts(flow_sweep):
+    """Each model's runs (the flow sweep's scenarios, the paper grid's small_rigid runs at the reference
+    friction for the analytic flow), means and changes against the analytic flow over the seeds both
+    ran. Raises spec.SweepError for a sweep file that cannot be read."""
+    _, flow_runs = spec.load(flow_sweep)
+    _, grid = spec.load(GRID_SWEEP)
+    runs = {"analytic": summaries([r for r in grid if r.scenario == "small_rigid" and at_reference(r)])}
     for model, _ in MODELS[1:]:
-        runs[model] = summaries(os.path.join(records_dir, model, "base"))
+        runs[model] = summaries([r for r in flow_runs if r.scenario == model])
     ref = runs["analytic"]
     f = {"runs": runs, "means": {}, "changes": {}}
     for model, _ in MODELS:

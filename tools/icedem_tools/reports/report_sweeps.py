@@ -10,13 +10,7 @@ from ..sweeps import aggregate as agg, execute
 from ..runs import output_guard, spec
 from . import flow_table
 from .report_convergence import headline_section
-from .report_tables import FII, FIS, ci, fmt, num, ratio_to_first, read_rows, supplement_rows, sweep_about
-
-
-def at_reference(run):
-    """Whether a grid run is at the paper's reference friction, f_ii 0.5, f_is 0.2."""
-    g = dict(run.grid)
-    return g.get(FII) == 0.5 and g.get(FIS) == 0.2
+from .report_tables import at_reference, ci, fmt, num, ratio_to_first, read_rows, supplement_rows, sweep_about
 
 
 def run_numbers(record):
@@ -104,9 +98,7 @@ def flow_section(flow_sweep, rows):
     records) against the grid's own small-floe runs at f_ii 0.5, f_is 0.2 (the analytic potential flow,
     the default), each change paired seed by seed by the project's one rule (flow_table.py). `rows`
     is not read: the grid's runs come from their records too."""
-    _, runs = spec.load(flow_sweep)
-    records_dir = os.path.dirname(os.path.dirname(os.path.dirname(runs[0].record_file)))
-    f = flow_table.facts(records_dir)
+    f = flow_table.facts(flow_sweep)
     return (["## Flow models over seeds", "", sweep_about(flow_sweep), "", flow_table.about(f), ""] +
             flow_table.table(f) + ["", flow_table.multiplicity(f), ""])
 

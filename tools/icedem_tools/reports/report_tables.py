@@ -10,6 +10,12 @@ from ..sweeps import aggregate as agg, execute
 from ..runs import spec
 
 FII, FIS = "friction.ice_ice", "friction.ice_structure"
+
+
+def at_reference(run):
+    """Whether a grid run is at the paper's reference friction, f_ii 0.5, f_is 0.2."""
+    g = dict(run.grid)
+    return g.get(FII) == 0.5 and g.get(FIS) == 0.2
 BREAKABLE = ("large_breakable_015", "large_breakable_020")
 
 def read_rows(out):

@@ -31,11 +31,9 @@ def main(argv=None):
     ap.add_argument("--pages", nargs="*", help="the pages whose spans to fill (default README.md, docs/model/coupling.md)")
     a = ap.parse_args(argv)
     try:
-        _, runs = spec.load(FLOW_SWEEP)
+        f = facts(FLOW_SWEEP)
     except spec.SweepError as e:
         sys.exit(f"scripts/flow_models: {e}")
-    records_dir = os.path.dirname(os.path.dirname(os.path.dirname(runs[0].record_file)))
-    f = facts(records_dir)
     path = a.report or os.path.join(ROOT, "docs", "coupling", "flow_models_seeds.md")
     pages = PAGES if a.pages is None else a.pages
     output_guard.guard([("--report", path, output_guard.FILE)], [FLOW_SWEEP])
