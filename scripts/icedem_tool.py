@@ -24,6 +24,8 @@ COMMANDS = {
     "estimator_coverage": ("studies.estimator_coverage",
                            "which interval the verdicts use: each estimator's coverage on the budget's records"),
     "flow_models": ("studies.flow_models", "the flow models over seeds against the analytic flow, from the records"),
+    "mooring_stiffness": ("studies.mooring_stiffness",
+                          "the moored cone's stiffness study against the fixed cone, from the records"),
     "tank_maxima": ("studies.tank_maxima", "the tank's largest load against the distribution of the runs' maxima"),
     "stress": ("studies.stress", "the numerical stability stress suite"),
     "fuzz": ("fuzzing.fuzz", "fuzz icedem's input handling with mutated scenario and layout files"),

@@ -99,4 +99,47 @@ CatenaryState solve_catenary(const CatenaryLine& line, double xf, double zf) {
                                        L, w, ea, xf, zf));
 }
 
+std::vector<Eigen::Vector2d> catenary_profile(const CatenaryLine& line, const CatenaryState& state, double xf,
+                                              int points) {
+  if (points < 2) throw std::invalid_argument(fmt::format("a line's profile needs 2 points or more, not {}", points));
+  const double w = line.weight, L = line.length, ea = line.axial_stiffness, cb = line.seabed_friction;
+  const double h = state.horizontal, laid = state.laid_length;
+  std::vector<double> at;  // unstretched length from the anchor
+  for (int i = 0; i < points; ++i) at.push_back(L * i / (points - 1));
+  if (laid > 0 && laid < L) {  // the touchdown point among them, in place of the nearest
+    auto nearest = std::min_element(at.begin() + 1, at.end() - 1,
+                                    [&](double a, double b) { return std::abs(a - laid) < std::abs(b - laid); });
+    if (points > 2) *nearest = laid;
+  }
+  std::vector<Eigen::Vector2d> out;
+  if (h <= 0) {  // hanging straight down from the fairlead onto a slack laid part
+    for (double s : at) {
+      if (s <= laid) out.emplace_back(laid > 0 ? xf * s / laid : xf, 0.0);
+      else out.emplace_back(xf, (s - laid) + w * (s - laid) * (s - laid) / (2 * ea));  // tension w u, u above the seabed
+    }
+    return out;
+  }
+  // the laid part's stretch: the integral of its tension from the anchor, T = max(HF - CB w (L_B - s), 0)
+  const double xb = cb > 0 ? std::max(laid - h / (cb * w), 0.0) : 0.0;
+  auto laid_stretch = [&](double s) {
+    if (cb <= 0) return h * s / ea;
+    if (s <= xb) return 0.0;
+    return ((h - cb * w * laid) * (s - xb) + cb * w * (s * s - xb * xb) / 2) / ea;
+  };
+  const double va = laid > 0 ? 0.0 : state.vertical - w * L;  // vertical tension where the hanging part starts
+  const double s0 = laid > 0 ? laid : 0.0;                    // and its unstretched length from the anchor
+  const double x0 = laid > 0 ? laid + laid_stretch(laid) : 0.0;
+  for (double s : at) {
+    if (laid > 0 && s <= laid) {
+      out.emplace_back(s + laid_stretch(s), 0.0);
+      continue;
+    }
+    const double u = s - s0, v = va + w * u;  // along the hanging part; the vertical tension there
+    out.emplace_back(x0 + h / w * (std::asinh(v / h) - std::asinh(va / h)) + h * u / ea,
+                     h / w * (std::sqrt(1 + (v / h) * (v / h)) - std::sqrt(1 + (va / h) * (va / h))) +
+                         (va * u + w * u * u / 2) / ea);
+  }
+  return out;
+}
+
 }  // namespace icedem

@@ -16,6 +16,8 @@
 // fairlead to the seabed (HF = 0) is its own case.
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Dense>
 
 namespace icedem {
@@ -46,5 +48,14 @@ struct CatenaryState {
 /// stiffness not positive; zf not positive; a fairlead farther than the line stretched taut can
 /// reach is solved: the line stretches), std::runtime_error if Newton's method does not converge.
 CatenaryState solve_catenary(const CatenaryLine& line, double xf, double zf);
+
+/// The shape of a line in the state `state` (of solve_catenary for a fairlead `xf` m from its anchor):
+/// `points` (>= 2) points (horizontal distance from the anchor, height above it), m, at equal steps of
+/// unstretched length from the anchor to the fairlead, and the point where the line leaves the seabed
+/// among them where part of it lies there. The same closed form as the solve, evaluated along the line
+/// (the seabed part stretched by its tension, which friction lowers towards the anchor); its last point
+/// is the fairlead to the solve's tolerance. A line slack enough to hang straight down (HF = 0) lies on
+/// the seabed from the anchor to below the fairlead, slack; its laid part is drawn straight.
+std::vector<Eigen::Vector2d> catenary_profile(const CatenaryLine& line, const CatenaryState& state, double xf, int points);
 
 }  // namespace icedem

@@ -26,6 +26,15 @@ class LinearMooring : public Mooring {
     return out;
   }
 
+  // the springs as one straight "line" from the attachment's rest, on the carriage, to where it is
+  std::vector<std::vector<Eigen::Vector3d>> shape(const Eigen::Vector3d& reference, const Eigen::Matrix3d& rotation,
+                                                  double carriage, int points) const override {
+    const Eigen::Vector3d from = rest_ + Eigen::Vector3d(carriage, 0, 0), to = reference + rotation * arm_;
+    std::vector<Eigen::Vector3d> line;
+    for (int i = 0; i < points; ++i) line.push_back(from + (to - from) * (points > 1 ? double(i) / (points - 1) : 1.0));
+    return {line};
+  }
+
  private:
   Eigen::Vector3d stiffness_, angular_;
   Eigen::Vector3d arm_;   // m, the attachment point from the reference point, body frame
@@ -39,6 +48,15 @@ class CatenaryMooring : public Mooring {
   MooringLoad load(const Eigen::Vector3d& reference, const Eigen::Matrix3d& rotation, double carriage) const override {
     // the anchors move with the carriage: the same as the structure moved back by it
     return mooring_load(lines_, reference - Eigen::Vector3d(carriage, 0, 0), rotation);
+  }
+
+  std::vector<std::vector<Eigen::Vector3d>> shape(const Eigen::Vector3d& reference, const Eigen::Matrix3d& rotation,
+                                                  double carriage, int points) const override {
+    const Eigen::Vector3d moved(carriage, 0, 0);
+    auto lines = mooring_shapes(lines_, reference - moved, rotation, points);
+    for (auto& line : lines)
+      for (Eigen::Vector3d& p : line) p += moved;  // back where the carriage has taken the anchors
+    return lines;
   }
 
  private:

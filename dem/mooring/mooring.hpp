@@ -28,6 +28,12 @@ class Mooring {
   /// `reference` with orientation `rotation`, when the carriage has moved `carriage` m along x from
   /// the start: force and moment about the reference point, tank frame, and each line's tension.
   virtual MooringLoad load(const Eigen::Vector3d& reference, const Eigen::Matrix3d& rotation, double carriage) const = 0;
+
+  /// What the views draw of it for the same pose: per line, `points` points from its far end (an anchor;
+  /// the linear mooring's attachment point at rest on the carriage) to the structure, tank frame.
+  virtual std::vector<std::vector<Eigen::Vector3d>> shape(const Eigen::Vector3d& reference,
+                                                          const Eigen::Matrix3d& rotation, double carriage,
+                                                          int points) const = 0;
 };
 
 /// The mooring scene.mooring describes, for a structure whose reference point starts at `start`

@@ -34,4 +34,20 @@ MooringLoad mooring_load(const std::vector<MooringLine>& lines, const Eigen::Vec
   return out;
 }
 
+std::vector<std::vector<Eigen::Vector3d>> mooring_shapes(const std::vector<MooringLine>& lines,
+                                                         const Eigen::Vector3d& position, const Eigen::Matrix3d& rotation,
+                                                         int points) {
+  std::vector<std::vector<Eigen::Vector3d>> out;
+  for (const MooringLine& m : lines) {
+    const Eigen::Vector3d d = position + rotation * m.fairlead - m.anchor;  // anchor to fairlead
+    const double xf = std::hypot(d.x(), d.z());
+    const Eigen::Vector3d along = xf > 0 ? Eigen::Vector3d(d.x() / xf, 0, d.z() / xf) : Eigen::Vector3d::Zero();
+    std::vector<Eigen::Vector3d> line;
+    for (const Eigen::Vector2d& p : catenary_profile(m.line, solve_catenary(m.line, xf, d.y()), xf, points))
+      line.push_back(m.anchor + p.x() * along + p.y() * Eigen::Vector3d::UnitY());
+    out.push_back(std::move(line));
+  }
+  return out;
+}
+
 }  // namespace icedem

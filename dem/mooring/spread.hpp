@@ -30,4 +30,10 @@ struct MooringLoad {
 MooringLoad mooring_load(const std::vector<MooringLine>& lines, const Eigen::Vector3d& position,
                          const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity());
 
+/// Each line's shape for the body at `position` with `rotation` (as mooring_load takes them): `points`
+/// points from its anchor to its fairlead, tank frame (catenary_profile in the line's vertical plane).
+std::vector<std::vector<Eigen::Vector3d>> mooring_shapes(const std::vector<MooringLine>& lines,
+                                                         const Eigen::Vector3d& position, const Eigen::Matrix3d& rotation,
+                                                         int points);
+
 }  // namespace icedem

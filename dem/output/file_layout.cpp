@@ -193,6 +193,9 @@ OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const 
   d.snap_position = schema_series(file, "/snapshots/rows/position", f8, {3}, snap_rows);
   d.snap_orientation = schema_series(file, "/snapshots/rows/orientation", f8, {4}, snap_rows);
   d.snap_awake = schema_series(file, "/snapshots/rows/awake", H5::PredType::STD_U8LE, {}, snap_rows);
+  if (run.mooring_lines > 0)
+    d.snap_mooring = schema_series(file, "/snapshots/mooring_lines", f8,
+                                   {hsize_t(run.mooring_lines), hsize_t(kMooringShapePoints), 3}, 64);
 
   // fracture events (/fracture/floe_* are written at the end, by write_floe_margins)
   d.events = schema_series(file, "/fracture/events", fracture_file_type(), {}, 256, event_units());
@@ -240,6 +243,8 @@ OutputDatasets open_output_layout(H5::H5File& file) {
     d.series.push_back(open(col.path));
   }
   for (const auto& [member, path] : growing_datasets()) d.*member = open(path);
+  if (file.nameExists("/snapshots") && file.openGroup("/snapshots").nameExists("mooring_lines"))
+    d.snap_mooring = open("/snapshots/mooring_lines");
   return d;
 }
 
@@ -254,6 +259,7 @@ void write_floe_margin_datasets(H5::H5File& file, const std::vector<double>& max
 
 void OutputDatasets::close() {
   for (const auto& [member, path] : growing_datasets()) (this->*member).dataset.reset();
+  snap_mooring.dataset.reset();
   for (Series& s : series) s.dataset.reset();
 }
 

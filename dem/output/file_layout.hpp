@@ -19,6 +19,7 @@ struct OutputDatasets {
   // snapshots: the first holds every body, each later one the bodies whose pose or awake flag
   // changed since the one before (snapshot i: rows end_row[i-1] to end_row[i] of snap_body etc.)
   Series snap_time, snap_end_row, snap_body, snap_position, snap_orientation, snap_awake;
+  Series snap_mooring;  // a moored run's lines at each snapshot (k x lines x points x 3); none when towed
   Series events;
   // the bodies' outlines: rows appended as floes split (fracture.mode = "analytic")
   Series body_floe_id, body_thickness, body_vertex_offset, body_vertices, body_parent, body_born;

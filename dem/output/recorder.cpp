@@ -61,6 +61,7 @@ struct Recorder::Impl {
   std::vector<int64_t> snap_end_row_buffer;
   std::vector<int> snap_body_buffer;
   std::vector<uint8_t> snap_awake_buffer;
+  std::vector<double> snap_mooring_buffer;  // a moored run's lines, x y z of each point
   // the last snapshot's field, every body (position, orientation w x y z, awake): a snapshot
   // writes the rows of the bodies that differ from it
   std::vector<double> last_position, last_orientation;
@@ -81,6 +82,7 @@ struct Recorder::Impl {
   void read_field() {
     start_field();
     const hsize_t k = data.snap_time.rows;
+    if (data.snap_mooring.dataset) data.snap_mooring.rows = k;  // written before the times: as many or more
     if (k == 0) {
       data.snap_body.rows = data.snap_position.rows = data.snap_orientation.rows = data.snap_awake.rows = 0;
       return;
@@ -162,6 +164,7 @@ struct Recorder::Impl {
     snap_position_buffer.clear();
     snap_orientation_buffer.clear();
     snap_awake_buffer.clear();
+    snap_mooring_buffer.clear();
     event_buffer.clear();
     return rows;
   }
@@ -201,6 +204,7 @@ struct Recorder::Impl {
     data.snap_position.write(snap_position_buffer.data(), rows, H5::PredType::NATIVE_DOUBLE);
     data.snap_orientation.write(snap_orientation_buffer.data(), rows, H5::PredType::NATIVE_DOUBLE);
     data.snap_awake.write(snap_awake_buffer.data(), rows, H5::PredType::NATIVE_UINT8);
+    if (data.snap_mooring.dataset) data.snap_mooring.write(snap_mooring_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
     data.snap_end_row.write(snap_end_row_buffer.data(), k, H5::PredType::NATIVE_INT64);
     data.snap_time.write(snap_time_buffer.data(), k, H5::PredType::NATIVE_DOUBLE);
     snap_time_buffer.clear();
@@ -209,6 +213,7 @@ struct Recorder::Impl {
     snap_position_buffer.clear();
     snap_orientation_buffer.clear();
     snap_awake_buffer.clear();
+    snap_mooring_buffer.clear();
   }
 
   void write_event_block() {
@@ -228,7 +233,7 @@ struct Recorder::Impl {
 
   std::size_t snapshot_buffer_bytes() const {
     return (snap_time_buffer.size() + snap_end_row_buffer.size()) * 8 +
-           (snap_position_buffer.size() + snap_orientation_buffer.size()) * sizeof(double) +
+           (snap_position_buffer.size() + snap_orientation_buffer.size() + snap_mooring_buffer.size()) * sizeof(double) +
            4 * snap_body_buffer.size() + snap_awake_buffer.size();
   }
 
@@ -358,13 +363,20 @@ void Recorder::append(const LoadSample& sample) {
   }
 }
 
-void Recorder::append_snapshot(double time, const std::vector<BodyPose>& poses) {
+void Recorder::append_snapshot(double time, const std::vector<BodyPose>& poses,
+                               const std::vector<Eigen::Vector3d>& mooring_points) {
   impl_->require_open("append_snapshot");
   if (poses.size() != impl_->bodies)
     throw std::invalid_argument("Recorder::append_snapshot: " + std::to_string(poses.size()) +
                                 " poses given, the file has " +
                                 std::to_string(impl_->bodies) + " bodies");
   Impl& m = *impl_;
+  const Series& lines = m.data.snap_mooring;
+  const std::size_t points = lines.dataset ? lines.row_shape.at(0) * lines.row_shape.at(1) : 0;
+  if (mooring_points.size() != points)
+    throw std::invalid_argument(fmt::format("Recorder::append_snapshot: {} mooring line points given, the file has "
+                                            "{}", mooring_points.size(), points));
+  for (const Eigen::Vector3d& p : mooring_points) m.snap_mooring_buffer.insert(m.snap_mooring_buffer.end(), {p.x(), p.y(), p.z()});
   m.snap_time_buffer.push_back(time);
   const bool first = m.data.snap_time.rows + m.snap_time_buffer.size() == 1;
   for (std::size_t b = 0; b < poses.size(); ++b) {

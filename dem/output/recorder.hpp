@@ -55,9 +55,11 @@ class Recorder {
   /// Buffers one load sample (call every step).
   void append(const LoadSample& sample);
 
-  /// Buffers one snapshot; `poses` must hold one pose per body, in the order of /bodies
+  /// Buffers one snapshot; `poses` must hold one pose per body, in the order of /bodies, and
+  /// `mooring_points` a moored run's lines, line by line, kMooringShapePoints each (none when towed)
   /// (std::invalid_argument otherwise).
-  void append_snapshot(double time, const std::vector<BodyPose>& poses);
+  void append_snapshot(double time, const std::vector<BodyPose>& poses,
+                       const std::vector<Eigen::Vector3d>& mooring_points = {});
 
   /// Adds bodies after those the file was made with (the pieces of a floe that split), written
   /// at once: later snapshots hold one pose per body, these included. Throws OutputError if

@@ -100,6 +100,12 @@ const std::vector<DatasetEntry>& other_datasets() {
        "body-to-tank rotation as a unit quaternion (w, x, y, z)"},
       {"/snapshots/rows/awake", "m", Element::u1, "1", "1 if the body was awake (being solved), 0 at rest, 2 gone: split into the pieces whose /bodies/parent "
        "names it (a body has no row before it is born)"},
+      {"/snapshots/mooring_lines", fmt::format("k x lines x {} x 3", kMooringShapePoints), Element::f8, "m",
+       fmt::format("moored: each mooring line's shape at the snapshot, {} points from its anchor to its fairlead "
+                   "(the catenary solved for the structure's pose; the linear mooring: one straight line from the "
+                   "attachment point's rest on the carriage to the attachment point), tank frame",
+                   kMooringShapePoints),
+       true},
       {"/fracture/events", "e", Element::compound, "",
        "joint breaks and rigid floes' splits, one row per break, with the floe's state at the break (fields below; "
        "empty when nothing breaks)"},

@@ -24,6 +24,10 @@ namespace icedem {
 /// (with /bodies/parent and /bodies/born), and a snapshot row's awake flag may be 2, gone.
 inline constexpr int kOutputFormatVersion = 2;
 
+/// Points per mooring line in /snapshots/mooring_lines: chords of about 0.27 m on the default 4.06 m
+/// lines, which miss their sag by about a centimetre (L_chord^2 w / (8 H)), a picture's accuracy.
+inline constexpr int kMooringShapePoints = 16;
+
 /// Element type of a dataset, field or attribute in the file (little-endian).
 enum class Element { f8, i4, i8, u1, compound, text };
 
@@ -53,6 +57,7 @@ struct DatasetEntry {
   Element element;
   std::string unit;
   std::string description;
+  bool moored = false;  // written only by runs of a moored structure (RunMeta::mooring_lines > 0)
 };
 
 const std::vector<DatasetEntry>& other_datasets();

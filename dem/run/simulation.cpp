@@ -22,6 +22,7 @@
 #include "dem/output/checkpoint.hpp"
 #include "dem/output/progress.hpp"
 #include "dem/output/recorder.hpp"
+#include "dem/output/schema.hpp"
 #include "dem/output/statistics.hpp"
 #include "dem/step/initial_state.hpp"
 #include "dem/step/step.hpp"
@@ -73,6 +74,16 @@ void record_moored(const Scene& scene, const State& state, LoadSample& sample, R
   history.surge_offset.push_back((state.structure_position.x() - structure_position_at(scene, state.time).x()) * travel);
   history.max_tension.push_back(mooring.tensions.empty() ? 0.0
                                                          : *std::max_element(mooring.tensions.begin(), mooring.tensions.end()));
+}
+
+// a moored structure's lines as a snapshot keeps them (none when towed): each line's points in turn
+std::vector<Eigen::Vector3d> mooring_points(const Scene& scene, const State& state) {
+  std::vector<Eigen::Vector3d> out;
+  if (!state.floating) return out;
+  const auto lines = state.floating->mooring->shape(state.structure_position, rotation_matrix(state.structure_motion),
+                                                    scene.structure.speed * state.time, kMooringShapePoints);
+  for (const auto& line : lines) out.insert(out.end(), line.begin(), line.end());
+  return out;
 }
 
 RunMeta run_meta(const Scene& scene, const RunOptions& options) {
@@ -378,7 +389,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   const long total_steps = step_count(scene);
   const long snapshot_every =
       scene.output.snapshot_interval > 0 ? std::max(1L, std::lround(scene.output.snapshot_interval / scene.time.dt)) : 0;
-  if (snapshot_every && !options.resume) recorder.append_snapshot(0.0, body_poses(*state.world));
+  if (snapshot_every && !options.resume) recorder.append_snapshot(0.0, body_poses(*state.world), mooring_points(scene, state));
   const long checkpoint_every = checkpoint_steps(scene, options);
 
   const std::unique_ptr<ValidationCase> validation = make_validation_case(scene, state);
@@ -454,7 +465,7 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       if (floes_split(scene) && state.world->floes().size() > recorder.body_count())
         recorder.add_bodies(body_outlines(scene, *state.world, recorder.body_count(), state.time));
       if (snapshot_every && state.step % snapshot_every == 0)
-        recorder.append_snapshot(state.time, body_poses(*state.world));
+        recorder.append_snapshot(state.time, body_poses(*state.world), mooring_points(scene, state));
 
       // report, and keep the file readable every few seconds
       progress.update(state.time, sample.surge(), state.awake_floes);

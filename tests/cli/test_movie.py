@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """scripts/movie end to end on the short tow: one frame per snapshot (or every Nth), frames that
-change as the structure moves, the joints' path with breakable floes; a run without snapshots and
+change as the structure moves, the joints' path with breakable floes, a moored cone's lines; a run without snapshots and
 a movie over the run's own file are refused (exit 2) and leave nothing.
 
 Usage: test_movie.py SOURCE_DIR WORK_DIR ICEDEM
@@ -74,6 +74,25 @@ def red(image):  # pixels of the cracks' colour in the views (left of the load p
 check(len(shots) == 5 and red(shots[0]) == 0 and red(shots[-1]) > 50,
       f"a run of breakable floes: its cracks drawn once broken (red pixels first {red(shots[0]) if shots else '-'}, "
       f"last {red(shots[-1]) if shots else '-'}; exit {p.returncode}) {p.stderr[-300:]}")
+
+# the cone moored by four catenary lines: its lines drawn in orange (matplotlib's C1), anchors to fairleads,
+# in the top and side views of every frame; a towed run's frames have none of that colour
+moored = os.path.join(work, "moored.h5")
+subprocess.run([icedem, "run", os.path.join(src, "scenarios", "moored", "small_floes_moored.toml"), "-q", "-o", moored,
+                "--set", "time.duration=2", "--set", 'mooring.model="catenary"', "--set", "output.snapshot_interval=1"],
+               check=True, capture_output=True)
+p = subprocess.run([movie, moored, "--span", "5"], capture_output=True, text=True)
+shots = frames(os.path.join(work, "moored.gif")) if p.returncode == 0 else []
+
+
+def orange(image):  # C1, (255, 127, 14), in the views
+    views = image[:, : int(0.6 * image.shape[1])]
+    return int(((views[..., 0] > 200) & (np.abs(views[..., 1] - 127) < 40) & (views[..., 2] < 70)).sum())
+
+
+check(len(shots) == 3 and min(orange(x) for x in shots) > 100 and orange(frames(gif)[0]) == 0,
+      f"a moored run's lines are drawn (orange pixels {[orange(x) for x in shots]}, towed "
+      f"{orange(frames(gif)[0]) if os.path.exists(gif) else '-'}; exit {p.returncode}) {p.stderr[-300:]}")
 
 # refusals: nothing written
 bare = run("bare", "output.snapshot_interval=0")

@@ -1,17 +1,20 @@
 """Run by ParaView's pvpython: open an XDMF file with ParaView's XDMF reader and
 check its time steps, cells and the floe_id field against what the writer says;
 for a run with breakable floes also the joints' block: its cells, and how many of
-them are broken at the first and at the last time step.
+them are broken at the first and at the last time step; for a moored run (lines=N) its mooring
+block: N polylines, each with its tension, every one pulling.
 
-    pvpython check_xdmf.py RUN.xdmf STEPS CELLS FLOES [JOINTS BROKEN_FIRST BROKEN_LAST]
+    pvpython check_xdmf.py RUN.xdmf STEPS CELLS FLOES [JOINTS BROKEN_FIRST BROKEN_LAST] [lines=N]
 """
 import sys
 
 from paraview import servermanager
 from paraview.simple import UpdatePipeline, XDMFReader
 
-path, steps, cells, floes = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
-joints = [int(a) for a in sys.argv[5:8]] if len(sys.argv) > 5 else None
+lines = [int(a.split("=")[1]) for a in sys.argv if a.startswith("lines=")]
+args = [a for a in sys.argv if not a.startswith("lines=")]
+path, steps, cells, floes = args[1], int(args[2]), int(args[3]), int(args[4])
+joints = [int(a) for a in args[5:8]] if len(args) > 5 else None
 reader = XDMFReader(FileNames=[path])
 reader.UpdatePipelineInformation()
 times = list(reader.TimestepValues)
@@ -43,6 +46,15 @@ for t, broken_expected in ((times[0], joints[1] if joints else None), (times[-1]
     assert floe_id is not None, "no floe_id cell data"
     lo, hi = floe_id.GetRange()
     assert (lo, hi) == (0, floes - 1), f"floe_id range {(lo, hi)}, expected (0, {floes - 1})"
+    if lines:
+        assert "mooring" in grids, f"t = {t}: no mooring block (blocks: {sorted(grids)})"
+        mg = grids["mooring"]
+        assert mg.GetNumberOfCells() == lines[0], f"t = {t}: {mg.GetNumberOfCells()} lines, expected {lines[0]}"
+        tension = mg.GetCellData().GetArray("tension")
+        assert tension is not None and min(tension.GetValue(i) for i in range(lines[0])) > 0, \
+            f"t = {t}: every line pulls (tension > 0)"
+    else:
+        assert "mooring" not in grids, "a towed run has no mooring block"
     if joints is None:
         assert "joints" not in grids, "a run without joints has no joints block"
         continue
@@ -57,5 +69,5 @@ for t, broken_expected in ((times[0], joints[1] if joints else None), (times[-1]
     modes = jg.GetCellData().GetArray("failure_mode")
     for i in range(modes.GetNumberOfTuples()):
         assert (modes.GetValue(i) >= 0) == bool(broken.GetValue(i)), f"t = {t}: joint {i}: mode and state disagree"
-joined = f", {joints[0]} joints, {joints[2]} broken at the end" if joints else ""
+joined = (f", {joints[0]} joints, {joints[2]} broken at the end" if joints else "") + (f", {lines[0]} mooring lines" if lines else "")
 print(f"ParaView read {path}: {steps} time steps, {cells} cells, floe ids 0-{floes - 1}{joined}")

@@ -2,8 +2,8 @@
 # "Opens in ParaView", tested: a short run's snapshots written as XDMF
 # (scripts/xdmf_snapshots.py) and read by ParaView's own XDMF reader (pvpython, in
 # Debian's python3-paraview package, which scripts/test.sh installs). Two runs: rigid
-# floes (one grid per snapshot), and breakable floes whose joints break (a floes and a
-# joints block per snapshot: the cracks).
+# floes (one grid per snapshot), breakable floes whose joints break (a floes and a
+# joints block per snapshot: the cracks), and a cone moored by four catenary lines (a mooring block).
 # Usage: test_paraview.sh ICEDEM_BINARY SOURCE_DIR WORK_DIR
 set -euo pipefail
 icedem="$1"; src="$2"; work="$3"
@@ -72,3 +72,10 @@ with h5py.File("lattice.h5", "r") as h, h5py.File("lattice_views.h5", "r") as v:
 PY
 pvpython --force-offscreen-rendering "$src/tests/paraview/check_xdmf.py" lattice.xdmf "$steps" "$cells" "$floes" \
   "$joints" "$first" "$last"
+
+# 3. the cone moored by four catenary lines: the lines as polylines with their tensions
+"$icedem" run "$src/scenarios/moored/small_floes_moored.toml" -o moored.h5 -q --set time.duration=2 \
+  --set 'mooring.model="catenary"' --set output.snapshot_interval=0.5 >/dev/null
+/usr/bin/python3 "$src/scripts/xdmf_snapshots.py" moored.h5
+read -r steps cells floes _ _ _ < <(counts moored.h5)
+pvpython --force-offscreen-rendering "$src/tests/paraview/check_xdmf.py" moored.xdmf "$steps" "$cells" "$floes" lines=4

@@ -6,6 +6,8 @@
 
 #include <H5Cpp.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <string>
@@ -89,6 +91,10 @@ TEST(OutputSchema, ABreakableRunWritesExactlyTheDeclaredDatasetsAndAttributes) {
   }
   for (const DatasetEntry& e : other_datasets()) {
     declared.insert(e.path);
+    if (e.moored) {  // a moored structure's: not in a towed run's file
+      EXPECT_FALSE(found.count(e.path)) << e.path << " is a moored run's, but a towed run wrote it";
+      continue;
+    }
     ASSERT_TRUE(found.count(e.path)) << e.path << " is declared but not written";
     const Found& f = found.at(e.path);
     if (e.element != Element::compound) {
@@ -137,7 +143,7 @@ TEST(OutputSchema, AMooredRunWritesItsMotionsAndEveryLinesTension) {
   // the catenary's four lines: /mooring/tension is n x 4, the other moored columns n x 3, every row
   // written, and the lines hold the structure (each pulls)
   const Scene scene = load_scene(std::string(ICEDEM_SOURCE_DIR) + "/scenarios/moored/small_floes_moored.toml",
-                                 {"time.duration=2", "mooring.model=\"catenary\"", "output.snapshot_interval=0"});
+                                 {"time.duration=2", "mooring.model=\"catenary\"", "output.snapshot_interval=0.5"});
   const RunSummary s = run_simulation(scene, icedem::testing::test_run("output_schema_moored.h5", "test"));
   ASSERT_EQ(s.status, "complete");
   H5::H5File file(std::string(ICEDEM_TEST_TMP) + "/output_schema_moored.h5", H5F_ACC_RDONLY);
@@ -154,5 +160,28 @@ TEST(OutputSchema, AMooredRunWritesItsMotionsAndEveryLinesTension) {
   std::vector<double> tension(4 * steps);
   file.openDataSet("/mooring/tension").read(tension.data(), H5::PredType::NATIVE_DOUBLE);
   for (double t : tension) EXPECT_GT(t, 0.0);
+  // the lines' shapes at each snapshot (t = 0, 0.5, ..., 2 s), k x 4 x 16 x 3: each from its anchor on the
+  // tank's floor to its fairlead on the hull, which rests before the ice arrives (1 mm: its settling)
+  const H5::DataSet lines = file.openDataSet("/snapshots/mooring_lines");
+  hsize_t dims[4] = {0, 0, 0, 0};
+  ASSERT_EQ(lines.getSpace().getSimpleExtentDims(dims), 4);
+  EXPECT_EQ(dims[0], 5u);
+  EXPECT_EQ(dims[1], 4u);
+  EXPECT_EQ(dims[2], static_cast<hsize_t>(kMooringShapePoints));
+  EXPECT_EQ(dims[3], 3u);
+  std::vector<double> p(dims[0] * dims[1] * dims[2] * 3);
+  lines.read(p.data(), H5::PredType::NATIVE_DOUBLE);
+  std::vector<double> xs(3 * steps);  // the reference point, one row a step, from t = dt
+  file.openDataSet("/structure/position").read(xs.data(), H5::PredType::NATIVE_DOUBLE);
+  for (hsize_t k = 0; k < dims[0]; ++k)
+    for (hsize_t l = 0; l < dims[1]; ++l) {
+      const double* first = &p[((k * dims[1] + l) * dims[2]) * 3];
+      const double* last = first + 3 * (dims[2] - 1);
+      EXPECT_NEAR(first[1], -scene.channel.tank_depth, 1e-12) << "an anchor on the floor, snapshot " << k;
+      const long row = std::lround(0.5 * k / scene.time.dt) - 1;
+      const double* at = &xs[3 * std::clamp<long>(row, 0, static_cast<long>(steps) - 1)];
+      EXPECT_NEAR(std::hypot(last[0] - at[0], last[2] - at[2]), scene.mooring.fairlead_radius, 1e-3) << k << " " << l;
+      EXPECT_NEAR(last[1] - at[1], scene.mooring.fairlead_y, 1e-3) << k << " " << l;
+    }
 }
 

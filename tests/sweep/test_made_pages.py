@@ -5,7 +5,8 @@ page is made again into a temporary file, from the records alone, and compared (
 directory it names aside); a span naming nothing the tool makes is refused. docs/model/tank_maxima.md,
 which scripts/tank_maxima makes whole from the paper grid's records, the same; so the paper report's
 convergence and flow-model sections, and the flow models' page with the numbers of README.md's and
-coupling.md's prose (scripts/flow_models)."""
+coupling.md's prose (scripts/flow_models); and the moored cone's stiffness study in docs/model/mooring.md
+(scripts/mooring_stiffness), and docs/model/level_ice.md (scripts/level_ice_report)."""
 import os
 import re
 import shutil
@@ -85,6 +86,26 @@ with tempfile.TemporaryDirectory() as d:
         check(len([k for k in spans.keys(open(x).read()) if k.startswith("flow |")]) >= 6
               and open(c).read() == open(x).read(),
               f"{os.path.relpath(x, ROOT)}: the flow models' numbers in its prose are what scripts/flow_models makes")
+# the moored cone's stiffness study (scripts/mooring_stiffness, from its records and the grid's): the table
+# and every number of docs/model/mooring.md's prose about it
+with tempfile.TemporaryDirectory() as d:
+    page = os.path.join(ROOT, "docs", "model", "mooring.md")
+    out = os.path.join(d, "mooring.md")
+    shutil.copy(page, out)
+    p = subprocess.run([os.path.join(ROOT, "scripts", "mooring_stiffness"), "--report", out,
+                        "--figure", os.path.join(d, "mooring_stiffness.png")], capture_output=True, text=True)
+    check(p.returncode == 0 and open(out).read() == open(page).read()
+          and len([k for k in spans.keys(open(page).read()) if k.startswith("mooring |")]) >= 8,
+          f"docs/model/mooring.md's study is what scripts/mooring_stiffness makes from the records {p.stderr[-200:]}")
+# the level tows against ISO 19906 and Ralston (scripts/level_ice_report, from the level-ice sweep's records and
+# the build's `icedem cone-load`): docs/model/level_ice.md whole
+with tempfile.TemporaryDirectory() as d:
+    out = os.path.join(d, "level_ice.md")
+    p = subprocess.run([os.path.join(ROOT, "scripts", "level_ice_report"),
+                        os.path.join(ROOT, "sweeps", "studies", "level_ice.toml"), "--report", out],
+                       capture_output=True, text=True)
+    check(p.returncode == 0 and open(out).read() == open(os.path.join(ROOT, "docs", "model", "level_ice.md")).read(),
+          f"docs/model/level_ice.md is what scripts/level_ice_report makes from the records {p.stderr[-200:]}")
 from icedem_tools.reports.report_sweeps import flow_section  # noqa: E402
 section = flow_section(os.path.join(ROOT, "sweeps", "flow_models.toml"), None)
 at = report.index("## Flow models over seeds")

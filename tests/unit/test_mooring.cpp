@@ -110,6 +110,54 @@ TEST(Catenary, SeabedFrictionTakesTensionBeforeTheAnchor) {
   EXPECT_LT(held.horizontal, 1.001 * free.horizontal) << "the stretch is small beside the span: a small effect";
 }
 
+// The drawn shape is the solve's closed form along the line: from the anchor (0, 0) to the fairlead
+// (XF, ZF) to the solve's tolerance (1e-12 relative; 1e-9 m asked), on the seabed up to the touchdown
+// point, rising after it with the slope VF / HF reached at the fairlead (the tension's direction), and
+// as long as the line stretched: the chords no longer than the line under its largest tension, and short
+// of the unstretched length by no more than the chords' sag (0.1 % at 41 points)
+void expect_profile_closes(const CatenaryLine& l, double xf, double zf) {
+  const CatenaryState s = solve_catenary(l, xf, zf);
+  const int n = 41;
+  const auto p = catenary_profile(l, s, xf, n);
+  ASSERT_EQ(p.size(), static_cast<std::size_t>(n));
+  EXPECT_NEAR(p.front().x(), 0.0, 1e-12) << xf;
+  EXPECT_NEAR(p.front().y(), 0.0, 1e-12);
+  EXPECT_NEAR(p.back().x(), xf, 1e-9) << "the shape ends at the fairlead, " << xf;
+  EXPECT_NEAR(p.back().y(), zf, 1e-9);
+  const double tension = std::hypot(s.horizontal, s.vertical);
+  double drawn = 0;
+  for (int i = 1; i < n; ++i) {
+    drawn += (p[i] - p[i - 1]).norm();
+    EXPECT_GE(p[i].x(), p[i - 1].x()) << "no line doubles back, " << i;
+    EXPECT_GE(p[i].y(), p[i - 1].y() - 1e-12) << "nor sags below the seabed, " << i;
+  }
+  if (s.horizontal > 0) {  // chords of the stretched line: no longer than it, shorter by a chord's sag only
+    EXPECT_LE(drawn, l.length * (1 + tension / l.axial_stiffness)) << xf;
+    EXPECT_GE(drawn, 0.999 * l.length) << xf;
+  }
+  // the touchdown point among the points: on the seabed at the laid length, stretched by at most
+  // HF / EA (below the fairlead for a slack line)
+  const double touchdown = s.horizontal > 0 ? s.laid_length : xf;
+  bool found = s.laid_length == 0;
+  for (const auto& q : p)
+    found = found || (q.y() == 0 && q.x() >= touchdown - 1e-12 && q.x() <= touchdown * (1 + tension / l.axial_stiffness));
+  EXPECT_TRUE(found) << "the touchdown point is one of the points";
+  if (s.horizontal > 0) {
+    const Eigen::Vector2d last = p[n - 1] - p[n - 2];
+    EXPECT_NEAR(last.y() / last.x(), s.vertical / s.horizontal, 0.05 * s.vertical / s.horizontal + 1e-3)
+        << "the last segment points along the fairlead's tension (to a chord's error)";
+  }
+}
+
+TEST(Catenary, TheDrawnShapeIsTheSolvedLine) {
+  expect_profile_closes(line(5e4), 5.4, kHeight);         // on the seabed
+  expect_profile_closes(line(5e4), 5.9, kHeight);         // hanging whole, stretched
+  expect_profile_closes(line(5e4, 0.5), 5.0, kHeight);    // friction, tension zero on the seabed
+  expect_profile_closes(line(5e4, 0.05), 5.45, kHeight);  // friction, tension all along
+  expect_profile_closes(line(5e4), 2.0, kHeight);         // slack, hanging straight down
+  EXPECT_THROW(catenary_profile(line(5e4), solve_catenary(line(5e4), 5.4, kHeight), 5.4, 1), std::invalid_argument);
+}
+
 TEST(Catenary, BadLinesAndPositionsAreRefused) {
   EXPECT_THROW(solve_catenary(CatenaryLine{0, 2, 5e4}, 5, 2), std::invalid_argument);
   EXPECT_THROW(solve_catenary(CatenaryLine{6, -2, 5e4}, 5, 2), std::invalid_argument);

@@ -8,7 +8,8 @@ second). The movie is an animated GIF (Pillow, which the project installs), or a
 name ends in .mp4 and Debian's ffmpeg is installed. Top view: every body's outline where the
 snapshot has it, in shades of blue by floe, pale while asleep; the joints broken by then as red lines (their
 glued faces, dem/output/xdmf's joints); the structure's waterline section. Side view: the same
-bodies as prisms across the channel, the structure's profile. Both follow the structure, `--span`
+bodies as prisms across the channel, the structure's profile (heaved and pitched as it moves, for a
+moored one, with its mooring's lines in orange: /snapshots/mooring_lines). Both follow the structure, `--span`
 metres either side of it (default 4). Right: the surge load over the run, a marker at the frame's
 time. Nothing of the run is written to: the movie goes to -o (default beside the run, RUN.gif).
 """
@@ -56,6 +57,9 @@ def read(path):
             "load_time": h["/load/time"][:],
             "surge": h["/load/surge"][:],
             "structure": h["/structure/position"][:],
+            # a moored structure's rotation vector per step and its lines per snapshot (none when towed)
+            "rotation": h["/structure/rotation"][:] if "/structure/rotation" in h else None,
+            "lines": h["/snapshots/mooring_lines"][:] if "/snapshots/mooring_lines" in h else None,
             "profile": structure_profile(h),
             "joints": joint_faces(h, off, vertices, thickness),
         }
@@ -90,6 +94,15 @@ def structure_at(run, t):
     """The structure's reference point (its axis at the waterline) at time t, m."""
     lt = run["load_time"]
     return np.array([np.interp(t, lt, run["structure"][:, i]) for i in range(3)])
+
+
+def rotation_at(run, t):
+    """The structure's rotation matrix at time t (the identity for a towed one)."""
+    if run["rotation"] is None:
+        return np.eye(3)
+    from scipy.spatial.transform import Rotation
+    lt = run["load_time"]
+    return Rotation.from_rotvec([np.interp(t, lt, run["rotation"][:, i]) for i in range(3)]).as_matrix()
 
 
 def draw(run, frames, path, fps, span):
@@ -145,9 +158,15 @@ def draw(run, frames, path, fps, span):
                     w = quads[j][:2] @ quat_to_matrix(orientation[b]).T + position[b]
                     segs.append(w[:, [0, 2]])
                 top_ax.add_collection(LineCollection(segs, colors="red", linewidths=1.6))
-        # the hull see-through: floes pushed under it stay in view
+        # the hull see-through: floes pushed under it stay in view; a moored one's heave and pitch
+        R = rotation_at(run, t)
+        side = np.column_stack([hull_side, np.zeros(len(hull_side))]) @ R.T
         top_ax.fill(circle[:, 0] + s[0], circle[:, 1] + s[2], color="0.4", alpha=0.45, zorder=3)
-        side_ax.fill(hull_side[:, 0] + s[0], hull_side[:, 1], color="0.4", alpha=0.45, zorder=3)
+        side_ax.fill(side[:, 0] + s[0], side[:, 1] + s[1], color="0.4", alpha=0.45, zorder=3)
+        if run["lines"] is not None:  # the mooring's lines, anchors to fairleads
+            for line in run["lines"][k]:
+                top_ax.plot(line[:, 0], line[:, 2], color="C1", lw=1.2, zorder=4)
+                side_ax.plot(line[:, 0], line[:, 1], color="C1", lw=1.2, zorder=4)
         side_ax.axhline(0.0, color="C0", lw=0.8, zorder=0)
         top_ax.set_xlim(s[0] - span, s[0] + span)
         top_ax.set_ylim(*z_lim)

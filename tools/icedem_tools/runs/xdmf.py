@@ -13,6 +13,10 @@ element's side), with cell data `broken` (1 once /fracture/events has its break)
 XDMF's Information and in /fracture/events' mode_names), `break_time` (s, -1 if
 it never broke) and `floe_id`. Threshold on `broken` to see the cracks.
 
+A moored run (structure.motion = "moored") gets a grid "mooring": each line as a polyline from its
+anchor to its fairlead (/snapshots/mooring_lines; the linear mooring: its attachment's offset from
+rest), with cell data `tension` (N, /mooring/tension at the snapshot's step).
+
     scripts/xdmf_snapshots.py RUN.h5
 """
 import html
@@ -105,6 +109,9 @@ def write_views(path):
             base += 2 * n
         npts = base
         joints = joint_faces(h, off, verts, thick)
+        lines = h["/snapshots/mooring_lines"][:] if "/snapshots/mooring_lines" in h else None  # k x l x p x 3
+        if lines is not None:
+            load_time, tension = h["/load/time"][:], h["/mooring/tension"][:]
         with h5py.File(views, "w") as out:
             if joints is not None:
                 quads, first, jfloe, break_time, mode, mode_names = joints
@@ -112,6 +119,13 @@ def write_views(path):
                 out["joint_topology"] = np.arange(4 * nj, dtype=np.int64).reshape(nj, 4)
                 out["joint_floe_id"] = jfloe.astype(np.int32)
                 out["joint_break_time"] = break_time
+            if lines is not None:
+                nl, npl = lines.shape[1], lines.shape[2]
+                out["line_topology"] = np.arange(nl * npl, dtype=np.int64).reshape(nl, npl)
+                for k in range(len(times)):
+                    out[f"line_points/{k}"] = lines[k].reshape(-1, 3)
+                    at = min(np.searchsorted(load_time, times[k]), len(load_time) - 1) if len(load_time) else None
+                    out[f"line_tension/{k}"] = tension[at] if at is not None else np.zeros(nl)
             out["topology"] = np.asarray(topo, dtype=np.int64)
             out["floe_id"] = np.repeat(floe, 2).astype(np.int32)
             for k in range(len(times)):
@@ -151,17 +165,30 @@ def write_views(path):
       </Grid>"""
 
     grids = []
+    alone = joints is None and lines is None  # the floes' grid alone at each time, or a spatial collection
     for k, t in enumerate(times):
         time = f'        <Time Value="{t:.6g}"/>\n'
-        floes = grid("floes" if joints is not None else f"t{k}", "" if joints is not None else time,
+        floes = grid("floes" if not alone else f"t{k}", "" if not alone else time,
                      f'TopologyType="Mixed" NumberOfElements="{cells}">\n          <DataItem Dimensions="{len(topo)}" '
                      f'NumberType="Int" Precision="8" Format="HDF">{name}:/topology</DataItem>',
                      f'Dimensions="{npts} 3" NumberType="Float" Precision="8" Format="HDF">{name}:/points/{k}</DataItem>',
                      [attribute("floe_id", cells, "floe_id"), attribute("awake", cells, f"awake/{k}")])
-        if joints is None:
+        if alone:
             grids.append(floes)
             continue
-        # with joints, a spatial collection per time: the floes and the joints' faces
+        parts = [floes]
+        if lines is not None:
+            parts.append(grid("mooring", "", f'TopologyType="Polyline" NodesPerElement="{npl}" NumberOfElements="{nl}">\n'
+                              f'          <DataItem Dimensions="{nl} {npl}" NumberType="Int" Precision="8" Format="HDF">'
+                              f'{name}:/line_topology</DataItem>',
+                              f'Dimensions="{nl * npl} 3" NumberType="Float" Precision="8" Format="HDF">{name}:/line_points/{k}'
+                              '</DataItem>', [attribute("tension", nl, f"line_tension/{k}", "Float", 8)]))
+        if joints is None:
+            grids.append(f"""      <Grid Name="t{k}" GridType="Collection" CollectionType="Spatial">
+{time}{chr(10).join(parts)}
+      </Grid>""")
+            continue
+        # with joints, a spatial collection per time: the floes, the joints' faces (and the lines)
         faces = grid("joints", "", f'TopologyType="Quadrilateral" NumberOfElements="{nj}">\n          <DataItem '
                      f'Dimensions="{nj} 4" NumberType="Int" Precision="8" Format="HDF">{name}:/joint_topology</DataItem>',
                      f'Dimensions="{4 * nj} 3" NumberType="Float" Precision="8" Format="HDF">{name}:/joint_points/{k}'
@@ -171,9 +198,9 @@ def write_views(path):
                       attribute("break_time", nj, "joint_break_time", "Float", 8),
                       attribute("floe_id", nj, "joint_floe_id")],
                      f'        <Information Name="failure_mode" Value="{html.escape(mode_names)}"/>\n')
+        parts.insert(1, faces)
         grids.append(f"""      <Grid Name="t{k}" GridType="Collection" CollectionType="Spatial">
-{time}{floes}
-{faces}
+{time}{chr(10).join(parts)}
       </Grid>""")
     with open(stem + ".xdmf", "w") as f:
         f.write(f"""<?xml version="1.0" ?>
@@ -185,7 +212,7 @@ def write_views(path):
   </Domain>
 </Xdmf>
 """)
-    joined = f", {nj} joints" if joints is not None else ""
+    joined = (f", {nj} joints" if joints is not None else "") + (f", {nl} mooring lines" if lines is not None else "")
     print(f"wrote {stem}.xdmf and {views} ({len(times)} snapshots, {nb} bodies{joined})")
 
 
