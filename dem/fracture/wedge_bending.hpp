@@ -1,5 +1,6 @@
 // The bending of a wedge of floating ice loaded at its apex: the statics of level ice broken by a
-// structure, where the sheet's first radial cracks have cut wedges from its edge (docs/model/level_ice.md).
+// structure, where the sheet's first radial cracks have cut wedges from its edge (docs/model/breakage.md,
+// "The edge and the wedges of level ice").
 //
 // A narrow wedge of opening angle theta is a beam whose width grows from its apex, b(x) = 2 x tan(theta/2),
 // on the water, an elastic (Winkler) foundation of stiffness rho_w g per unit area (Nevel's narrow infinite
