@@ -59,8 +59,7 @@ def facts(flow_sweep):
                 continue
             a = [runs[model][x][key] for x in seeds]
             b = [ref[x][key] for x in seeds]
-            d, iv = verdict.paired(a, b)
-            f["changes"][(model, name)] = (d, iv, verdict.change_verdict(iv, None), verdict.paired_p(a, b), len(seeds))
+            f["changes"][(model, name)] = verdict.judged_change(a, b)
     f["solves"] = sorted({solve_of(s) for r in runs.values() for s in r.values()})
     return f
 
@@ -82,14 +81,7 @@ def table(f):
 
 
 def multiplicity(f):
-    keys = sorted(f["changes"])
-    p = [f["changes"][k][3] for k in keys]
-    holm, bh = verdict.family(p)
-    raw = [k for k in keys if f["changes"][k][2] == "moves"]
-    name = lambda k: f"{k[0]} {k[1]}"
-    return (f"{len(keys)} changes judged at 95 % each; {len(raw)} move ({', '.join(map(name, raw)) or 'none'}); "
-            f"under Holm's correction for the family {sum(holm)} hold "
-            f"({', '.join(name(k) for k, h in zip(keys, holm) if h) or 'none'}), under Benjamini-Hochberg's {sum(bh)}.")
+    return verdict.family_text(f["changes"], lambda k: f"{k[0]} {k[1]}")
 
 
 def resolver(f):

@@ -98,6 +98,25 @@ def family(pvalues, level=0.05):
     return [bool(x) for x in holm], [bool(x) for x in bh]
 
 
+def judged_change(a, b):
+    """The change of `a` over `b` (values over the same seeds, two or more) as a page's family lists it:
+    (change, 95 % interval, verdict without a tolerance, p-value of no change, seeds)."""
+    d, iv = paired(a, b)
+    return d, iv, change_verdict(iv, None), paired_p(a, b), len(a)
+
+
+def family_text(changes, name):
+    """The multiplicity sentence of a page's family of changes ({key: judged_change's tuple}), each named
+    by name(key): how many move at 95 % each, and which hold under Holm's and Benjamini-Hochberg's
+    corrections (family)."""
+    keys = sorted(changes)
+    holm, bh = family([changes[k][3] for k in keys])
+    raw = [k for k in keys if changes[k][2] == "moves"]
+    return (f"{len(keys)} changes judged at 95 % each; {len(raw)} move ({', '.join(map(name, raw)) or 'none'}); "
+            f"under Holm's correction for the family {sum(holm)} hold "
+            f"({', '.join(name(k) for k, h in zip(keys, holm) if h) or 'none'}), under Benjamini-Hochberg's {sum(bh)}.")
+
+
 def judge(e, ref, tolerances):
     """A setting's ensemble against the reference's, by the project's one rule: per criterion of
     `tolerances` ({name: bound on the relative change}) that both have, the relative change over

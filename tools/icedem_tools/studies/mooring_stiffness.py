@@ -63,8 +63,7 @@ def facts(study=STUDY):
             if len(seeds) < 2:
                 continue
             a, b = [moored[k][x][key] for x in seeds], [fixed[x][key] for x in seeds]
-            d, iv = verdict.paired(a, b)
-            f["changes"][(k, name)] = (d, iv, verdict.change_verdict(iv, None), verdict.paired_p(a, b), len(seeds))
+            f["changes"][(k, name)] = verdict.judged_change(a, b)
     for name, key in CRITERIA:
         f["means"][("fixed", "ice " + name)] = mean_ci([s[key] for s in fixed.values()])
     f["limit"] = fixed_limit(f)
@@ -105,14 +104,7 @@ def table(f):
 
 
 def multiplicity(f):
-    keys = sorted(f["changes"])
-    p = [f["changes"][k][3] for k in keys]
-    holm, bh = verdict.family(p)
-    raw = [k for k in keys if f["changes"][k][2] == "moves"]
-    name = lambda k: f"{k_text(k[0])} N/m {k[1]}"
-    return (f"{len(keys)} changes judged at 95 % each; {len(raw)} move ({', '.join(map(name, raw)) or 'none'}); "
-            f"under Holm's correction for the family {sum(holm)} hold "
-            f"({', '.join(name(k) for k, h in zip(keys, holm) if h) or 'none'}), under Benjamini-Hochberg's {sum(bh)}.")
+    return verdict.family_text(f["changes"], lambda k: f"{k_text(k[0])} N/m {k[1]}")
 
 
 def limit_text(f):
