@@ -11,7 +11,7 @@ ICEDEM_PACKAGES=(
   build-essential cmake pkg-config
   libbullet-dev libeigen3-dev libhdf5-dev libtomlplusplus-dev libcli11-dev
   nlohmann-json3-dev libfmt-dev googletest libgtest-dev libbenchmark-dev
-  libfclib-dev libsiconos-numerics-dev libsuitesparse-dev libssl-dev libboost-dev
+  libfclib-dev libsiconos-numerics-dev libsuitesparse-dev libssl-dev libboost-dev libcgal-dev
   python3-numpy python3-h5py python3-matplotlib
   python3-scipy python3-statsmodels python3-skimage python3-pil parallel slurm-wlm munge procps
   openfoam python3-paraview

@@ -1,0 +1,63 @@
+// When and how the analytic level sheet breaks under a contact zone's load (docs/model/breakage.md, "Level ice
+// cut by closed forms").
+//
+// The sheet's edge at a zone is a wedge of ice whose opening angle theta is measured from the outline: the
+// angle the sheet fills about the zone's centre within the crack's distance, 2 |sheet ∩ disc(c, x*)| / x*^2
+// (pi at a straight edge, less at a corner left by earlier pieces; more, in a notch, is taken as pi).
+//   - An edge wider than a right angle cracks radially under the load first: the semi-infinite plate's
+//     radial crack needs P_r = sigma_b h^2 / (6 m_y(a / l)), a fifth or less of what its wedges need
+//     (plate_edge_load.hpp: 8.9 N against 2 x 16.6 N for the paper's ice over a = 0.1 l). The crack runs
+//     through the centre along the load, and the two wedges of theta / 2 it leaves share the load: they
+//     break together at 2 P_f(theta / 2).
+//   - A wedge of a right angle or less breaks as Nevel's narrow wedge at P_f(theta) (wedge_bending.hpp),
+//     whose radial cracking the beam idealisation cannot tell.
+// The load is spread over the zone's half-width a, the wedge's patch; the circumferential crack lies at
+// x*(a / l) from the centre. What breaks off is the sheet within x* of the centre (the part of
+// sheet ∩ disc(c, x*) that holds the centre), split along the radial crack where there is one; what is left
+// of the sheet is its largest part, and any other part it falls into leaves with the pieces.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "dem/fracture/sheet_contact.hpp"
+#include "dem/layout/polygon.hpp"
+
+namespace icedem {
+
+/// The ice and water the closed forms need.
+struct SheetIce {
+  double thickness = 0;         // m
+  double elastic_modulus = 0;   // Pa
+  double poisson_ratio = 0;     // -
+  double bending_strength = 0;  // Pa
+  double water_density = 0;     // kg/m^3
+  double gravity = 0;           // m/s^2
+};
+
+/// An edge wider than this (rad) cracks radially first.
+constexpr double kRadialCrackAngle = M_PI / 2;
+/// Segments of the circle that stands for the circumferential crack (over a full turn).
+constexpr int kCrackSegments = 48;
+
+/// Where and at what load the sheet breaks at a zone.
+struct SheetBreakPlan {
+  double opening_angle = 0;   // rad, theta, in (0, pi]
+  bool radial_crack = false;  // two wedges of theta / 2
+  double breaking_load = 0;   // N, normal to the sheet
+  double crack_distance = 0;  // m, x* from the zone's centre
+};
+
+/// The plan for the zone `contact` of the sheet `sheet` (m, ccw).
+SheetBreakPlan plan_sheet_break(const Polygon& sheet, const SheetContact& contact, const SheetIce& ice);
+
+/// The sheet after a break and what broke off it.
+struct SheetCut {
+  Polygon sheet;                // m, what is left: the largest part
+  std::vector<Polygon> pieces;  // m, each one piece of ice (convex or not), ccw
+};
+
+/// Cut the sheet at `contact` by `plan`.
+SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan);
+
+}  // namespace icedem

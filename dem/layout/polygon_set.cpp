@@ -1,0 +1,82 @@
+// Boolean operations of simple polygons by Boost.Geometry; see polygon_set.hpp.
+#include "dem/layout/polygon_set.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/multi_polygon.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+
+namespace icedem {
+namespace {
+
+namespace bg = boost::geometry;
+using Point = bg::model::d2::point_xy<double>;
+// Boost's default ring is clockwise in a plot of (x, z) with z up, which is ccw seen from above
+// (polygon.hpp): the project's own orientation, so rings pass through unchanged.
+using BgPolygon = bg::model::polygon<Point>;
+using BgMulti = bg::model::multi_polygon<BgPolygon>;
+
+BgPolygon to_bg(const Polygon& p) {
+  BgPolygon out;
+  for (const Eigen::Vector2d& v : make_ccw(p)) bg::append(out.outer(), Point(v.x(), v.y()));
+  bg::correct(out);  // closes the ring
+  return out;
+}
+
+std::vector<Polygon> from_bg(const BgMulti& multi, const char* operation) {
+  std::vector<Polygon> out;
+  for (const BgPolygon& p : multi) {
+    if (!p.inners().empty())
+      throw std::logic_error(std::string("polygon_set: ") + operation +
+                             " would leave a hole in a region (a cut from inside the sheet, not from its edge)");
+    Polygon ring;
+    const auto& outer = p.outer();
+    for (std::size_t i = 0; i + 1 < outer.size(); ++i) ring.emplace_back(outer[i].x(), outer[i].y());
+    if (ring.size() >= 3 && area(ring) > 0) out.push_back(make_ccw(std::move(ring)));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Polygon> intersect(const Polygon& a, const Polygon& b) {
+  BgMulti out;
+  bg::intersection(to_bg(a), to_bg(b), out);
+  return from_bg(out, "intersect");
+}
+
+std::vector<Polygon> subtract(const Polygon& a, const Polygon& b) {
+  BgMulti out;
+  bg::difference(to_bg(a), to_bg(b), out);
+  return from_bg(out, "subtract");
+}
+
+Polygon disc(const Eigen::Vector2d& centre, double radius, int segments) {
+  Polygon out;
+  for (int i = 0; i < segments; ++i) {
+    const double t = 2 * M_PI * i / segments;
+    out.emplace_back(centre.x() + radius * std::cos(t), centre.y() + radius * std::sin(t));
+  }
+  return make_ccw(std::move(out));
+}
+
+Polygon half_plane(const Eigen::Vector2d& point, const Eigen::Vector2d& normal, double reach) {
+  const Eigen::Vector2d along(-normal.y(), normal.x());
+  const Polygon box = {point - reach * along, point + reach * along, point + reach * along + 2 * reach * normal,
+                       point - reach * along + 2 * reach * normal};
+  return make_ccw(box);
+}
+
+bool contains(const Polygon& region, const Eigen::Vector2d& p) {
+  return bg::covered_by(Point(p.x(), p.y()), to_bg(region));
+}
+
+bool is_simple(const Polygon& region) {
+  if (region.size() < 3 || area(region) <= 0) return false;
+  return bg::is_valid(to_bg(region));
+}
+
+}  // namespace icedem

@@ -1,0 +1,91 @@
+// Regions of any shape (dem/layout/polygon_set.hpp) and their convex parts (dem/layout/convex_partition.hpp):
+// the Boolean operations keep area, a cut that would leave a hole is refused, and a non-convex outline splits
+// into convex parts of the same total area.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "dem/layout/convex_partition.hpp"
+#include "dem/layout/polygon_set.hpp"
+
+namespace icedem {
+namespace {
+
+Polygon rectangle(double x0, double z0, double x1, double z1) {
+  return make_ccw({{x0, z0}, {x1, z0}, {x1, z1}, {x0, z1}});
+}
+
+double total_area(const std::vector<Polygon>& parts) {
+  double a = 0;
+  for (const Polygon& p : parts) a += area(p);
+  return a;
+}
+
+// Overlapping rectangles: the intersection and the difference are rectangles whose areas add up to the
+// first's (round-off: 1e-12 of the area), and both come back ccw
+TEST(PolygonSet, IntersectionAndDifferenceShareTheArea) {
+  const Polygon a = rectangle(0, 0, 4, 2), b = rectangle(3, -1, 6, 1);
+  const std::vector<Polygon> in = intersect(a, b), out = subtract(a, b);
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_NEAR(area(in[0]), 1.0, 1e-12);
+  EXPECT_NEAR(total_area(in) + total_area(out), area(a), 1e-12 * area(a));
+  for (const Polygon& p : out) EXPECT_GT(signed_area(p), 0);
+  EXPECT_TRUE(intersect(a, rectangle(5, 5, 6, 6)).empty());
+}
+
+// A disc of n segments has the inscribed polygon's area, n/2 sin(2 pi / n) r^2
+TEST(PolygonSet, ADiscIsItsInscribedPolygon) {
+  const Polygon d = disc({1, 2}, 0.5, 64);
+  EXPECT_EQ(d.size(), 64u);
+  EXPECT_NEAR(area(d), 32 * std::sin(2 * M_PI / 64) * 0.25, 1e-12);
+  EXPECT_TRUE(contains(d, {1, 2}));
+  EXPECT_FALSE(contains(d, {1.6, 2}));
+}
+
+// Cutting a disc out of the middle of a region would leave a hole: refused, not dropped
+TEST(PolygonSet, AHoleIsRefused) {
+  EXPECT_THROW(subtract(rectangle(0, 0, 4, 4), disc({2, 2}, 0.5, 32)), std::logic_error);
+}
+
+// A cut across a strip leaves two parts
+TEST(PolygonSet, ACutAcrossLeavesTwoParts) {
+  const std::vector<Polygon> parts = subtract(rectangle(0, 0, 4, 1), rectangle(1.9, -1, 2.1, 2));
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_NEAR(total_area(parts), 3.8, 1e-12);
+}
+
+// The half-plane keeps the points on its normal's side
+TEST(PolygonSet, AHalfPlaneKeepsItsSide) {
+  const std::vector<Polygon> right = intersect(rectangle(0, 0, 2, 2), half_plane({0.5, 1}, {1, 0}, 10));
+  ASSERT_EQ(right.size(), 1u);
+  EXPECT_NEAR(area(right[0]), 3.0, 1e-12);
+}
+
+// A notched outline (an L) is not convex: its parts are convex, cover its area, and are as few as can be (2)
+TEST(ConvexPartition, AnLSplitsIntoTwoConvexParts) {
+  const Polygon l = make_ccw({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
+  ASSERT_FALSE(is_convex(l));
+  const std::vector<Polygon> parts = convex_parts(l);
+  EXPECT_EQ(parts.size(), 2u);
+  for (const Polygon& p : parts) {
+    EXPECT_TRUE(is_convex(p));
+    EXPECT_GT(signed_area(p), 0);
+  }
+  EXPECT_NEAR(total_area(parts), 3.0, 1e-12);
+}
+
+// A crescent (a disc less a disc that overlaps it) of many vertices: convex parts of the same area; a convex
+// outline comes back whole
+TEST(ConvexPartition, ACrescentSplitsIntoConvexPartsOfItsArea) {
+  const std::vector<Polygon> crescent = subtract(disc({0, 0}, 1.0, 48), disc({0.8, 0}, 0.7, 48));
+  ASSERT_EQ(crescent.size(), 1u);
+  const std::vector<Polygon> parts = convex_parts(crescent[0]);
+  EXPECT_GT(parts.size(), 1u);
+  for (const Polygon& p : parts) EXPECT_TRUE(is_convex(p));
+  EXPECT_NEAR(total_area(parts), area(crescent[0]), 1e-12 * area(crescent[0]));
+  EXPECT_EQ(convex_parts(disc({0, 0}, 1.0, 16)).size(), 1u);
+}
+
+}  // namespace
+}  // namespace icedem
