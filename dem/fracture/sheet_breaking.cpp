@@ -17,6 +17,9 @@ namespace {
 // the paper's l), which makes a memo's answer the one computed afresh.
 constexpr double kPatchStep = 2.5e-4;
 
+// segments of the circle the sheet's opening angle is measured on
+constexpr int kAngleSegments = 128;
+
 WedgeBending wedge_at(double patch_over_l) {
   static std::map<long, WedgeBending> memo;
   const long key = std::max(1L, std::lround(patch_over_l / kPatchStep));
@@ -58,11 +61,13 @@ SheetBreakPlan plan_sheet_break(const Polygon& sheet, const SheetContact& contac
   const double l = characteristic_length(ice);
   const WedgeBending w = wedge_at(contact.half_width / l);
   plan.crack_distance = w.crack_distance * l;
+  // the angle the sheet fills about the centre, measured on a finer circle than the crack's (an angle of a
+  // polygon of few sides depends on where its vertices fall), against that polygon's own area, so that a
+  // straight edge fills pi
   double filled = 0;
-  for (const Polygon& p : intersect(sheet, disc(contact.centre, plan.crack_distance, kCrackSegments)))
+  for (const Polygon& p : intersect(sheet, disc(contact.centre, plan.crack_distance, kAngleSegments)))
     filled += area(p);
-  // against the polygon's disc, a little smaller than the circle, so that a straight edge fills pi
-  const double polygon_circle = 0.5 * kCrackSegments * std::sin(2 * M_PI / kCrackSegments) *
+  const double polygon_circle = 0.5 * kAngleSegments * std::sin(2 * M_PI / kAngleSegments) *
                                 plan.crack_distance * plan.crack_distance;
   plan.opening_angle = std::clamp(2 * M_PI * filled / polygon_circle, 1e-3, M_PI);
   plan.radial_crack = plan.opening_angle > kRadialCrackAngle;
@@ -71,33 +76,60 @@ SheetBreakPlan plan_sheet_break(const Polygon& sheet, const SheetContact& contac
   return plan;
 }
 
+namespace {
+
+// the parts of `regions` within `clip`
+std::vector<Polygon> clipped(const std::vector<Polygon>& regions, const Polygon& clip) {
+  std::vector<Polygon> out;
+  for (const Polygon& r : regions)
+    for (Polygon& p : intersect(r, clip)) out.push_back(std::move(p));
+  return out;
+}
+
+}  // namespace
+
 SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan) {
-  const Polygon circle = disc(contact.centre, plan.crack_distance, kCrackSegments);
-  std::vector<Polygon> inside = intersect(sheet, circle);
-  if (inside.empty()) throw std::logic_error("cut_sheet: the crack's circle misses the sheet");
-  // what breaks off: the part of the sheet within the circle that holds the load; the rest of the circle's
-  // ice (another tongue of the sheet that crosses it) stays
-  const std::size_t loaded = part_holding(inside, contact.centre);
-  const Polygon broken = inside[loaded];
+  const Eigen::Vector2d& c = contact.centre;
+  const Eigen::Vector2d d = contact.direction;
+  const Eigen::Vector2d n(-d.y(), d.x());
+  const double x = plan.crack_distance;
+  const double reach = 4 * x + 1.0;  // half-planes as squares larger than anything they cut here
+  // nothing breaks off farther than 2 x* from the centre (a free edge that runs back towards the chord would
+  // otherwise let a wedge's region run along it)
+  const Polygon bound = disc(c, 2 * x, kCrackSegments);
+  // each wedge: the sheet between its sides (the radial crack, the free edge) short of its chord, the straight
+  // crack across its axis at x*, in the part that holds the load
+  std::vector<Polygon> broken;
+  auto add_wedge = [&](const Eigen::Vector2d& axis, const std::vector<Polygon>& side) {
+    std::vector<Polygon> parts = clipped(clipped(side, half_plane(c + x * axis, -axis, reach)), bound);
+    if (parts.empty()) return;
+    broken.push_back(parts[part_holding(parts, c)]);
+  };
+  if (plan.radial_crack) {
+    // the radial crack along the load halves the edge into wedges of theta / 2, their axes theta / 4 off it
+    const double turn = plan.opening_angle / 4;
+    for (double s : {1.0, -1.0})
+      add_wedge(std::cos(turn) * d + s * std::sin(turn) * n, intersect(sheet, half_plane(c, s * n, reach)));
+  } else {
+    add_wedge(d, {sheet});
+  }
+  if (broken.empty()) throw std::logic_error("cut_sheet: nothing of the sheet lies within the crack");
 
   SheetCut out;
-  std::vector<Polygon> left = subtract(sheet, broken);
+  std::vector<Polygon> left = {sheet};
+  for (const Polygon& b : broken) {
+    std::vector<Polygon> next;
+    for (const Polygon& l : left)
+      for (Polygon& p : subtract(l, b)) next.push_back(std::move(p));
+    left = std::move(next);
+  }
   if (left.empty()) throw std::logic_error("cut_sheet: the break takes the whole sheet");
   const auto largest = std::max_element(left.begin(), left.end(),
                                         [](const Polygon& a, const Polygon& b) { return area(a) < area(b); });
   out.sheet = *largest;
   for (auto it = left.begin(); it != left.end(); ++it)
     if (it != largest) out.pieces.push_back(*it);
-
-  if (!plan.radial_crack) {
-    out.pieces.push_back(broken);
-    return out;
-  }
-  // the radial crack through the centre along the load splits the broken ice in two
-  const Eigen::Vector2d normal(-contact.direction.y(), contact.direction.x());
-  const double reach = 2 * plan.crack_distance + 1.0;
-  for (const Eigen::Vector2d side : {normal, Eigen::Vector2d(-normal)})
-    for (Polygon& half : intersect(broken, half_plane(contact.centre, side, reach))) out.pieces.push_back(half);
+  for (Polygon& b : broken) out.pieces.push_back(std::move(b));
   return out;
 }
 

@@ -11,10 +11,12 @@
 //     break together at 2 P_f(theta / 2).
 //   - A wedge of a right angle or less breaks as Nevel's narrow wedge at P_f(theta) (wedge_bending.hpp),
 //     whose radial cracking the beam idealisation cannot tell.
-// The load is spread over the zone's half-width a, the wedge's patch; the circumferential crack lies at
-// x*(a / l) from the centre. What breaks off is the sheet within x* of the centre (the part of
-// sheet ∩ disc(c, x*) that holds the centre), split along the radial crack where there is one; what is left
-// of the sheet is its largest part, and any other part it falls into leaves with the pieces.
+// The load is spread over the zone's half-width a, the wedge's patch; each wedge breaks across its axis at
+// x*(a / l) from the centre, along a straight crack (the wedge's chord there): the beam's section of the largest
+// moment is the arc of radius x*, but a rigid piece can only hinge about a straight crack, and one bounded by an
+// arc would be locked against the sheet as it turns down (the hinge of a piece broken by bending is the crack's
+// far face). What breaks off is each wedge's ice short of its chord (within 2 x* of the centre, in the part that
+// holds it); what is left of the sheet is its largest part, and any other part it falls into leaves with the pieces.
 #pragma once
 
 #include <Eigen/Core>
@@ -37,8 +39,8 @@ struct SheetIce {
 
 /// An edge wider than this (rad) cracks radially first.
 constexpr double kRadialCrackAngle = M_PI / 2;
-/// Segments of the circle that stands for the circumferential crack (over a full turn).
-constexpr int kCrackSegments = 48;
+/// Segments of the circle that bounds a break (2 x* about the centre), over a full turn.
+constexpr int kCrackSegments = 16;
 
 /// Where and at what load the sheet breaks at a zone.
 struct SheetBreakPlan {

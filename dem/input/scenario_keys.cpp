@@ -277,10 +277,12 @@ std::vector<KeySpec> make_keys() {
   // ice
   k.push_back(choice("ice.cover", "floes", {"floes", "level"},
                      "what covers the channel: \"floes\" (a field of floes, ice.floe_size and ice.concentration, "
-                     "or layout.file) or \"level\" (one continuous sheet over the channel's length and width, "
-                     "breakable: fracture.mode = \"on\"; it moves within fracture.lattice_radius of the structure "
-                     "axis and is held where it lies beyond, as the sheet far from the structure is; "
-                     "dem/fracture/level_ice.hpp)"));
+                     "or layout.file) or \"level\" (one continuous sheet over the channel's length and width: "
+                     "with fracture.mode = \"on\" a lattice of breakable elements that moves within "
+                     "fracture.lattice_radius of the structure axis and is held where it lies beyond, as the sheet "
+                     "far from the structure is, dem/fracture/level_ice.hpp; with fracture.mode = \"analytic\" one "
+                     "held sheet from which the structure's load breaks wedges at their closed-form breaking load, "
+                     "the pieces rigid floes, dem/fracture/analytic_sheet.hpp; no checkpoints yet)"));
   k.push_back(positive("ice.floe_size", "m", 0.3, 100.0, "side of the square floes (paper: 0.3 / 0.6 m)"));
   k.push_back(real("ice.thickness", "m", 0.033, 0.001, 10.0, "ice thickness (Table 3: 0.033 m)"));
   k.push_back(real("ice.concentration", "-", 0.75, 0.0, 0.9,
@@ -417,7 +419,8 @@ std::vector<KeySpec> make_keys() {
                      "breakable ice elements: off (rigid floes), on, or auto (only floes larger "
                      "than the characteristic length); analytic: rigid floes that split in two when "
                      "the structure's load normal to a floe reaches the breaking edge load of a "
-                     "floating beam (docs/model/breakage.md)"));
+                     "floating beam, and level ice (ice.cover = \"level\") cut by closed forms "
+                     "(docs/model/breakage.md)"));
   k.push_back(real("fracture.element_size", "m", 0.15, 0.01, 100.0,
                        "side of the square ice elements (paper: 0.15 / 0.20 m); for hexagons, the distance "
                        "between neighbouring elements' centres (their width across flats)"));

@@ -280,6 +280,11 @@ inline int joint_sweeps(const Scene& s) {
   return s.fracture.joint_iterations > s.solver.iterations ? s.fracture.joint_iterations : s.solver.iterations;
 }
 
+/// Level ice cut by closed forms (dem/fracture/analytic_sheet.hpp), not a lattice.
+inline bool analytic_level_ice(const Scene& s) {
+  return s.ice.cover == IceCover::kLevel && s.fracture.mode == FractureMode::kAnalytic;
+}
+
 /// Radius of the profile at height y (linear between stations, as the hull is built; 0 outside).
 inline double profile_radius(const std::vector<ProfileStation>& profile, double y) {
   if (profile.empty() || y < profile.front().y || y > profile.back().y) return 0.0;

@@ -168,11 +168,27 @@ void check_level_ice(const Scenario& sc, const Scene& s) {
   const std::string why = "ice.cover = \"level\" ";
   if (s.validation.kind != ValidationKind::kNone)
     fail_key(sc, "ice.cover", "\"floes\" for a validation case: its plate or beam is the only ice");
-  if (s.fracture.mode != FractureMode::kOn)
-    fail_key(sc, "fracture.mode", "\"on\" with " + why + "(the sheet is a lattice of breakable elements)");
+  if (s.fracture.mode != FractureMode::kOn && s.fracture.mode != FractureMode::kAnalytic)
+    fail_key(sc, "fracture.mode",
+             "\"on\" (a lattice of breakable elements) or \"analytic\" (one sheet cut by closed forms) with " + why);
   if (!s.layout.file.empty())
     fail_key(sc, "layout.file", "empty with " + why + "(the sheet fills the channel; a layout is of floes)");
   if (s.layout.layers > 1) fail_key(sc, "layout.layers", "1 with " + why + "(one sheet)");
+  if (s.fracture.mode == FractureMode::kAnalytic) {
+    // the sheet is held and its crushed zones bear the crushing force as long as they overlap the hull: a
+    // hull that advances; a moored one, which can back off, would be pushed back by ice already crushed
+    if (s.structure.motion != StructureMotion::kTowed)
+      fail_key(sc, "structure.motion", "\"towed\" with " + why + "and fracture.mode = \"analytic\" (the held sheet's "
+                                       "crushing load is for a hull that advances into it)");
+    const double top = s.ice.thickness - s.ice.draft, bottom = -s.ice.draft;
+    const double flare = std::abs(profile_radius(s.structure.profile, top) - profile_radius(s.structure.profile, bottom));
+    if (flare < 0.05 * s.ice.thickness)
+      fail_key(sc, "structure.profile",
+               fmt::format("a sloping hull where the ice meets it with {}and fracture.mode = \"analytic\": its radius "
+                           "changes by {:.4f} m across the ice's thickness, a wall that crushes the ice and does not bend it",
+                           why, flare));
+    return;  // the rest is the lattice's
+  }
   if (s.water.added_mass)
     fail_key(sc, "water.added_mass", "false with " + why + "(the added mass is a floe's, of its whole outline; a "
                                      "sheet's has no such model here)");

@@ -327,11 +327,11 @@ void describe_output(const Scene& scene, const Layout& layout, Recorder& recorde
 
 // steps between two checkpoints; 0: none. Runs whose state lives partly outside icedem (an
 // OpenFOAM partner exchanging drag, a validation case's loads) or that export contact problems
-// do not checkpoint
+// do not checkpoint, nor yet does level ice cut by closed forms (its sheet is not in a checkpoint)
 long checkpoint_steps(const Scene& scene, const RunOptions& options) {
   const bool partner = scene.flow.model == FlowModel::kCoupled && scene.coupling.mode == CouplingMode::kProbe;
   if (scene.output.checkpoint_interval <= 0 || scene.validation.kind != ValidationKind::kNone || partner ||
-      !options.problems.directory.empty())
+      !options.problems.directory.empty() || analytic_level_ice(scene))
     return 0;
   return std::max(1L, std::lround(scene.output.checkpoint_interval / scene.time.dt));
 }

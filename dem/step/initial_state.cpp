@@ -302,6 +302,11 @@ State initial_state(const Scene& scene, const std::vector<Floe>& floes, const Fl
     state.structure_motion.velocity = state.structure_velocity;
   }
   state.world = build_world(scene, floes, state.structure_position);
+  if (analytic_level_ice(scene)) {
+    const Floe& sheet = floes.front();  // level ice's layout is its one sheet
+    state.sheet = std::make_unique<AnalyticSheet>(scene, *state.world, transformed(sheet.shape, sheet.centre, sheet.yaw),
+                                                  static_cast<int>(floes.size()));
+  }
   install_activation(scene, *state.world);
   state.flow = make_flow(scene, coupling);
   if (coupling.drag_exchange) state.drag_exchange = coupling.drag_exchange(scene);

@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include "dem/core/diagnostics.hpp"
+#include "dem/fracture/analytic_sheet.hpp"
 #include "dem/fracture/fracture_state.hpp"
 #include "dem/mooring/floating_structure.hpp"
 #include "dem/mooring/structure_motion.hpp"
@@ -94,6 +95,7 @@ struct State : StateValues {
   std::unique_ptr<FlowField> flow;
   std::unique_ptr<DragExchange> drag_exchange;
   std::shared_ptr<const FloatingStructure> floating;  // structure.motion = "moored": the body and its mooring
+  std::unique_ptr<AnalyticSheet> sheet;  // level ice cut by closed forms (analytic_level_ice), else null
 };
 
 }  // namespace icedem

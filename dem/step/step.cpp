@@ -163,6 +163,13 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
     state.time = t_next;
     {
       StageTimer t(times.fracture);
+      if (state.sheet) {  // the analytic level sheet: its crushing load on the structure, its breaks
+        const auto [impulse, angular] =
+            state.sheet->step(scene, *state.world, state.structure_position, state.time, h, state.fracture);
+        cell.add(impulse, angular);
+        state.structure_motion.ice_impulse += impulse;
+        state.structure_motion.ice_angular_impulse += angular;
+      }
       held_edge_overloads += check_fracture(scene, *state.world, state.time, state.structure_position, h, state.fracture);
       if (floes_split(scene))
         check_splits(scene, *state.world, state.time, state.structure_position, h, state.fracture);

@@ -119,7 +119,9 @@ void add_floes(World& world, const Scene& scene, const std::vector<Floe>& floes)
   for (const Floe& floe : floes) {
     const double y = initial_height(scene, floe);
     if (scene.ice.cover == IceCover::kLevel) {  // the layout's one floe: the sheet
-      add_level_sheet(world, scene, floe, floe_id++, y);
+      // cut by closed forms, the sheet is the State's (initial_state), not a floe
+      if (!analytic_level_ice(scene)) add_level_sheet(world, scene, floe, floe_id, y);
+      ++floe_id;
       continue;
     }
     if (is_breakable(scene, floe.shape)) {

@@ -56,6 +56,13 @@ class LoadCell {
   std::pair<Eigen::Vector3d, Eigen::Vector3d> accumulate(const btDispatcher& dispatcher, const btRigidBody* structure,
                                                          const Eigen::Vector3d& reference);
 
+  /// Add an impulse on the structure that no Bullet contact carries (N s, and its moment about the reference
+  /// point, N m s): the analytic level sheet's crushing load (dem/fracture/analytic_sheet.hpp).
+  void add(const Eigen::Vector3d& impulse, const Eigen::Vector3d& angular_impulse) {
+    impulse_ += impulse;
+    angular_impulse_ += angular_impulse;
+  }
+
   /// The mean force and moment over a step of length dt (s); resets the cell.
   LoadReading finish(double dt);
 

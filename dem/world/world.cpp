@@ -188,6 +188,33 @@ btRigidBody* World::add_static_box(const Eigen::Vector3d& centre, const Eigen::V
   return raw;
 }
 
+int World::add_static_prism(const Polygon& outline, double bottom, double thickness, double friction) {
+  auto shape = std::make_unique<btConvexHullShape>();
+  for (const Eigen::Vector2d& v : outline)
+    for (double y : {bottom, bottom + thickness}) shape->addPoint(btVector3(v.x(), y, v.y()), false);
+  shape->recalcLocalAabb();
+  shape->setMargin(kDefaultCollisionMargin);
+  btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, shape.get());
+  auto body = std::make_unique<btRigidBody>(ci);
+  body->setFriction(friction);
+  body->setRestitution(0);
+  body->setUserIndex(kBoundary);
+  body->setUserIndex2(-2 - fixed_boxes_++);  // in the canonical order of fixed bodies (add_static_box)
+  const int index = static_cast<int>(bodies_.size());
+  body->setUserIndex3(index);
+  enter_world(*body);
+  static_shapes_.push_back(std::move(shape));
+  bodies_.push_back(std::move(body));
+  return index;
+}
+
+void World::remove_static(int index) {
+  btRigidBody& body = *bodies_.at(index);
+  if (!body.isStaticObject()) throw std::invalid_argument(fmt::format("remove_static: body {} is not fixed", index));
+  dynamics_->removeRigidBody(&body);
+  body.forceActivationState(DISABLE_SIMULATION);
+}
+
 int World::add_body(const FloeShape& shape, const btTransform& pose, int floe_id, double friction, int fragment,
                     bool in_world, const std::optional<AddedMass>& added) {
   auto motion = std::make_unique<btDefaultMotionState>(pose);

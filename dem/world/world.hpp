@@ -148,6 +148,14 @@ class World {
   btRigidBody* add_static_box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extents,
                               Material material, double friction);
 
+  /// Add a fixed prism of ice (kBoundary, as the mother ice): the convex `outline` (x, z; m, tank frame) from
+  /// height `bottom` up by `thickness`, with `friction` against ice; a convex part of the analytic level sheet
+  /// (dem/fracture/analytic_sheet.hpp). Returns its index in bodies().
+  int add_static_prism(const Polygon& outline, double bottom, double thickness, double friction);
+
+  /// Take the fixed body bodies()[index] out of the world for good (its index stays taken).
+  void remove_static(int index);
+
   /// Add an ice body of `shape` at `pose`, with `friction` against ice; `fragment` >= 0 for an
   /// element of a breakable floe; out of the world (not simulated) unless `in_world`. At rest,
   /// asleep if sleeping is on. With the water's added mass on (WorldSettings::added_mass) it

@@ -56,17 +56,20 @@ TEST(SheetBreaking, AWedgeBreaksAtTheClosedFormLoad) {
   EXPECT_NEAR(plan.crack_distance, 0.51 * kL, 0.02 * kL);
 }
 
-// The cut at a straight edge: two pieces (the radial crack halves the half-disc within x*), each a quarter of
-// the crack's circle (its polygon of kCrackSegments: 0.3 % under the circle, so 0.5 %), and the sheet left
-// plus the pieces is the sheet before to round-off
+// The cut at a straight edge: two pieces, the right-angled wedges either side of the radial crack cut by their
+// chords at x* along their axes: right triangles of height x*, x*^2 each (to round-off); the sheet left plus the
+// pieces is the sheet before to round-off
 TEST(SheetBreaking, ACutKeepsTheIcesArea) {
   const Polygon sheet = make_ccw({{0, -5}, {10, -5}, {10, 5}, {0, 5}});
   const SheetContact c = load_at({0, 0.3}, {1, 0}, 0.1 * kL);
   const SheetBreakPlan plan = plan_sheet_break(sheet, c, kIce);
   const SheetCut cut = cut_sheet(sheet, c, plan);
   ASSERT_EQ(cut.pieces.size(), 2u);
-  const double quarter = M_PI * plan.crack_distance * plan.crack_distance / 4;
-  for (const Polygon& p : cut.pieces) EXPECT_NEAR(area(p), quarter, 5e-3 * quarter);
+  const double triangle = plan.crack_distance * plan.crack_distance;
+  for (const Polygon& p : cut.pieces) {
+    EXPECT_NEAR(area(p), triangle, 1e-9 * triangle);
+    EXPECT_TRUE(is_convex(p));
+  }
   EXPECT_NEAR(area(cut.sheet) + total_area(cut.pieces), area(sheet), 1e-12 * area(sheet));
   EXPECT_FALSE(contains(cut.sheet, {0.01, 0.3})) << "the loaded ice has gone";
 }
