@@ -76,60 +76,51 @@ SheetBreakPlan plan_sheet_break(const Polygon& sheet, const SheetContact& contac
   return plan;
 }
 
-namespace {
-
-// the parts of `regions` within `clip`
-std::vector<Polygon> clipped(const std::vector<Polygon>& regions, const Polygon& clip) {
-  std::vector<Polygon> out;
-  for (const Polygon& r : regions)
-    for (Polygon& p : intersect(r, clip)) out.push_back(std::move(p));
-  return out;
-}
-
-}  // namespace
-
 SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan) {
   const Eigen::Vector2d& c = contact.centre;
   const Eigen::Vector2d d = contact.direction;
   const Eigen::Vector2d n(-d.y(), d.x());
   const double x = plan.crack_distance;
   const double reach = 4 * x + 1.0;  // half-planes as squares larger than anything they cut here
-  // nothing breaks off farther than 2 x* from the centre (a free edge that runs back towards the chord would
-  // otherwise let a wedge's region run along it)
-  const Polygon bound = disc(c, 2 * x, kCrackSegments);
-  // each wedge: the sheet between its sides (the radial crack, the free edge) short of its chord, the straight
-  // crack across its axis at x*, in the part that holds the load
-  std::vector<Polygon> broken;
-  auto add_wedge = [&](const Eigen::Vector2d& axis, const std::vector<Polygon>& side) {
-    std::vector<Polygon> parts = clipped(clipped(side, half_plane(c + x * axis, -axis, reach)), bound);
-    if (parts.empty()) return;
-    broken.push_back(parts[part_holding(parts, c)]);
-  };
+  // the wedges' axes: theta / 4 either side of the load when the radial crack along it halves the edge, else
+  // the load's
+  std::vector<Eigen::Vector2d> axes;
   if (plan.radial_crack) {
-    // the radial crack along the load halves the edge into wedges of theta / 2, their axes theta / 4 off it
     const double turn = plan.opening_angle / 4;
-    for (double s : {1.0, -1.0})
-      add_wedge(std::cos(turn) * d + s * std::sin(turn) * n, intersect(sheet, half_plane(c, s * n, reach)));
+    axes = {std::cos(turn) * d + std::sin(turn) * n, std::cos(turn) * d - std::sin(turn) * n};
   } else {
-    add_wedge(d, {sheet});
+    axes = {d};
   }
-  if (broken.empty()) throw std::logic_error("cut_sheet: nothing of the sheet lies within the crack");
+  // The region that breaks off: short of every wedge's chord, within 2 x* of the centre (a free edge that runs
+  // back towards a chord would otherwise let the region run along it). One convex region serves both wedges:
+  // on a wedge's side of the radial crack, (p - c) . a_other = (p - c) . a_own - 2 sin(theta / 4) |(p - c) . n|,
+  // so the other's chord holds wherever its own does. Cut as one region, the sheet is cut once: Boost's
+  // difference of two cuts in turn that share the radial crack can answer nothing.
+  Polygon region = disc(c, 2 * x, kCrackSegments);
+  for (const Eigen::Vector2d& a : axes) {
+    const std::vector<Polygon> r = intersect(region, half_plane(c + x * a, -a, reach));
+    if (r.empty()) throw std::logic_error("cut_sheet: the chord misses the crack's circle");
+    region = r.front();  // convex with convex: one part
+  }
+  const std::vector<Polygon> inside = intersect(sheet, region);
+  if (inside.empty()) throw std::logic_error("cut_sheet: nothing of the sheet lies within the crack");
+  // what breaks off is the part that holds the load; another tongue of the sheet that crosses the region stays
+  const Polygon broken = inside[part_holding(inside, c)];
 
   SheetCut out;
-  std::vector<Polygon> left = {sheet};
-  for (const Polygon& b : broken) {
-    std::vector<Polygon> next;
-    for (const Polygon& l : left)
-      for (Polygon& p : subtract(l, b)) next.push_back(std::move(p));
-    left = std::move(next);
-  }
+  const std::vector<Polygon> left = subtract(sheet, inside.size() == 1 ? region : broken);
   if (left.empty()) throw std::logic_error("cut_sheet: the break takes the whole sheet");
   const auto largest = std::max_element(left.begin(), left.end(),
                                         [](const Polygon& a, const Polygon& b) { return area(a) < area(b); });
   out.sheet = *largest;
   for (auto it = left.begin(); it != left.end(); ++it)
     if (it != largest) out.pieces.push_back(*it);
-  for (Polygon& b : broken) out.pieces.push_back(std::move(b));
+  if (!plan.radial_crack) {
+    out.pieces.push_back(broken);
+    return out;
+  }
+  for (const Eigen::Vector2d side : {n, Eigen::Vector2d(-n)})
+    for (Polygon& half : intersect(broken, half_plane(c, side, reach))) out.pieces.push_back(std::move(half));
   return out;
 }
 

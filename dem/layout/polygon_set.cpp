@@ -26,15 +26,26 @@ BgPolygon to_bg(const Polygon& p) {
   return out;
 }
 
-std::vector<Polygon> from_bg(const BgMulti& multi, const char* operation) {
+// Boost's overlay can leave a spike, a vertex the ring reaches and leaves along the same line (a tongue of
+// no area where two cuts share an edge), which later operations on the ring take as invalid and answer
+// with nothing: removed, with vertices repeated to within kSameVertex
+constexpr double kSameVertex = 1e-9;  // m
+
+std::vector<Polygon> from_bg(BgMulti multi, const char* operation) {
   std::vector<Polygon> out;
-  for (const BgPolygon& p : multi) {
+  for (BgPolygon& p : multi) {
+    bg::remove_spikes(p);
+    bg::unique(p);
     if (!p.inners().empty())
       throw std::logic_error(std::string("polygon_set: ") + operation +
                              " would leave a hole in a region (a cut from inside the sheet, not from its edge)");
     Polygon ring;
     const auto& outer = p.outer();
-    for (std::size_t i = 0; i + 1 < outer.size(); ++i) ring.emplace_back(outer[i].x(), outer[i].y());
+    for (std::size_t i = 0; i + 1 < outer.size(); ++i) {
+      const Eigen::Vector2d v(outer[i].x(), outer[i].y());
+      if (ring.empty() || (v - ring.back()).norm() > kSameVertex) ring.push_back(v);
+    }
+    while (ring.size() > 1 && (ring.front() - ring.back()).norm() <= kSameVertex) ring.pop_back();
     if (ring.size() >= 3 && area(ring) > 0) out.push_back(make_ccw(std::move(ring)));
   }
   return out;
