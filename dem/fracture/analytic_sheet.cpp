@@ -153,7 +153,7 @@ void AnalyticSheet::cut(const Scene& scene, World& world, const SheetContact& co
   for (const Polygon& piece : cut.pieces)
     for (const Polygon& outside : intersect(piece, beyond))
       for (const Polygon& part : convex_parts(outside)) {
-        if (area(part) < smallest) continue;
+        if (area(part) < smallest || min_width(part) < thickness_) continue;
         const Eigen::Vector2d c = centroid(part);
         Polygon local;
         for (const Eigen::Vector2d& v : part) local.push_back(v - c);
