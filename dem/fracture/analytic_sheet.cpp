@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
+#include "dem/core/errors.hpp"
 #include "dem/layout/convex_partition.hpp"
 #include "dem/layout/polygon_set.hpp"
 
@@ -18,6 +21,22 @@ Box box_of(const Polygon& p) {
   Box b{p.front(), p.front()};
   for (const Eigen::Vector2d& v : p) b.low = b.low.cwiseMin(v), b.high = b.high.cwiseMax(v);
   return b;
+}
+
+// the record of a break of `contact` by `plan` at `time`, before the cut
+SheetBreakRecord break_record(const SheetContact& contact, const SheetBreakPlan& plan, double time, const World& world) {
+  SheetBreakRecord r;
+  r.time = time;
+  r.radial_crack = plan.radial_crack ? 1 : 0;
+  r.splits_before = static_cast<int32_t>(world.splits().size());
+  r.x = contact.centre.x(), r.z = contact.centre.y();
+  r.axis_x = contact.direction.x(), r.axis_z = contact.direction.y();
+  r.half_width = contact.half_width;
+  r.load = contact.bending_force;
+  r.breaking_load = plan.breaking_load;
+  r.opening_angle = plan.opening_angle;
+  r.crack_distance = plan.crack_distance;
+  return r;
 }
 
 }  // namespace
@@ -43,7 +62,8 @@ AnalyticSheet::AnalyticSheet(const Scene& scene, World& world, const Polygon& ou
       bottom_(-scene.ice.draft),
       thickness_(scene.ice.thickness),
       friction_(scene.friction.ice_ice),
-      next_floe_id_(first_floe_id) {
+      next_floe_id_(first_floe_id),
+      sleeping_(scene.activation.sleeping) {
   const Box b = box_of(outline_);
   for (double x = b.low.x(); x < b.high.x() - 1e-9; x += kTileSize)
     for (double z = b.low.y(); z < b.high.y() - 1e-9; z += kTileSize) {
@@ -61,6 +81,13 @@ std::vector<Polygon> AnalyticSheet::prisms() const {
   return out;
 }
 
+std::vector<const btCollisionObject*> AnalyticSheet::prism_bodies(const World& world) const {
+  std::vector<const btCollisionObject*> out;
+  for (const Tile& t : tiles_) out.push_back(world.bodies()[t.body].get());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 void AnalyticSheet::add_tile(World& world, const Polygon& outline) {
   tiles_.push_back(Tile{outline, world.add_static_prism(outline, bottom_, thickness_, friction_)});
 }
@@ -74,26 +101,46 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> AnalyticSheet::step(const Scene& sce
   const SheetIce ice = sheet_ice(scene);
   const double mid = bottom_ + thickness_ / 2;  // the loads act at the ice's mid-depth
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero(), angular = Eigen::Vector3d::Zero();
-  // a break changes the outline, and with it the zones: find them again until none breaks (a cut takes the
-  // zone it breaks, so each pass makes progress)
-  for (bool broke = true; broke;) {
+  // the floes' pushes on the sheet over the step just solved
+  std::vector<SheetLoadPoint> pushes = floe_loads_on_prisms(*world.dynamics().getDispatcher(), prism_bodies(world), h);
+  // a break changes the outline, and with it the zones and patches: find them again until none breaks (a cut
+  // takes the zone it breaks, and a patch that broke is spent, so each pass makes progress); the last pass's
+  // zones are those that bear load
+  std::vector<SheetContact> zones;
+  for (bool broke = true, first = true; broke; first = false) {
     broke = false;
-    for (const SheetContact& c : sheet_contacts(outline_, hull, law, scene.friction.ice_structure)) {
+    zones = sheet_contacts(outline_, hull, law, scene.friction.ice_structure);
+    const FloePatches floes = floe_patches(outline_, pushes, thickness_);
+    if (first) {
+      for (const SheetContact& c : floes.patches) floe_totals_.edge += h * c.bending_force;
+      floe_totals_.interior += h * floes.interior_vertical;
+    }
+    // the hull's zones first, then the floes' patches
+    const std::size_t hull_zones = zones.size();
+    for (std::size_t k = 0; k < hull_zones + floes.patches.size() && !broke; ++k) {
+      const bool by_floe = k >= hull_zones;
+      const SheetContact& c = by_floe ? floes.patches[k - hull_zones] : zones[k];
       const SheetBreakPlan plan = plan_sheet_break(outline_, c, ice);
       if (c.bending_force < plan.breaking_load) continue;
+      SheetBreakRecord r = break_record(c, plan, time, world);
+      r.by_floe = by_floe ? 1 : 0;
+      if (!by_floe) r.hull_x = hull.axis.x(), r.hull_z = hull.axis.y(), r.hull_radius = hull.larger();
+      if (!cut(world, r)) continue;
       FractureEvent e{time, -1, -1, static_cast<int>(FailureMode::kBending), c.bending_force / plan.breaking_load,
                       c.centre.x(), c.centre.y()};
-      e.touching_structure = 1;
-      e.structure_force = c.force_on_ice(hull).norm();
+      e.touching_structure = by_floe ? 0 : 1;
+      e.structure_force = by_floe ? 0.0 : c.force_on_ice(hull).norm();
       fracture.add(e);
-      cut(scene, world, c, plan, hull, time);
-      breaks_.back().load = c.bending_force;
+      if (by_floe) {  // its push is spent: it left with the piece
+        const int spent = floes.floes[k - hull_zones];
+        pushes.erase(std::remove_if(pushes.begin(), pushes.end(), [&](const SheetLoadPoint& p) { return p.floe == spent; }),
+                     pushes.end());
+      }
       broke = true;
-      break;
     }
   }
   // what the unbroken zones bear this step: the crushing load, on the structure
-  for (const SheetContact& c : sheet_contacts(outline_, hull, law, scene.friction.ice_structure)) {
+  for (const SheetContact& c : zones) {
     const Eigen::Vector3d on_hull = -c.force_on_ice(hull);
     const Eigen::Vector3d at(c.centre.x(), mid, c.centre.y());
     impulse += h * on_hull;
@@ -102,21 +149,35 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> AnalyticSheet::step(const Scene& sce
   return {impulse, angular};
 }
 
-void AnalyticSheet::cut(const Scene& scene, World& world, const SheetContact& contact, const SheetBreakPlan& plan,
-                        const HullInIce& hull, double time) {
-  const double before = area(outline_);
-  const SheetCut cut = cut_sheet(outline_, contact, plan);
-  outline_ = cut.sheet;
-  SheetBreakRecord record;
-  record.time = time;
-  record.centre = contact.centre;
-  record.plan = plan;
-  record.broken_area = before - area(outline_);
+void AnalyticSheet::replay(World& world, const SheetBreakRecord& record) {
+  SheetBreakRecord again = record;
+  again.broken_area = again.crushed_area = 0;
+  again.pieces = 0;
+  if (!cut(world, again) || breaks_.back().pieces != record.pieces)
+    throw InputError("the sheet's break at t = " + std::to_string(record.time) + " s did not make its " +
+                     std::to_string(record.pieces) + " pieces again: the checkpoint is not this scene's or this build's");
+}
 
-  // the fixed prisms the broken ice crosses (all of it lies within the crack's circle, but for parts of the
-  // sheet cut off whole): replaced by their convex parts that are still sheet
-  Box reach = box_of(disc(contact.centre, plan.crack_distance, kCrackSegments));
-  for (const Polygon& p : cut.pieces) {
+bool AnalyticSheet::cut(World& world, SheetBreakRecord record) {
+  SheetContact contact;
+  contact.centre = Eigen::Vector2d(record.x, record.z);
+  contact.direction = Eigen::Vector2d(record.axis_x, record.axis_z);
+  contact.half_width = record.half_width;
+  SheetBreakPlan plan;
+  plan.opening_angle = record.opening_angle;
+  plan.radial_crack = record.radial_crack != 0;
+  plan.breaking_load = record.breaking_load;
+  plan.crack_distance = record.crack_distance;
+  const Polygon before = outline_;
+  const SheetCut cut = cut_sheet(outline_, contact, plan, thickness_);
+  if (cut.pieces.empty() && cut.slivers == 0) return false;
+  outline_ = cut.sheet;
+  record.broken_area = area(before) - area(outline_);
+
+  // the fixed prisms the ice that left crosses (the pieces and the slivers): replaced by their convex parts that
+  // are still sheet
+  Box reach = box_of(Polygon{contact.centre});
+  for (const Polygon& p : subtract(before, outline_)) {
     const Box b = box_of(p);
     reach.low = reach.low.cwiseMin(b.low), reach.high = reach.high.cwiseMax(b.high);
   }
@@ -128,8 +189,7 @@ void AnalyticSheet::cut(const Scene& scene, World& world, const SheetContact& co
       continue;
     }
     // the tile's part that is still sheet
-    std::vector<Polygon> left;
-    for (const Polygon& p : intersect(t.outline, outline_)) left.push_back(p);
+    const std::vector<Polygon> left = intersect(t.outline, outline_);
     double left_area = 0;
     for (const Polygon& p : left) left_area += area(p);
     if (std::abs(left_area - area(t.outline)) <= 1e-9 * area(t.outline)) {
@@ -143,34 +203,44 @@ void AnalyticSheet::cut(const Scene& scene, World& world, const SheetContact& co
   for (const Polygon& p : replaced)
     for (const Polygon& convex : convex_parts(p)) add_tile(world, convex);
 
-  // the pieces: less the crushed ice, all that lies short of the line across the load that touches the hull's
-  // larger section (straight, where the hull's circle would leave a concave face of many corners, each a
-  // sliver of a convex part), as convex rigid floes at rest
-  const Eigen::Vector2d face = hull.axis + hull.larger() * contact.direction;
-  const Polygon beyond = half_plane(face, contact.direction, 2 * plan.crack_distance + 2 * hull.larger() + 1.0);
+  // the pieces: under a hull's zone less the crushed ice, all that lies short of the line across the load that
+  // touches the hull's larger section (straight, where the hull's circle would leave a concave face of many
+  // corners, each a sliver of a convex part), as convex rigid floes at rest
+  std::vector<Polygon> kept_pieces;
+  if (!record.by_floe) {
+    const Eigen::Vector2d axis(record.hull_x, record.hull_z);
+    const Polygon beyond = half_plane(axis + record.hull_radius * contact.direction, contact.direction,
+                                      2 * plan.crack_distance + 2 * record.hull_radius + 1.0);
+    for (const Polygon& piece : cut.pieces)
+      for (Polygon& outside : intersect(piece, beyond)) kept_pieces.push_back(std::move(outside));
+  } else {
+    kept_pieces = cut.pieces;
+  }
   const double smallest = kSmallestPiece * thickness_ * thickness_;
   const double y = bottom_ + thickness_ / 2;
-  for (const Polygon& piece : cut.pieces)
-    for (const Polygon& outside : intersect(piece, beyond))
-      for (const Polygon& part : convex_parts(outside)) {
-        if (area(part) < smallest || min_width(part) < thickness_) continue;
-        const Eigen::Vector2d c = centroid(part);
-        Polygon local;
-        for (const Eigen::Vector2d& v : part) local.push_back(v - c);
-        const FloeShape& shape = world.shape(local);
-        btTransform pose;
-        pose.setIdentity();
-        pose.setOrigin(btVector3(c.x(), y, c.y()));
-        pose.setRotation(btQuaternion(btVector3(0, 1, 0), shape.principal_yaw));
-        const int index = world.add_body(shape, pose, next_floe_id_++, friction_);
-        btRigidBody& b = *world.floes()[index].body;
-        b.forceActivationState(scene.activation.sleeping ? ACTIVE_TAG : DISABLE_DEACTIVATION);
-        b.setDeactivationTime(0);
-        ++record.pieces;
-        record.crushed_area -= area(part);
-      }
-  record.crushed_area += record.broken_area;
+  double floes = 0;  // m^2, the pieces' floes; the rest of what left is crushed
+  for (const Polygon& piece : kept_pieces)
+    for (const Polygon& part : convex_parts(piece)) {
+      if (area(part) < smallest || min_width(part) < thickness_) continue;
+      const Eigen::Vector2d c = centroid(part);
+      Polygon local;
+      for (const Eigen::Vector2d& v : part) local.push_back(v - c);
+      const FloeShape& shape = world.shape(local);
+      btTransform pose;
+      pose.setIdentity();
+      pose.setOrigin(btVector3(c.x(), y, c.y()));
+      pose.setRotation(btQuaternion(btVector3(0, 1, 0), shape.principal_yaw));
+      const int index = world.add_body(shape, pose, next_floe_id_++, friction_);
+      btRigidBody& b = *world.floes()[index].body;
+      b.forceActivationState(sleeping_ ? ACTIVE_TAG : DISABLE_DEACTIVATION);
+      b.setDeactivationTime(0);
+      ++record.pieces;
+      floes += area(part);
+    }
+  record.crushed_area = record.broken_area - floes;
   breaks_.push_back(record);
+  outlines_after_.push_back(outline_);
+  return true;
 }
 
 }  // namespace icedem

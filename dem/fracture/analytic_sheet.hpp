@@ -7,21 +7,26 @@
 // cut with it. Each Bullet step, after the load cell has read the contacts:
 //   1. the hull's crushed zones at the sheet's edge and their loads (sheet_contact.hpp); the crushing force
 //      is an impulse on the structure that no Bullet contact carries, added to the load cell;
-//   2. a zone whose load normal to the sheet reaches its breaking load (sheet_breaking.hpp) cuts the sheet:
-//      the broken ice, less the crushed ice (all short of the line across the load that touches the hull's
+//   2. the floes' loads on the sheet's edge over the step, each floe's a patch (sheet_floe_load.hpp): the rubble
+//      the hull pushes against the sheet bends it too;
+//   3. a zone or patch whose load normal to the sheet reaches its breaking load (sheet_breaking.hpp) cuts the sheet:
+//      the broken ice, less the crushed ice under a zone (all short of the line across the load that touches the hull's
 //      larger section: the hull's overlap and the slivers beside it), leaves as rigid floes at
 //      rest at the sheet's draft, a non-convex piece as its convex parts (convex_partition.hpp), a piece
 //      smaller than kSmallestPiece thickness squared or narrower than the thickness counted as crushed; the prisms the cut crossed are
 //      replaced by their convex parts outside it. The pieces can split again as rigid floes do
-//      (fracture_split.hpp). The zones are found again after a cut, until none breaks.
+//      (fracture_split.hpp). The zones and patches are found again after a cut, until none breaks; a patch
+//      that broke the sheet is spent (its floe's push left with the piece).
 #pragma once
 
 #include <Eigen/Core>
 #include <vector>
 
 #include "dem/fracture/fracture_state.hpp"
+#include "dem/fracture/sheet_break_record.hpp"
 #include "dem/fracture/sheet_breaking.hpp"
 #include "dem/fracture/sheet_contact.hpp"
+#include "dem/fracture/sheet_floe_load.hpp"
 #include "dem/input/scene.hpp"
 #include "dem/layout/polygon.hpp"
 #include "dem/world/world.hpp"
@@ -36,17 +41,6 @@ constexpr double kTileSize = 1.0;
 /// cone and the held sheet, blew up at 54 m/s 52 s into the tow).
 constexpr double kSmallestPiece = 1.0;
 
-/// One break of the sheet, in the order they happened.
-struct SheetBreakRecord {
-  double time = 0;                                   // s
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // m, the zone's centre (x, z)
-  double load = 0;                                   // N, the load normal to the sheet at the break
-  SheetBreakPlan plan;
-  double broken_area = 0;   // m^2, ice that left the sheet
-  double crushed_area = 0;  // m^2, of it, crushed (in the hull's section, or in pieces too small)
-  int pieces = 0;           // floes made
-};
-
 class AnalyticSheet {
  public:
   /// The sheet of `outline` (m, tank frame (x, z)) as fixed prisms in `world`; its pieces' floe ids start at
@@ -59,27 +53,49 @@ class AnalyticSheet {
   std::pair<Eigen::Vector3d, Eigen::Vector3d> step(const Scene& scene, World& world, const Eigen::Vector3d& structure,
                                                   double time, double h, FractureState& fracture);
 
+  /// Cut the sheet again as `record` says it was cut (its pieces made as floes at rest): a checkpoint's replay of
+  /// the run's breaks, in order, into the world built from the scene. Throws InputError if the cut does not
+  /// make the pieces the record counts (another scene, or another build).
+  void replay(World& world, const SheetBreakRecord& record);
+
   const Polygon& outline() const { return outline_; }
   /// The fixed prisms' outlines (m, tank frame): the sheet's convex parts.
   std::vector<Polygon> prisms() const;
   const std::vector<SheetBreakRecord>& breaks() const { return breaks_; }
+  /// The sheet's outline after breaks()[i].
+  const Polygon& outline_after(std::size_t i) const { return outlines_after_.at(i); }
+
+  /// The vertical impulses the floes gave the sheet so far, N s: at its edge (patches) and farther in (left out).
+  struct FloeLoadTotals {
+    double edge = 0;
+    double interior = 0;
+  };
+  const FloeLoadTotals& floe_load_totals() const { return floe_totals_; }
+  void set_floe_load_totals(const FloeLoadTotals& totals) { floe_totals_ = totals; }
 
  private:
   struct Tile {
     Polygon outline;
     int body = -1;  // in World::bodies()
   };
-  void cut(const Scene& scene, World& world, const SheetContact& contact, const SheetBreakPlan& plan,
-           const HullInIce& hull, double time);
+  // cut the sheet as `record` says (its load, plan and, for a hull's zone, the hull, whose crushed ice does not
+  // become floes), make the pieces floes and keep the record with what broke off; false where no ice lay within
+  // the crack (nothing done)
+  bool cut(World& world, SheetBreakRecord record);
   void add_tile(World& world, const Polygon& outline);
+  // the prisms' bodies, sorted (what floe_loads_on_prisms reads)
+  std::vector<const btCollisionObject*> prism_bodies(const World& world) const;
 
   Polygon outline_;
   std::vector<Tile> tiles_;
   std::vector<SheetBreakRecord> breaks_;
+  std::vector<Polygon> outlines_after_;  // per break, for the output
+  FloeLoadTotals floe_totals_;
   double bottom_ = 0;     // m, the ice's bottom face
   double thickness_ = 0;  // m
   double friction_ = 0;   // ice against ice
   int next_floe_id_ = 0;
+  bool sleeping_ = false;  // activation.sleeping: the pieces are made awake either way
 };
 
 /// The hull where the sheet meets it, for the structure's reference point at `structure`.

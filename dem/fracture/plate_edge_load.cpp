@@ -1,5 +1,7 @@
 #include "dem/fracture/plate_edge_load.hpp"
 
+#include "dem/fracture/floating_plate.hpp"
+
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -98,8 +100,7 @@ PlateEdgeResponse plate_edge_response(double patch, double poisson) {
 PlateEdgeBreak plate_edge_breaking_load(double half_width, double thickness, double elastic_modulus,
                                         double poisson_ratio, double bending_strength, double water_density,
                                         double gravity) {
-  const double d = elastic_modulus * std::pow(thickness, 3) / (12.0 * (1.0 - poisson_ratio * poisson_ratio));
-  const double l = std::pow(d / (water_density * gravity), 0.25);
+  const double l = characteristic_length(thickness, elastic_modulus, poisson_ratio, water_density, gravity);
   const PlateEdgeResponse r = plate_edge_response(half_width / l, poisson_ratio);
   const double capacity = bending_strength * thickness * thickness / 6.0;  // N m per m
   return PlateEdgeBreak{capacity / r.radial_moment, capacity / r.circumferential_moment,

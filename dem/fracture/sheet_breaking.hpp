@@ -17,6 +17,10 @@
 // arc would be locked against the sheet as it turns down (the hinge of a piece broken by bending is the crack's
 // far face). What breaks off is each wedge's ice short of its chord (within 2 x* of the centre, in the part that
 // holds it); what is left of the sheet is its largest part, and any other part it falls into leaves with the pieces.
+// What is left loses its parts narrower than the ice is thick (polygon_set.hpp's opening): a tongue of the sheet
+// left between two cuts that nearly meet, a tenth of a degree wide, is crushed ice, not sheet (one such, its tip
+// the next load's centre, held no ice within the next crack, and stopped the paper's tow at 43 s); a part joined
+// to the sheet by a neck that narrow leaves with the pieces.
 #pragma once
 
 #include <Eigen/Core>
@@ -57,9 +61,11 @@ SheetBreakPlan plan_sheet_break(const Polygon& sheet, const SheetContact& contac
 struct SheetCut {
   Polygon sheet;                // m, what is left: the largest part
   std::vector<Polygon> pieces;  // m, each one piece of ice (convex or not), ccw
+  double slivers = 0;           // m^2, what was left narrower than the thickness: crushed
 };
 
-/// Cut the sheet at `contact` by `plan`.
-SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan);
+/// Cut the sheet of ice `thickness` (m) at `contact` by `plan`. No pieces (the sheet as it was) where the load is
+/// at a point of the outline that holds no ice within the crack.
+SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan, double thickness);
 
 }  // namespace icedem

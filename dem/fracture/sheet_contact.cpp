@@ -20,7 +20,7 @@ Polygon smaller_section(const HullInIce& hull) { return disc(hull.axis, hull.sma
 std::vector<SheetContact> sheet_contacts(const Polygon& sheet, const HullInIce& hull, const CrushingLaw& law,
                                          double friction) {
   const double flare = hull.larger() - hull.smaller();
-  if (!(flare >= HullInIce::kSteepest * hull.thickness))
+  if (!(flare >= kSteepestSheetFlare * hull.thickness))
     throw std::invalid_argument("sheet_contacts: the hull's radius changes by " + std::to_string(flare) +
                                 " m across the ice's thickness, too steep a wall to bend the ice");
   const double slant = std::hypot(flare, hull.thickness);

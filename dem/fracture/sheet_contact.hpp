@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "dem/contact/crushing.hpp"
+#include "dem/input/scene.hpp"
 #include "dem/layout/polygon.hpp"
 
 namespace icedem {
@@ -31,9 +32,6 @@ struct HullInIce {
   double radius_top = 0;                           // m, at the ice's top face
   double radius_bottom = 0;                        // m, at its bottom face
   double thickness = 0;                            // m, the ice's
-  /// Sections differ by less than this fraction of the thickness: a wall too steep to be a cone, which
-  /// crushes the ice and does not bend it (the analytic level sheet asks for a sloping hull).
-  static constexpr double kSteepest = 0.05;
   double larger() const { return radius_top > radius_bottom ? radius_top : radius_bottom; }
   double smaller() const { return radius_top > radius_bottom ? radius_bottom : radius_top; }
   /// +1 where the hull pushes the ice down (wider at the top), -1 where it lifts it.
@@ -65,7 +63,7 @@ Polygon smaller_section(const HullInIce& hull);
 
 /// The contact zones of the hull with the sheet `sheet` (m, ccw), crushing by `law`, the ice sliding on the
 /// hull with friction coefficient `friction`. None where they do not meet. Throws std::invalid_argument for
-/// a hull steeper in the ice than HullInIce::kSteepest allows.
+/// a hull steeper in the ice than kSteepestSheetFlare allows (dem/input/scene.hpp).
 std::vector<SheetContact> sheet_contacts(const Polygon& sheet, const HullInIce& hull, const CrushingLaw& law,
                                          double friction);
 

@@ -1,5 +1,7 @@
 #include "dem/fracture/wedge_bending.hpp"
 
+#include "dem/fracture/floating_plate.hpp"
+
 #include <array>
 #include <cmath>
 #include <functional>
@@ -120,15 +122,17 @@ WedgeBending constant_width_bending(int elements) {
   return WedgeBending{r.stress_factor / std::sqrt(2.0), r.crack_distance / std::sqrt(2.0)};
 }
 
+double wedge_load(double opening_angle, const WedgeBending& w, double thickness, double bending_strength) {
+  return bending_strength * thickness * thickness * std::tan(opening_angle / 2) / (3 * w.stress_factor);
+}
+
 WedgeBreak wedge_breaking_load(double opening_angle, double patch_length, double thickness, double elastic_modulus,
                                double poisson_ratio, double bending_strength, double water_density, double gravity) {
   if (!(opening_angle > 0) || !(opening_angle < M_PI))
     throw std::invalid_argument(fmt::format("a wedge's opening angle must be in (0, pi), not {}", opening_angle));
-  const double d = elastic_modulus * std::pow(thickness, 3) / (12.0 * (1.0 - poisson_ratio * poisson_ratio));
-  const double l = std::pow(d / (water_density * gravity), 0.25);
+  const double l = characteristic_length(thickness, elastic_modulus, poisson_ratio, water_density, gravity);
   const WedgeBending w = wedge_bending(patch_length / l);
-  return WedgeBreak{bending_strength * thickness * thickness * std::tan(opening_angle / 2) / (3 * w.stress_factor),
-                    w.crack_distance * l};
+  return WedgeBreak{wedge_load(opening_angle, w, thickness, bending_strength), w.crack_distance * l};
 }
 
 }  // namespace icedem

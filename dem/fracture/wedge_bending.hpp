@@ -37,6 +37,10 @@ WedgeBending wedge_bending(double patch, int elements = 400);
 /// 1 / beta (Hetenyi: 0.3224) and its distance from the end in units of 1 / beta (pi / 4): the solver's check.
 WedgeBending constant_width_bending(int elements = 400);
 
+/// P_f = sigma_b h^2 tan(theta/2) / (3 S), N: the load that breaks a wedge of opening angle `opening_angle` (rad)
+/// whose S is `w`'s, of ice of thickness h (m) and bending strength sigma_b (Pa).
+double wedge_load(double opening_angle, const WedgeBending& w, double thickness, double bending_strength);
+
 /// Where and at what load a wedge breaks.
 struct WedgeBreak {
   double load;            // N, spread over the patch

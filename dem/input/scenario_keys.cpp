@@ -282,7 +282,7 @@ std::vector<KeySpec> make_keys() {
                      "fracture.lattice_radius of the structure axis and is held where it lies beyond, as the sheet "
                      "far from the structure is, dem/fracture/level_ice.hpp; with fracture.mode = \"analytic\" one "
                      "held sheet from which the structure's load breaks wedges at their closed-form breaking load, "
-                     "the pieces rigid floes, dem/fracture/analytic_sheet.hpp; no checkpoints yet)"));
+                     "the pieces rigid floes, dem/fracture/analytic_sheet.hpp)"));
   k.push_back(positive("ice.floe_size", "m", 0.3, 100.0, "side of the square floes (paper: 0.3 / 0.6 m)"));
   k.push_back(real("ice.thickness", "m", 0.033, 0.001, 10.0, "ice thickness (Table 3: 0.033 m)"));
   k.push_back(real("ice.concentration", "-", 0.75, 0.0, 0.9,

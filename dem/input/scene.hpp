@@ -280,6 +280,10 @@ inline int joint_sweeps(const Scene& s) {
   return s.fracture.joint_iterations > s.solver.iterations ? s.fracture.joint_iterations : s.solver.iterations;
 }
 
+/// Level ice cut by closed forms needs a sloping hull: its radius must change across the ice's thickness by at
+/// least this fraction of the thickness, or it is a wall that crushes the ice and does not bend it.
+constexpr double kSteepestSheetFlare = 0.05;
+
 /// Level ice cut by closed forms (dem/fracture/analytic_sheet.hpp), not a lattice.
 inline bool analytic_level_ice(const Scene& s) {
   return s.ice.cover == IceCover::kLevel && s.fracture.mode == FractureMode::kAnalytic;

@@ -182,7 +182,7 @@ void check_level_ice(const Scenario& sc, const Scene& s) {
                                        "crushing load is for a hull that advances into it)");
     const double top = s.ice.thickness - s.ice.draft, bottom = -s.ice.draft;
     const double flare = std::abs(profile_radius(s.structure.profile, top) - profile_radius(s.structure.profile, bottom));
-    if (flare < 0.05 * s.ice.thickness)
+    if (flare < kSteepestSheetFlare * s.ice.thickness)
       fail_key(sc, "structure.profile",
                fmt::format("a sloping hull where the ice meets it with {}and fracture.mode = \"analytic\": its radius "
                            "changes by {:.4f} m across the ice's thickness, a wall that crushes the ice and does not bend it",

@@ -3,6 +3,8 @@
 
 #include <iterator>
 #include <list>
+#include <stdexcept>
+#include <string>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Partition_traits_2.h>
@@ -45,6 +47,9 @@ std::vector<Polygon> convex_parts(const Polygon& outline) {
   Polygon ordered = make_ccw(simple);
   CgalPolygon polygon;
   for (auto it = ordered.rbegin(); it != ordered.rend(); ++it) polygon.push_back(Traits::Point_2(it->x(), it->y()));
+  if (!polygon.is_simple())  // CGAL's partition asserts it
+    throw std::invalid_argument("convex_parts: the outline of " + std::to_string(polygon.size()) +
+                                " vertices is not simple");
   std::list<CgalPolygon> parts;
   if (polygon.size() <= kOptimalPartitionVertices)
     CGAL::optimal_convex_partition_2(polygon.vertices_begin(), polygon.vertices_end(), std::back_inserter(parts));

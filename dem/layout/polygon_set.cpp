@@ -31,11 +31,15 @@ BgPolygon to_bg(const Polygon& p) {
 // with nothing: removed, with vertices repeated to within kSameVertex
 constexpr double kSameVertex = 1e-9;  // m
 
+// the opening's round corners (points per full turn) and its mitres' limit, in widths: a corner of half-angle
+// beta comes back from (width / 2) / sin(beta) away, half-angles down to a thousandth of a radian
+constexpr int kOpeningArcPoints = 16;
+constexpr double kOpeningMiterLimit = 1000.0;
+
 std::vector<Polygon> from_bg(BgMulti multi, const char* operation) {
   std::vector<Polygon> out;
   for (BgPolygon& p : multi) {
     bg::remove_spikes(p);
-    bg::unique(p);
     if (!p.inners().empty())
       throw std::logic_error(std::string("polygon_set: ") + operation +
                              " would leave a hole in a region (a cut from inside the sheet, not from its edge)");
@@ -63,6 +67,33 @@ std::vector<Polygon> subtract(const Polygon& a, const Polygon& b) {
   BgMulti out;
   bg::difference(to_bg(a), to_bg(b), out);
   return from_bg(out, "subtract");
+}
+
+std::vector<Polygon> opening(const Polygon& region, double width) {
+  // Shrunk with round corners at its notches (the disc's erosion: a mitre there would push a spike deep into the
+  // region at a notch of a tenth of a degree), grown back with mitres at its corners, which put every corner the
+  // shrinking kept back where it was and no farther (a round growth would round them: many vertices, each a
+  // corner of the convex parts). What went is what a disc of diameter `width` cannot reach.
+  const bg::strategy::buffer::join_round round(kOpeningArcPoints);
+  const bg::strategy::buffer::join_miter mitre(kOpeningMiterLimit);
+  const bg::strategy::buffer::end_flat end;  // (lines only)
+  const bg::strategy::buffer::point_square point;
+  const bg::strategy::buffer::side_straight side;
+  BgMulti in, shrunk, grown;
+  in.push_back(to_bg(region));
+  bg::buffer(in, shrunk, bg::strategy::buffer::distance_symmetric<double>(-width / 2), side, round, end, point);
+  if (shrunk.empty()) return {};
+  bg::buffer(shrunk, grown, bg::strategy::buffer::distance_symmetric<double>(width / 2), side, mitre, end, point);
+  // Boost's buffer of a region with edges a round-off apart can answer nothing, more than the region, or parts
+  // grown back into touch around a notch (a hole): then the region stands as it was (nothing is taken away rather
+  // than ice made up)
+  for (const BgPolygon& p : grown)
+    if (!p.inners().empty()) return {region};
+  std::vector<Polygon> out = from_bg(grown, "opening");
+  double total = 0;
+  for (const Polygon& p : out) total += area(p);
+  if (out.empty() || total > area(region) * (1 + 1e-9)) return {region};
+  return out;
 }
 
 Polygon disc(const Eigen::Vector2d& centre, double radius, int segments) {

@@ -167,6 +167,11 @@ void write_group(H5::H5File& file, const Checkpoint& c) {
   visit_fields(c.values, FieldWriter{g.createGroup("state")});
   visit_fields(c.history, FieldWriter{g.createGroup("history")});
   write_world(g.createGroup("world"), c.world);
+  if (c.sheet) {
+    const H5::Group sheet = g.createGroup("sheet");
+    write_records(sheet, "breaks", c.sheet->breaks);
+    write_records(sheet, "floe_loads", &c.sheet->floe_loads, 1);
+  }
 }
 
 // what a part of the file holds, for a refusal to say what it was that changed
@@ -179,6 +184,7 @@ std::string described_part(const std::string& part) {
       {"/checkpoint/state", "the run's state"},
       {"/checkpoint/history", "what the statistics are made from"},
       {"/checkpoint/world", "the bodies, joints and contacts"},
+      {"/checkpoint/sheet", "the level sheet's breaks"},
   };
   const auto it = kParts.find(part.substr(0, part.find(' ')));
   return it == kParts.end() ? "" : " (" + it->second + ")";
@@ -253,6 +259,15 @@ Checkpoint read_group(const H5::H5File& file, const std::string& path) {
   visit_fields(c.values, FieldReader{g.openGroup("state"), path});
   visit_fields(c.history, FieldReader{g.openGroup("history"), path});
   c.world = read_world(g.openGroup("world"), path);
+  if (g.nameExists("sheet")) {
+    const H5::Group sheet = g.openGroup("sheet");
+    c.sheet = SheetState{read_records<SheetBreakRecord>(sheet, "breaks", path), {}};
+    const auto totals = read_records<AnalyticSheet::FloeLoadTotals>(sheet, "floe_loads", path);
+    if (totals.size() != 1)
+      throw InputError(fmt::format("{}: the checkpoint's sheet has {} load totals, not one: the file is damaged", path,
+                                   totals.size()));
+    c.sheet->floe_loads = totals.front();
+  }
   return c;
 }
 
@@ -269,7 +284,9 @@ void sync_file(const std::string& path) {
 std::string checkpoint_path(const std::string& output) { return output + ".checkpoint"; }
 
 Checkpoint take_checkpoint(const State& state, const RunHistory& history) {
-  return Checkpoint{ICEDEM_VERSION, state, capture_world(*state.world), history};
+  Checkpoint c{ICEDEM_VERSION, state, capture_world(*state.world), history, std::nullopt};
+  if (state.sheet) c.sheet = SheetState{state.sheet->breaks(), state.sheet->floe_load_totals()};
+  return c;
 }
 
 void write_checkpoint(const std::string& output, const Checkpoint& checkpoint) {
@@ -385,6 +402,18 @@ void remove_checkpoint_group(const std::string& path) {
 }
 
 void restore_state(const Checkpoint& c, State& state) {
+  if (c.sheet.has_value() != (state.sheet != nullptr))
+    throw InputError(fmt::format("the checkpoint {} an analytic level sheet, the scene {}: it is not this scene's",
+                                 c.sheet ? "has" : "has no", state.sheet ? "has one" : "has none"));
+  if (c.sheet) {  // the sheet's breaks and the floes' splits, in the order they happened
+    std::size_t split = 0;
+    for (const SheetBreakRecord& b : c.sheet->breaks) {
+      for (; split < static_cast<std::size_t>(b.splits_before) && split < c.world.splits.size(); ++split)
+        state.world->split_floe(c.world.splits[split]);
+      state.sheet->replay(*state.world, b);
+    }
+    state.sheet->set_floe_load_totals(c.sheet->floe_loads);
+  }
   restore_world(*state.world, c.world);
   static_cast<StateValues&>(state) = c.values;
   state.flow->set_structure(state.structure_position, state.structure_velocity);

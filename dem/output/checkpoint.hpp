@@ -60,12 +60,20 @@ std::enable_if_t<std::is_same_v<std::remove_const_t<History>, RunHistory>> visit
   visit("earlier_cpu_s", h.earlier_cpu_s);
 }
 
+/// The analytic level sheet's state (dem/fracture/analytic_sheet.hpp): its breaks, which a rebuilt sheet makes
+/// again in order among the floes' splits, and the floes' loads on it so far.
+struct SheetState {
+  std::vector<SheetBreakRecord> breaks;
+  AnalyticSheet::FloeLoadTotals floe_loads;
+};
+
 /// A run's state between two steps.
 struct Checkpoint {
   std::string version;  // icedem's version that wrote it (ICEDEM_VERSION)
   StateValues values;   // the State's values, whole (dem/step/state.hpp)
   WorldState world;     // the world's bodies, lattices and contact points
   RunHistory history;   // the run loop's
+  std::optional<SheetState> sheet;  // the analytic level sheet's, if the run has one
 };
 
 /// The checkpoint file of the output file `output`.
@@ -100,7 +108,8 @@ struct OutputMeta {
 OutputMeta read_output_meta(const std::string& path);
 
 /// Puts the checkpoint's values into `state`, a state the scene's initial_state() just built,
-/// and rebuilds its world from the checkpoint's (restore_world).
+/// and rebuilds its world from the checkpoint's (restore_world), the analytic sheet's breaks made
+/// again among the floes' splits in the order they happened.
 void restore_state(const Checkpoint& checkpoint, State& state);
 
 }  // namespace icedem

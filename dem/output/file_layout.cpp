@@ -28,25 +28,31 @@ constexpr std::size_t kSnapshotChunkBytes = std::size_t(256) << 10;
 const H5::PredType& file_type(Element e) { return e == Element::i4 ? H5::PredType::STD_I32LE : H5::PredType::IEEE_F64LE; }
 const H5::PredType& memory_type(Element e) { return e == Element::i4 ? H5::PredType::NATIVE_INT : H5::PredType::NATIVE_DOUBLE; }
 
-// fracture events: the in-memory layout is FractureEvent itself, the file layout is packed;
+// fracture events and the sheet's breaks: the in-memory layout is the record itself, the file layout is packed;
 // both are built from the schema's one list of fields
-H5::CompType fracture_file_type() {
+H5::CompType packed_file_type(const std::vector<EventField>& fields) {
   std::size_t size = 0;
-  for (const EventField& f : event_fields()) size += file_type(f.element).getSize();
+  for (const EventField& f : fields) size += file_type(f.element).getSize();
   H5::CompType type(size);
   std::size_t offset = 0;
-  for (const EventField& f : event_fields()) {
+  for (const EventField& f : fields) {
     type.insertMember(f.name, offset, file_type(f.element));
     offset += file_type(f.element).getSize();
   }
   return type;
 }
 
-// "time: s, floe: 1, ...": the units attribute of /fracture/events
-std::string event_units() {
+// "time: s, floe: 1, ...": the units attribute of a dataset of records
+std::string field_units(const std::vector<EventField>& fields) {
   std::string out;
-  for (const EventField& f : event_fields()) out += fmt::format("{}{}: {}", out.empty() ? "" : ", ", f.name, f.unit);
+  for (const EventField& f : fields) out += fmt::format("{}{}: {}", out.empty() ? "" : ", ", f.name, f.unit);
   return out;
+}
+
+H5::CompType memory_type_of(const std::vector<EventField>& fields, std::size_t size) {
+  H5::CompType type(size);
+  for (const EventField& f : fields) type.insertMember(f.name, f.offset, memory_type(f.element));
+  return type;
 }
 
 // the group and the name of a dataset path: "/load/force" -> "/load", "force"
@@ -117,10 +123,16 @@ std::string utc_now_iso8601() {
   return buf;
 }
 
-H5::CompType fracture_event_mem_type() {
-  H5::CompType type(sizeof(FractureEvent));
-  for (const EventField& f : event_fields()) type.insertMember(f.name, f.offset, memory_type(f.element));
-  return type;
+H5::CompType fracture_event_mem_type() { return memory_type_of(event_fields(), sizeof(FractureEvent)); }
+
+H5::CompType sheet_break_mem_type() { return memory_type_of(sheet_break_fields(), sizeof(SheetBreakRecord)); }
+
+void append_sheet_outline(OutputDatasets& d, const std::vector<Eigen::Vector2d>& outline) {
+  std::vector<double> vertices;
+  for (const Eigen::Vector2d& v : outline) vertices.insert(vertices.end(), {v.x(), v.y()});
+  const int64_t end = static_cast<int64_t>(d.sheet_outline_vertices.rows + outline.size());
+  d.sheet_outline_vertices.write(vertices.data(), outline.size(), H5::PredType::NATIVE_DOUBLE);
+  d.sheet_outline_end_row.write(&end, 1, H5::PredType::NATIVE_INT64);
 }
 
 OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const std::vector<BodyOutline>& outlines,
@@ -198,7 +210,14 @@ OutputDatasets create_output_layout(H5::H5File& file, const RunMeta& run, const 
                                    {hsize_t(run.mooring_lines), hsize_t(kMooringShapePoints), 3}, 64);
 
   // fracture events (/fracture/floe_* are written at the end, by write_floe_margins)
-  d.events = schema_series(file, "/fracture/events", fracture_file_type(), {}, 256, event_units());
+  d.events = schema_series(file, "/fracture/events", packed_file_type(event_fields()), {}, 256,
+                           field_units(event_fields()));
+  if (run.level_sheet) {
+    d.sheet_breaks = schema_series(file, "/sheet/breaks", packed_file_type(sheet_break_fields()), {}, 256,
+                                   field_units(sheet_break_fields()));
+    d.sheet_outline_end_row = schema_series(file, "/sheet/outline_end_row", H5::PredType::STD_I64LE, {}, 256);
+    d.sheet_outline_vertices = schema_series(file, "/sheet/outline_vertices", f8, {2}, 4096);
+  }
   file.flush(H5F_SCOPE_GLOBAL);
   return d;
 }
@@ -245,6 +264,11 @@ OutputDatasets open_output_layout(H5::H5File& file) {
   for (const auto& [member, path] : growing_datasets()) d.*member = open(path);
   if (file.nameExists("/snapshots") && file.openGroup("/snapshots").nameExists("mooring_lines"))
     d.snap_mooring = open("/snapshots/mooring_lines");
+  if (file.nameExists("/sheet")) {
+    d.sheet_breaks = open("/sheet/breaks");
+    d.sheet_outline_end_row = open("/sheet/outline_end_row");
+    d.sheet_outline_vertices = open("/sheet/outline_vertices");
+  }
   return d;
 }
 
@@ -260,6 +284,7 @@ void write_floe_margin_datasets(H5::H5File& file, const std::vector<double>& max
 void OutputDatasets::close() {
   for (const auto& [member, path] : growing_datasets()) (this->*member).dataset.reset();
   snap_mooring.dataset.reset();
+  for (Series* s : {&sheet_breaks, &sheet_outline_end_row, &sheet_outline_vertices}) s->dataset.reset();
   for (Series& s : series) s.dataset.reset();
 }
 

@@ -23,6 +23,8 @@ struct OutputDatasets {
   Series events;
   // the bodies' outlines: rows appended as floes split (fracture.mode = "analytic")
   Series body_floe_id, body_thickness, body_vertex_offset, body_vertices, body_parent, body_born;
+  // level ice cut by closed forms (RunMeta::level_sheet): its breaks and outlines; none otherwise
+  Series sheet_breaks, sheet_outline_end_row, sheet_outline_vertices;
 
   /// Releases every dataset: HDF5 closes a file only once no object of it is open.
   void close();
@@ -42,6 +44,13 @@ OutputDatasets open_output_layout(H5::H5File& file);
 
 /// The memory type of FractureEvent rows (the file's packed type is built from the same fields).
 H5::CompType fracture_event_mem_type();
+
+/// The memory type of SheetBreakRecord rows (/sheet/breaks).
+H5::CompType sheet_break_mem_type();
+
+/// Appends the sheet's outline `outline` (m, tank frame) to /sheet/outline_*: its vertices, then its end row (a file
+/// cut between the writes holds vertices no row names, never a row without its vertices).
+void append_sheet_outline(OutputDatasets& d, const std::vector<Eigen::Vector2d>& outline);
 
 /// Writes /fracture/floe_max_ratio and /fracture/floe_min_distance (one value per layout floe).
 void write_floe_margin_datasets(H5::H5File& file, const std::vector<double>& max_ratio,

@@ -54,6 +54,7 @@ struct Recorder::Impl {
 
   OutputDatasets data;  // the growing datasets (dem/output/file_layout.hpp)
   H5::CompType event_mem_type = fracture_event_mem_type();
+  H5::CompType sheet_break_type = sheet_break_mem_type();
 
   // buffers of rows not yet written
   std::vector<LoadSample> load_buffer;
@@ -444,6 +445,32 @@ void Recorder::append_fracture(const FractureEvent& event) {
       throw OutputError("cannot write fracture events to '" + impl_->path +
                         "': " + hdf5_reason(e));
     }
+  }
+}
+
+void Recorder::append_sheet_outline(const std::vector<Eigen::Vector2d>& outline) {
+  impl_->require_open("append_sheet_outline");
+  Impl& m = *impl_;
+  if (!m.data.sheet_outline_end_row.dataset)
+    throw std::logic_error("Recorder::append_sheet_outline: the file has no /sheet (RunMeta::level_sheet)");
+  QuietHdf5 quiet;
+  try {
+    m.require_space(4096 + 16 * outline.size());
+    icedem::append_sheet_outline(m.data, outline);
+  } catch (const H5::Exception& e) {
+    throw OutputError("cannot write the sheet's outline to '" + m.path + "': " + hdf5_reason(e));
+  }
+}
+
+void Recorder::append_sheet_break(const SheetBreakRecord& record, const std::vector<Eigen::Vector2d>& outline_after) {
+  impl_->require_open("append_sheet_break");
+  append_sheet_outline(outline_after);
+  Impl& m = *impl_;
+  QuietHdf5 quiet;
+  try {
+    m.data.sheet_breaks.write(&record, 1, m.sheet_break_type);
+  } catch (const H5::Exception& e) {
+    throw OutputError("cannot write the sheet's break to '" + m.path + "': " + hdf5_reason(e));
   }
 }
 

@@ -72,6 +72,13 @@ class Recorder {
   /// Buffers one fracture event.
   void append_fracture(const FractureEvent& event);
 
+  /// Writes the analytic level sheet's outline at the start (a file made with RunMeta::level_sheet), at once.
+  void append_sheet_outline(const std::vector<Eigen::Vector2d>& outline);
+
+  /// Writes one break of the sheet and its outline after it, at once (the outline first: a file cut between the
+  /// writes holds an outline no break names).
+  void append_sheet_break(const SheetBreakRecord& record, const std::vector<Eigen::Vector2d>& outline_after);
+
   /// Writes /fracture/floe_max_ratio and /fracture/floe_min_distance (one value per layout
   /// floe; call once, at the end of a run with breakable floes).
   void write_floe_margins(const std::vector<double>& max_ratio, const std::vector<double>& min_distance);

@@ -12,6 +12,7 @@
 
 #include "dem/core/diagnostics.hpp"
 #include "dem/fracture/fracture_state.hpp"  // FractureEvent
+#include "dem/fracture/sheet_break_record.hpp"
 
 namespace icedem {
 
@@ -45,6 +46,7 @@ struct RunMeta {
   std::string precision;       // "double" or "float"
   uint64_t seed = 0;           // random seed of the layout
   int mooring_lines = 0;       // a moored structure's lines (1 for the linear mooring); 0: towed
+  bool level_sheet = false;    // level ice cut by closed forms: the file has /sheet
 };
 
 /// What a body is doing at a snapshot (/snapshots/rows/awake).
@@ -77,7 +79,7 @@ struct LoadSample {
   Eigen::Vector3d structure_angular_velocity = Eigen::Vector3d::Zero();  // rad/s
   Eigen::Vector3d mooring_force = Eigen::Vector3d::Zero();               // N, on the structure
   Eigen::Vector3d mooring_moment = Eigen::Vector3d::Zero();              // N m, about the reference point
-  std::vector<double> mooring_tension;                                   // N, each line's at its fairlead
+  std::vector<double> mooring_tension{};                                 // N, each line's at its fairlead
 
   /// The surge load, N: the load resisting towing (+x), positive when the ice pushes back,
   /// as the paper plots it. The one place its sign is decided (/load/surge, statistics, progress).

@@ -109,6 +109,18 @@ const std::vector<DatasetEntry>& other_datasets() {
       {"/fracture/events", "e", Element::compound, "",
        "joint breaks and rigid floes' splits, one row per break, with the floe's state at the break (fields below; "
        "empty when nothing breaks)"},
+      {"/sheet/breaks", "s", Element::compound, "",
+       "level ice cut by closed forms (fracture.mode = \"analytic\"): the sheet's breaks, one row per break (fields "
+       "below; each is also a row of /fracture/events, floe and joint -1)",
+       false, true},
+      {"/sheet/outline_end_row", "s + 1", Element::i8, "1",
+       "level ice cut by closed forms: the sheet's outline at the start (row 0) and after each break (row i + 1 after "
+       "/sheet/breaks row i) is /sheet/outline_vertices[end_row[i - 1]:end_row[i]] (0 for row 0's start)",
+       false, true},
+      {"/sheet/outline_vertices", "nv_s x 2", Element::f8, "m",
+       "level ice cut by closed forms: the sheet's outlines' vertices (x, z), tank frame, in turn (clockwise in a "
+       "plot of x right and z up)",
+       false, true},
       {"/fracture/floe_max_ratio", "f", Element::f8, "1",
        "per layout floe: the largest load / capacity ratio of any of its joints under any criterion over the run "
        "(0 for rigid floes and lattices never awake); runs with breakable floes only"},
@@ -156,6 +168,39 @@ const std::vector<EventField>& event_fields() {
        "load / capacity in tension (fracture.tension_strength; 0 when off)"},
       {"ratio_in_plane_bending", offsetof(FractureEvent, ratio_in_plane_bending), Element::f8, "1",
        "load / capacity in in-plane bending (0 when off)"},
+  };
+  return fields;
+}
+
+const std::vector<EventField>& sheet_break_fields() {
+  using R = SheetBreakRecord;
+  static const std::vector<EventField> fields{
+      {"time", offsetof(R, time), Element::f8, "s", "time of the break"},
+      {"by_floe", offsetof(R, by_floe), Element::i4, "1",
+       "1: a floe's push on the sheet's edge broke it (the rubble the structure pushes), 0: the structure's crushed "
+       "zone"},
+      {"radial_crack", offsetof(R, radial_crack), Element::i4, "1",
+       "1: the edge cracked radially first and its two wedges broke together, 0: one wedge"},
+      {"pieces", offsetof(R, pieces), Element::i4, "1", "floes made (the last bodies of /bodies born at its time)"},
+      {"splits_before", offsetof(R, splits_before), Element::i4, "1", "splits of rigid floes before it"},
+      {"x", offsetof(R, x), Element::f8, "m", "the load's centre, tank frame"},
+      {"z", offsetof(R, z), Element::f8, "m", "the load's centre, tank frame"},
+      {"axis_x", offsetof(R, axis_x), Element::f8, "1", "the load's direction into the sheet (the wedges' axis)"},
+      {"axis_z", offsetof(R, axis_z), Element::f8, "1", "the load's direction into the sheet (the wedges' axis)"},
+      {"half_width", offsetof(R, half_width), Element::f8, "m", "the load's patch a: half its width across the axis"},
+      {"load", offsetof(R, load), Element::f8, "N", "the load normal to the sheet"},
+      {"breaking_load", offsetof(R, breaking_load), Element::f8, "N", "the closed form's breaking load (<= load)"},
+      {"opening_angle", offsetof(R, opening_angle), Element::f8, "rad",
+       "the angle the sheet fills about the centre (pi at a straight edge)"},
+      {"crack_distance", offsetof(R, crack_distance), Element::f8, "m", "x*: the cracks' distance from the centre"},
+      {"hull_x", offsetof(R, hull_x), Element::f8, "m", "the structure's axis at the break (by_floe 0)"},
+      {"hull_z", offsetof(R, hull_z), Element::f8, "m", "the structure's axis at the break (by_floe 0)"},
+      {"hull_radius", offsetof(R, hull_radius), Element::f8, "m",
+       "the structure's larger radius in the ice (by_floe 0): the ice short of it is crushed"},
+      {"broken_area", offsetof(R, broken_area), Element::f8, "m2", "ice that left the sheet"},
+      {"crushed_area", offsetof(R, crushed_area), Element::f8, "m2",
+       "of it, crushed: in the structure's section, or in pieces smaller than the thickness squared or narrower "
+       "than the thickness"},
   };
   return fields;
 }
@@ -244,6 +289,9 @@ std::string output_markdown() {
   md += "\n### Fields of `/fracture/events`\n\n| field | type | unit | meaning |\n|---|---|---|---|\n";
   for (const EventField& f : event_fields())
     md += fmt::format("| `{}` | {} | {} | {} |\n", f.name, element_name(f.element), f.unit, cell(f.description));
+  md += "\n### Fields of `/sheet/breaks`\n\n| field | type | unit | meaning |\n|---|---|---|---|\n";
+  for (const EventField& f : sheet_break_fields())
+    md += fmt::format("| `{}` | {} | {} | {} |\n", f.name, element_name(f.element), f.unit, cell(f.description));
   md += "\n### Attributes\n\n| object | attribute | type | unit | meaning |\n|---|---|---|---|---|\n";
   for (const AttributeEntry& a : file_attributes())
     md += fmt::format("| `{}` | `{}` | {} | {} | {} |\n", a.object, a.name, element_name(a.element), a.unit,
@@ -255,8 +303,9 @@ std::string output_markdown() {
         "Every `output.checkpoint_interval` of simulated time (30 s by default; not for validation cases, runs\n"
         "exchanging drag with OpenFOAM or exporting contact problems) a run writes `OUT.h5.checkpoint` beside\n"
         "its output: a copy of the output as it stands, with a group `/checkpoint` holding everything the run\n"
-        "needs to go on (every body's pose, velocities and sleep, the lattices and broken joints, every contact\n"
-        "point with its warm-start impulses, the run's clock, break counts and load history). It is written to\n"
+        "needs to go on (every body's pose, velocities and sleep, the lattices and broken joints, the level\n"
+        "sheet's breaks, every contact point with its warm-start impulses, the run's clock, break counts and load\n"
+        "history). It is written to\n"
         "`OUT.h5.checkpoint.tmp` and renamed into place, so a kill during the write leaves the previous one\n"
         "whole. `icedem info OUT.h5` says whether a run is complete, being written, or was killed and from\n"
         "when it can be resumed; `icedem resume OUT.h5` puts the checkpoint's copy in place of the output\n"

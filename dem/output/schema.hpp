@@ -58,6 +58,7 @@ struct DatasetEntry {
   std::string unit;
   std::string description;
   bool moored = false;  // written only by runs of a moored structure (RunMeta::mooring_lines > 0)
+  bool sheet = false;   // written only by runs of level ice cut by closed forms (RunMeta::level_sheet)
 };
 
 const std::vector<DatasetEntry>& other_datasets();
@@ -76,6 +77,9 @@ struct EventField {
 };
 
 const std::vector<EventField>& event_fields();
+
+/// The fields of a /sheet/breaks row, with where SheetBreakRecord keeps them (EventField's offset).
+const std::vector<EventField>& sheet_break_fields();
 
 /// An attribute on a group or dataset (the numbers of /stats come from summary_fields()).
 struct AttributeEntry {

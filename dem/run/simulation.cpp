@@ -97,6 +97,7 @@ RunMeta run_meta(const Scene& scene, const RunOptions& options) {
   m.precision = sizeof(btScalar) == 8 ? "double" : "float";
   m.seed = scene.seed;
   m.mooring_lines = mooring_line_count(scene);
+  m.level_sheet = analytic_level_ice(scene);
   return m;
 }
 
@@ -327,11 +328,11 @@ void describe_output(const Scene& scene, const Layout& layout, Recorder& recorde
 
 // steps between two checkpoints; 0: none. Runs whose state lives partly outside icedem (an
 // OpenFOAM partner exchanging drag, a validation case's loads) or that export contact problems
-// do not checkpoint, nor yet does level ice cut by closed forms (its sheet is not in a checkpoint)
+// do not checkpoint
 long checkpoint_steps(const Scene& scene, const RunOptions& options) {
   const bool partner = scene.flow.model == FlowModel::kCoupled && scene.coupling.mode == CouplingMode::kProbe;
   if (scene.output.checkpoint_interval <= 0 || scene.validation.kind != ValidationKind::kNone || partner ||
-      !options.problems.directory.empty() || analytic_level_ice(scene))
+      !options.problems.directory.empty())
     return 0;
   return std::max(1L, std::lround(scene.output.checkpoint_interval / scene.time.dt));
 }
@@ -390,6 +391,9 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   const long snapshot_every =
       scene.output.snapshot_interval > 0 ? std::max(1L, std::lround(scene.output.snapshot_interval / scene.time.dt)) : 0;
   if (snapshot_every && !options.resume) recorder.append_snapshot(0.0, body_poses(*state.world), mooring_points(scene, state));
+  // the analytic sheet's outline at the start; its breaks (a resumed run's file holds those before the checkpoint)
+  if (state.sheet && !options.resume) recorder.append_sheet_outline(state.sheet->outline());
+  std::size_t recorded_sheet_breaks = state.sheet ? state.sheet->breaks().size() : 0;
   const long checkpoint_every = checkpoint_steps(scene, options);
 
   const std::unique_ptr<ValidationCase> validation = make_validation_case(scene, state);
@@ -464,6 +468,9 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
       // stand-ins: World::floes() are the output bodies)
       if (floes_split(scene) && state.world->floes().size() > recorder.body_count())
         recorder.add_bodies(body_outlines(scene, *state.world, recorder.body_count(), state.time));
+      for (; state.sheet && recorded_sheet_breaks < state.sheet->breaks().size(); ++recorded_sheet_breaks)
+        recorder.append_sheet_break(state.sheet->breaks()[recorded_sheet_breaks],
+                                    state.sheet->outline_after(recorded_sheet_breaks));
       if (snapshot_every && state.step % snapshot_every == 0)
         recorder.append_snapshot(state.time, body_poses(*state.world), mooring_points(scene, state));
 

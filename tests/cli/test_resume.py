@@ -11,7 +11,8 @@ SIGKILL once it has written its checkpoint at t = 5, 15 and 25 s, resumed with
 `icedem resume`, and every dataset and the /stats attributes compared, bit for bit. A kill
 during a checkpoint write is reproduced by what it leaves on the disk: a torn temporary
 checkpoint and a torn output file. Then a run of breakable floes killed between two groups
-of breaks, and one of rigid floes that split (their pieces are bodies made mid-run). `icedem info` and refusals are checked on the way,
+of breaks, one of rigid floes that split (their pieces are bodies made mid-run) and one of level ice cut by
+closed forms. `icedem info` and refusals are checked on the way,
 and checkpoints changed or damaged after they were written are refused.
 """
 import json
@@ -191,6 +192,24 @@ with h5py.File("split_full.h5", "r") as f:
           f"the split run splits floes before and after t = 68.25 s, two pieces each ({list(np.round(splits, 2))}, "
           f"{pieces} pieces)")
 killed_and_resumed("split_killed.h5", 68.25, lattices, split_options, split_full, "the split run", "the pieces")
+
+# level ice cut by closed forms (the paper's tow of the analytic sheet, its first 12 s): its breaks cut the
+# sheet's prisms and add pieces to the world and the output; killed after the checkpoint at 8 s, the resumed
+# world cuts the sheet again as the run did and the resumed output holds its breaks and outlines and adds those
+# after it
+sheet_scenario = os.path.join(src, "scenarios/level_ice/level_ice_analytic.toml")
+sheet_options = ["--set", "time.duration=12", "--set", "stats.window_start_travel=0",
+                 "--set", "output.snapshot_interval=1", "--set", "output.checkpoint_interval=4"]
+p = run("run", sheet_scenario, "-q", "-o", "sheet_full.h5", *sheet_options)
+sheet_full = contents("sheet_full.h5")
+with h5py.File("sheet_full.h5", "r") as f:
+    cuts = f["sheet/breaks"]["time"]
+    outlines = len(f["sheet/outline_end_row"])
+    check((cuts < 8).any() and (cuts > 8).any() and outlines == len(cuts) + 1,
+          f"the sheet breaks before and after t = 8 s, an outline after each ({list(np.round(cuts, 2))}, "
+          f"{outlines} outlines)")
+killed_and_resumed("sheet_killed.h5", 8, sheet_scenario, sheet_options, sheet_full, "the analytic sheet's run",
+                   "the sheet's breaks")
 
 # a moored structure (structure.motion = "moored"): its pose, velocities, last ice impulse and the
 # history of its mooring's load are in the checkpoint; killed in the ice after the checkpoint at 25 s,

@@ -62,6 +62,36 @@ TEST(PolygonSet, AHalfPlaneKeepsItsSide) {
   EXPECT_NEAR(area(right[0]), 3.0, 1e-12);
 }
 
+// An opening keeps what is wider than its width where it was (a square's corners and edges to round-off, 1e-12) and
+// takes away a tongue narrower than it: a square with a 5 mm x 0.3 m tongue (0.0015 m^2) opened at 33 mm loses the
+// tongue but for the stub at its root that the disc's cap reaches into (0.2 mm deep: 1e-5 m^2 bounds it), and
+// the mitres of the stub's corners reach outside the region by no more than 1e-6 m^2 (5e-7 here: a thousandth
+// of the ice's thickness squared); a corner of 60 degrees with long sides keeps its tip
+TEST(PolygonSet, AnOpeningTakesTheTongueNarrowerThanItsWidth) {
+  const Polygon square = make_ccw({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  const std::vector<Polygon> same = opening(square, 0.033);
+  ASSERT_EQ(same.size(), 1u);
+  EXPECT_NEAR(area(same[0]), 1.0, 1e-12);
+  for (const Eigen::Vector2d& v : square) {
+    double nearest = 1.0;
+    for (const Eigen::Vector2d& w : same[0]) nearest = std::min(nearest, (v - w).norm());
+    EXPECT_LT(nearest, 1e-12) << "corner " << v.transpose();
+  }
+  const Polygon tongued = make_ccw({{0, 0}, {1, 0}, {1, 0.5}, {1.3, 0.5}, {1.3, 0.505}, {1, 0.505}, {1, 1}, {0, 1}});
+  const std::vector<Polygon> opened = opening(tongued, 0.033);
+  ASSERT_EQ(opened.size(), 1u);
+  EXPECT_GE(area(opened[0]), 1.0 - 1e-12);
+  EXPECT_LT(area(opened[0]), 1.0 + 1e-5);
+  double within = 0;
+  for (const Polygon& p : intersect(opened[0], tongued)) within += area(p);
+  EXPECT_NEAR(within, area(opened[0]), 1e-6);
+  const double half = M_PI / 6;
+  const Polygon corner = make_ccw({{0, 0}, {2 * std::cos(half), -2 * std::sin(half)}, {2 * std::cos(half), 2 * std::sin(half)}});
+  const std::vector<Polygon> kept = opening(corner, 0.033);
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_NEAR(area(kept[0]), area(corner), 1e-12 * area(corner));
+}
+
 // A notched outline (an L) is not convex: its parts are convex, cover its area, and are as few as can be (2)
 TEST(ConvexPartition, AnLSplitsIntoTwoConvexParts) {
   const Polygon l = make_ccw({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
