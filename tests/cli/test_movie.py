@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """scripts/movie end to end on the short tow: one frame per snapshot (or every Nth), frames that
-change as the structure moves, the joints' path with breakable floes, a moored cone's lines; a run without snapshots and
+change as the structure moves, the joints' path with breakable floes, a moored cone's lines, the analytic level
+sheet; a run without snapshots and
 a movie over the run's own file are refused (exit 2) and leave nothing.
 
 Usage: test_movie.py SOURCE_DIR WORK_DIR ICEDEM
@@ -93,6 +94,24 @@ def orange(image):  # C1, (255, 127, 14), in the views
 check(len(shots) == 3 and min(orange(x) for x in shots) > 100 and orange(frames(gif)[0]) == 0,
       f"a moored run's lines are drawn (orange pixels {[orange(x) for x in shots]}, towed "
       f"{orange(frames(gif)[0]) if os.path.exists(gif) else '-'}; exit {p.returncode}) {p.stderr[-300:]}")
+
+# level ice cut by closed forms: the held sheet drawn in pale grey (0.85) in every frame as it stood then (its first
+# 8 s, a snapshot every 2 s, breaks from 2.7 s on: about 30,000 such pixels); a run of floes has a few hundred (edges)
+sheet = os.path.join(work, "sheet.h5")
+subprocess.run([icedem, "run", os.path.join(src, "scenarios", "level_ice", "level_ice_analytic.toml"), "-q", "-o", sheet,
+                "--set", "time.duration=8", "--set", "output.snapshot_interval=2"], check=True, capture_output=True)
+p = subprocess.run([movie, sheet], capture_output=True, text=True)
+shots = frames(os.path.join(work, "sheet.gif")) if p.returncode == 0 else []
+
+
+def pale(image):  # the sheet's grey, (217, 217, 217), in the views
+    views = image[:, : int(0.6 * image.shape[1])]
+    return int((np.abs(views - 217).max(axis=2) < 4).sum())
+
+
+check(len(shots) == 5 and min(pale(x) for x in shots) > 10000 and pale(frames(gif)[0]) < 2000,
+      f"the analytic sheet is drawn (pale pixels {[pale(x) for x in shots]}, floes' run "
+      f"{pale(frames(gif)[0]) if os.path.exists(gif) else '-'}; exit {p.returncode}) {p.stderr[-300:]}")
 
 # refusals: nothing written
 bare = run("bare", "output.snapshot_interval=0")

@@ -7,7 +7,8 @@ The run must keep snapshots (`output.snapshot_interval` > 0; the paper scenarios
 second). The movie is an animated GIF (Pillow, which the project installs), or an MP4 when the
 name ends in .mp4 and Debian's ffmpeg is installed. Top view: every body's outline where the
 snapshot has it, in shades of blue by floe, pale while asleep; the joints broken by then as red lines (their
-glued faces, dem/output/xdmf's joints); the structure's waterline section. Side view: the same
+glued faces, dem/output/xdmf's joints); the structure's waterline section; level ice cut by closed forms, its
+held sheet as it stood at the frame's time (/sheet/outline_*), pale grey. Side view: the same
 bodies as prisms across the channel, the structure's profile (heaved and pitched as it moves, for a
 moored one, with its mooring's lines in orange: /snapshots/mooring_lines). Both follow the structure, `--span`
 metres either side of it (default 4). Right: the surge load over the run, a marker at the frame's
@@ -62,8 +63,26 @@ def read(path):
             "lines": h["/snapshots/mooring_lines"][:] if "/snapshots/mooring_lines" in h else None,
             "profile": structure_profile(h),
             "joints": joint_faces(h, off, vertices, thickness),
+            "sheet": sheet_outlines(h),
         }
     return run
+
+
+def sheet_outlines(h):
+    """Level ice cut by closed forms: the times of the sheet's breaks and its outlines, at the start and after each
+    (outline i + 1 stands from break i on); None for other runs."""
+    if "/sheet/breaks" not in h:
+        return None
+    end, vertices = h["/sheet/outline_end_row"][:], h["/sheet/outline_vertices"][:]
+    start = np.concatenate([[0], end[:-1]])
+    return {"times": h["/sheet/breaks"]["time"][:], "outlines": [vertices[a:b] for a, b in zip(start, end)]}
+
+
+def sheet_at(sheet, t):
+    """The sheet's outline at time t: the last one written by then (a file cut between an outline and its break
+    row holds one outline more than breaks: it is not yet the sheet's)."""
+    i = int(np.searchsorted(sheet["times"], t, side="right"))
+    return sheet["outlines"][min(i, len(sheet["times"]))]
 
 
 def body_shapes(run, k):
@@ -131,7 +150,9 @@ def draw(run, frames, path, fps, span):
     joints = run["joints"]
     # across the channel: the floes' extent at the first frame, and the structure's
     first_top, _, _ = body_shapes(run, frames[0])
-    z_all = np.concatenate([o[:, 1] for o in first_top] + [[-r0, r0]])
+    sheet = run["sheet"]
+    z_all = np.concatenate([o[:, 1] for o in first_top] + [[-r0, r0]] +
+                           ([sheet["outlines"][0][:, 1]] if sheet is not None else []))
     z_lim = (z_all.min() - 0.1, z_all.max() + 0.1)
 
     def frame(i):
@@ -141,6 +162,9 @@ def draw(run, frames, path, fps, span):
         s = structure_at(run, t)
         for ax in (top_ax, side_ax):
             ax.clear()
+        if sheet is not None:  # the held sheet, beneath the floes
+            top_ax.add_collection(PolyCollection([sheet_at(sheet, t)], facecolors="0.85", edgecolors="0.5",
+                                                 linewidths=0.5, zorder=0))
         present = [b for b in range(len(top)) if awake[b] != ABSENT]
         colours = [(*floe_colour[b][:3], 1.0 if awake[b] else 0.45) for b in present]
         top_ax.add_collection(PolyCollection([top[b] for b in present], facecolors=colours, edgecolors="0.2",
