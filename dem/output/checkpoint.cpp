@@ -406,10 +406,8 @@ void restore_state(const Checkpoint& c, State& state) {
     throw InputError(fmt::format("the checkpoint {} an analytic level sheet, the scene {}: it is not this scene's",
                                  c.sheet ? "has" : "has no", state.sheet ? "has one" : "has none"));
   if (c.sheet) {  // the sheet's breaks and the floes' splits, in the order they happened
-    std::size_t split = 0;
     for (const SheetBreakRecord& b : c.sheet->breaks) {
-      for (; split < static_cast<std::size_t>(b.splits_before) && split < c.world.splits.size(); ++split)
-        state.world->split_floe(c.world.splits[split]);
+      replay_splits(*state.world, c.world.splits, std::min<std::size_t>(b.splits_before, c.world.splits.size()));
       state.sheet->replay(*state.world, b);
     }
     state.sheet->set_floe_load_totals(c.sheet->floe_loads);

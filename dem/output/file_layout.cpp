@@ -112,6 +112,16 @@ const std::vector<std::pair<Series OutputDatasets::*, const char*>>& growing_dat
   return all;
 }
 
+// the analytic level sheet's datasets (RunMeta::level_sheet): in its runs' files only
+const std::vector<std::pair<Series OutputDatasets::*, const char*>>& sheet_datasets() {
+  static const std::vector<std::pair<Series OutputDatasets::*, const char*>> all{
+      {&OutputDatasets::sheet_breaks, "/sheet/breaks"},
+      {&OutputDatasets::sheet_outline_end_row, "/sheet/outline_end_row"},
+      {&OutputDatasets::sheet_outline_vertices, "/sheet/outline_vertices"},
+  };
+  return all;
+}
+
 }  // namespace
 
 std::string utc_now_iso8601() {
@@ -264,11 +274,8 @@ OutputDatasets open_output_layout(H5::H5File& file) {
   for (const auto& [member, path] : growing_datasets()) d.*member = open(path);
   if (file.nameExists("/snapshots") && file.openGroup("/snapshots").nameExists("mooring_lines"))
     d.snap_mooring = open("/snapshots/mooring_lines");
-  if (file.nameExists("/sheet")) {
-    d.sheet_breaks = open("/sheet/breaks");
-    d.sheet_outline_end_row = open("/sheet/outline_end_row");
-    d.sheet_outline_vertices = open("/sheet/outline_vertices");
-  }
+  if (file.nameExists("/sheet"))
+    for (const auto& [member, path] : sheet_datasets()) d.*member = open(path);
   return d;
 }
 
@@ -284,7 +291,7 @@ void write_floe_margin_datasets(H5::H5File& file, const std::vector<double>& max
 void OutputDatasets::close() {
   for (const auto& [member, path] : growing_datasets()) (this->*member).dataset.reset();
   snap_mooring.dataset.reset();
-  for (Series* s : {&sheet_breaks, &sheet_outline_end_row, &sheet_outline_vertices}) s->dataset.reset();
+  for (const auto& [member, path] : sheet_datasets()) (this->*member).dataset.reset();
   for (Series& s : series) s.dataset.reset();
 }
 

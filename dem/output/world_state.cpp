@@ -111,19 +111,23 @@ WorldState capture_world(const World& world) {
   return s;
 }
 
-void restore_world(World& world, const WorldState& s) {
-  // the split floes' pieces first, in the order they were made: they are bodies of the state (those made
-  // already, among the analytic sheet's breaks, the state's first splits)
-  if (world.splits().size() > s.splits.size())
-    throw std::runtime_error("restore_world: the world has more split floes than the state");
-  for (std::size_t i = world.splits().size(); i < s.splits.size(); ++i) {
-    const FloeSplit& split = s.splits[i];
+void replay_splits(World& world, const std::vector<FloeSplit>& splits, std::size_t until) {
+  if (world.splits().size() > until || until > splits.size())
+    throw std::runtime_error("replay_splits: the world has more split floes than asked, or the state fewer");
+  for (std::size_t i = world.splits().size(); i < until; ++i) {
+    const FloeSplit& split = splits[i];
     if (split.body < 0 || split.body >= static_cast<int>(world.floes().size()))
       throw InputError(fmt::format("the checkpoint splits body {}, the scene builds {} ice bodies: it is not "
                                    "this scene's",
-                                           split.body, world.floes().size()));
+                                   split.body, world.floes().size()));
     world.split_floe(split);
   }
+}
+
+void restore_world(World& world, const WorldState& s) {
+  // the split floes' pieces first, in the order they were made: they are bodies of the state (those made
+  // already, among the analytic sheet's breaks, the state's first splits)
+  replay_splits(world, s.splits, s.splits.size());
   const auto& bodies = world.bodies();
   if (s.bodies.size() != bodies.size() || s.lattice_replaced.size() != world.lattices().size() ||
       s.joint_broken.size() != world.joints().size())

@@ -51,6 +51,10 @@ struct WorldState {
 /// The world's state between two steps.
 WorldState capture_world(const World& world);
 
+/// Split the floes of `world` as `splits`, from the world's own splits so far up to `until` (the state's first
+/// splits, in order). Throws InputError for a split of a body the world has not got (another scene's state).
+void replay_splits(World& world, const std::vector<FloeSplit>& splits, std::size_t until);
+
 /// Put `state` into `world`, a world just built from the scene the state was taken from:
 /// lattices woken and joints broken as in the state, every body's pose, velocities and sleep,
 /// and every contact point. Throws std::runtime_error if the world does not match the state
