@@ -17,30 +17,10 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Traits = CGAL::Partition_traits_2<Kernel>;
 using CgalPolygon = Traits::Polygon_2;
 
-// drops a vertex repeated by its successor and one on a straight line between its neighbours: CGAL's
-// partition wants a simple polygon with no such vertices
-Polygon without_straight_vertices(const Polygon& p) {
-  Polygon out;
-  const std::size_t n = p.size();
-  double size = 0;
-  for (const Eigen::Vector2d& v : p) size = std::max(size, v.cwiseAbs().maxCoeff());
-  const double tol = 1e-12 * std::max(size, 1.0) * std::max(size, 1.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d& a = p[(i + n - 1) % n];
-    const Eigen::Vector2d& b = p[i];
-    const Eigen::Vector2d& c = p[(i + 1) % n];
-    const Eigen::Vector2d u = b - a, w = c - b;
-    if (w.squaredNorm() == 0) continue;
-    if (std::abs(u.x() * w.y() - u.y() * w.x()) <= tol && u.dot(w) > 0) continue;
-    out.push_back(b);
-  }
-  return out;
-}
-
 }  // namespace
 
 std::vector<Polygon> convex_parts(const Polygon& outline) {
-  const Polygon simple = without_straight_vertices(outline);
+  const Polygon simple = without_degenerate_vertices(outline);  // CGAL wants none
   if (simple.size() < 3) return {};
   if (is_convex(simple)) return {make_ccw(simple)};
   // CGAL wants its own counter-clockwise: in a plot of (x, z) with z up, clockwise seen from above

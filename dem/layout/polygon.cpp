@@ -211,6 +211,32 @@ Polygon make_ccw(Polygon polygon) {
   return polygon;
 }
 
+Polygon without_degenerate_vertices(const Polygon& polygon) {
+  Polygon out = polygon;
+  double scale = 0;
+  for (const Eigen::Vector2d& v : polygon) scale = std::max(scale, v.cwiseAbs().maxCoeff());
+  const double same = kRelTol * std::max(scale, 1.0);  // m: a repeated vertex
+  for (bool dropped = true; dropped && out.size() >= 3;) {
+    dropped = false;
+    for (std::size_t i = 0; i < out.size() && out.size() >= 3; ++i) {
+      const std::size_t n = out.size();
+      const Eigen::Vector2d u = out[i] - out[(i + n - 1) % n], w = out[(i + 1) % n] - out[i];
+      const double lu = u.norm(), lw = w.norm();
+      bool degenerate = lw <= same;  // repeated by its successor
+      if (!degenerate) {
+        const double s = std::abs(cross(u, w)) / (lu * lw), c = u.dot(w) / (lu * lw);
+        degenerate = (c > 0 && s <= kRelTol) || (c < 0 && s <= kSpikeAngle);  // straight on, or a spike
+      }
+      if (!degenerate) continue;
+      out.erase(out.begin() + static_cast<std::ptrdiff_t>(i));
+      dropped = true;
+      --i;
+    }
+  }
+  if (out.size() < 3) out.clear();
+  return out;
+}
+
 Eigen::Vector2d rotate(const Eigen::Vector2d& p, double yaw) {
   // rotation about +y (docs/model/architecture.md): x' = x c + z s, z' = -x s + z c
   const double c = std::cos(yaw), s = std::sin(yaw);

@@ -61,6 +61,17 @@ bool is_convex(const Polygon& polygon);
 /// reverses the order if the signed area is negative, otherwise unchanged.
 Polygon make_ccw(Polygon polygon);
 
+/// The polygon without its degenerate vertices: a vertex repeated by its successor, one straight on between its
+/// neighbours, and a spike (a vertex the outline reaches and leaves back along the same line, to within
+/// kSpikeAngle): dropped until none is left, since dropping one can make its neighbour one. Boolean operations on
+/// outlines leave such vertices where two cuts share an edge, and CGAL's partition and Boost's overlays take a
+/// ring with them as not simple. Fewer than three vertices when nothing of area is left.
+Polygon without_degenerate_vertices(const Polygon& polygon);
+
+/// rad: a vertex whose outline turns back by more than pi minus this is a spike (a tongue narrower than a
+/// millionth of its length is round-off, not ice)
+constexpr double kSpikeAngle = 1e-6;
+
 /// Point `p` (x, z) rotated by `yaw` (rad) about +y, per the convention above.
 Eigen::Vector2d rotate(const Eigen::Vector2d& p, double yaw);
 

@@ -50,6 +50,7 @@ std::vector<Polygon> from_bg(BgMulti multi, const char* operation) {
       if (ring.empty() || (v - ring.back()).norm() > kSameVertex) ring.push_back(v);
     }
     while (ring.size() > 1 && (ring.front() - ring.back()).norm() <= kSameVertex) ring.pop_back();
+    ring = without_degenerate_vertices(ring);  // Boost's remove_spikes leaves a spike off its line by round-off
     if (ring.size() >= 3 && area(ring) > 0) out.push_back(make_ccw(std::move(ring)));
   }
   return out;

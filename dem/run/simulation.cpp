@@ -6,6 +6,8 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <stdexcept>
+#include <string>
 
 #include <sys/resource.h>
 
@@ -509,6 +511,10 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
     throw OutputError(fmt::format("{} (at t = {:.2f} s); the output file is closed and marked failed, its /meta "
                                   "message says which rows did not fit",
                                   e.what(), state.time));
+  } catch (const std::exception& e) {  // a fault of the model's own (a geometry it cannot cut, ...): say when, keep the run
+    const std::string message = fmt::format("{} (in the step from t = {:.2f} s)", e.what(), state.time);
+    fail(message);
+    throw std::runtime_error(message);
   }
   if (state.drag_exchange) state.drag_exchange->finish(summary.status == "complete");
   progress.done();

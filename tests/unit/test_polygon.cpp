@@ -75,6 +75,20 @@ TEST(Polygon, ConvexPolygonsInEitherOrderAreConvex) {
   EXPECT_TRUE(is_convex(Polygon{{0, 0}, {0.5, 0}, {1, 0}, {1, 1}, {0, 1}}));
 }
 
+// repeated, straight-on and spike vertices go; every real corner stays, however sharp (a wedge of a
+// thousandth of a radian is ice, a fold-back within kSpikeAngle is round-off)
+TEST(Polygon, DegenerateVerticesAreDroppedAndCornersKept) {
+  // a square with a vertex mid-edge, a repeated corner and a spike from (1, 1) up to (1, 2) and back, 2e-9 rad off
+  const Polygon messy = {{0, 0}, {0.5, 0}, {1, 0}, {1, 0}, {1, 1}, {1, 2}, {1 + 1e-9, 1}, {0, 1}};
+  const Polygon clean = without_degenerate_vertices(messy);
+  ASSERT_EQ(clean.size(), 4u);
+  for (const Eigen::Vector2d& v : clean) EXPECT_LT(v.y(), 1.5);  // the spike's tip is gone
+  EXPECT_NEAR(area(clean), 1.0, 1e-8);
+  // a sharp wedge is a corner
+  EXPECT_EQ(without_degenerate_vertices({{0, 0}, {10, -0.01}, {10, 0}}).size(), 3u);
+  EXPECT_TRUE(without_degenerate_vertices({{0, 0}, {1, 0}, {2, 0}}).empty());  // no area
+}
+
 TEST(Polygon, ReflexCornerIsNotConvex) {
   const Polygon l = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
   EXPECT_FALSE(is_convex(l));

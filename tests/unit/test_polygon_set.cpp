@@ -117,5 +117,21 @@ TEST(ConvexPartition, ACrescentSplitsIntoConvexPartsOfItsArea) {
   EXPECT_EQ(convex_parts(disc({0, 0}, 1.0, 16)).size(), 1u);
 }
 
+// The sheet's outline after a cut 95 s into the paper's analytic tow at mu 0.3: the ring comes back to the cut
+// vertex at (11.8037, 1.8254) along the line it reached it by, and off that line by round-off (3e-14 rad), so
+// its two edges there cross and CGAL found it not simple: the run stopped. Without the spike it partitions into
+// convex parts of its area.
+TEST(ConvexPartition, ARingWithASpikeFromTheTowPartitions) {
+  const Polygon recorded = {{11.803711461135789, 1.8253538131033327}, {11.806633217924983, 1.816391558773081},
+                            {25.999999999999996, 2.3980000000000006}, {25.999999999999996, -2.3979999999999992},
+                            {12.401033691543962, 0.58152063876998483}, {12.371539994252275, 0.66951210012099027},
+                            {12.180618086941813, 0.66922300450087913}};
+  const std::vector<Polygon> parts = convex_parts(recorded);
+  ASSERT_FALSE(parts.empty());
+  for (const Polygon& p : parts) EXPECT_TRUE(is_convex(p));
+  // the spike had no area: the parts have the ring's (its shoelace area counts the spike's two edges once each way)
+  EXPECT_NEAR(total_area(parts), area(recorded), 1e-9 * area(recorded));
+}
+
 }  // namespace
 }  // namespace icedem
