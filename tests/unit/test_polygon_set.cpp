@@ -117,7 +117,7 @@ TEST(ConvexPartition, ACrescentSplitsIntoConvexPartsOfItsArea) {
   EXPECT_EQ(convex_parts(disc({0, 0}, 1.0, 16)).size(), 1u);
 }
 
-// The sheet's outline after a cut 95 s into the paper's analytic tow at mu 0.3: the ring comes back to the cut
+// A part of the sheet's outline after a cut 95 s into the paper's analytic tow at mu 0.3: the ring comes back to the cut
 // vertex at (11.8037, 1.8254) along the line it reached it by, and off that line by round-off (3e-14 rad), so
 // its two edges there cross and CGAL found it not simple: the run stopped. Without the spike it partitions into
 // convex parts of its area.
@@ -131,6 +131,14 @@ TEST(ConvexPartition, ARingWithASpikeFromTheTowPartitions) {
   for (const Polygon& p : parts) EXPECT_TRUE(is_convex(p));
   // the spike had no area: the parts have the ring's (its shoelace area counts the spike's two edges once each way)
   EXPECT_NEAR(total_area(parts), area(recorded), 1e-9 * area(recorded));
+  // and the one that stopped the tow at mu 0.2, 150 s in: a spike at its first vertex (9e-15 rad)
+  const Polygon second = {{16.208789170232109, 0.31303676956769172}, {16.298554616970854, 0.21052327156580142},
+                          {16.315737591165245, 0.22200456785841116}, {16.31012590220525, 0.24701929755749646},
+                          {25.999999999999996, -2.3979999999999997}, {16.355283553810541, 0.14573796759143667}};
+  const std::vector<Polygon> its_parts = convex_parts(second);
+  ASSERT_FALSE(its_parts.empty());
+  for (const Polygon& p : its_parts) EXPECT_TRUE(is_convex(p));
+  EXPECT_NEAR(total_area(its_parts), area(second), 1e-9 * area(second));
 }
 
 }  // namespace
