@@ -67,11 +67,10 @@ AnalyticSheet::AnalyticSheet(const Scene& scene, World& world, const Polygon& ou
   const Box b = box_of(outline_);
   for (double x = b.low.x(); x < b.high.x() - 1e-9; x += kTileSize)
     for (double z = b.low.y(); z < b.high.y() - 1e-9; z += kTileSize) {
-      const Polygon square = make_ccw({{x, z}, {std::min(x + kTileSize, b.high.x()), z},
-                                       {std::min(x + kTileSize, b.high.x()), std::min(z + kTileSize, b.high.y())},
-                                       {x, std::min(z + kTileSize, b.high.y())}});
-      for (const Polygon& part : intersect(outline_, square))
-        for (const Polygon& convex : convex_parts(part)) add_tile(world, convex);
+      cells_.push_back(make_ccw({{x, z}, {std::min(x + kTileSize, b.high.x()), z},
+                                 {std::min(x + kTileSize, b.high.x()), std::min(z + kTileSize, b.high.y())},
+                                 {x, std::min(z + kTileSize, b.high.y())}}));
+      tile_cell(world, static_cast<int>(cells_.size()) - 1);
     }
 }
 
@@ -88,8 +87,10 @@ std::vector<const btCollisionObject*> AnalyticSheet::prism_bodies(const World& w
   return out;
 }
 
-void AnalyticSheet::add_tile(World& world, const Polygon& outline) {
-  tiles_.push_back(Tile{outline, world.add_static_prism(outline, bottom_, thickness_, friction_)});
+void AnalyticSheet::tile_cell(World& world, int cell) {
+  for (const Polygon& part : intersect(outline_, cells_[cell]))
+    for (const Polygon& convex : convex_parts(part))
+      tiles_.push_back(Tile{convex, world.add_static_prism(convex, bottom_, thickness_, friction_), cell});
 }
 
 std::pair<Eigen::Vector3d, Eigen::Vector3d> AnalyticSheet::step(const Scene& scene, World& world,
@@ -174,34 +175,31 @@ bool AnalyticSheet::cut(World& world, SheetBreakRecord record) {
   outline_ = cut.sheet;
   record.broken_area = area(before) - area(outline_);
 
-  // the fixed prisms the ice that left crosses (the pieces and the slivers): replaced by their convex parts that
-  // are still sheet
+  // the cells the ice that left crosses (the pieces and the slivers): each whose sheet changed is partitioned
+  // again from its square, its prisms replaced
   Box reach = box_of(Polygon{contact.centre});
   for (const Polygon& p : subtract(before, outline_)) {
     const Box b = box_of(p);
     reach.low = reach.low.cwiseMin(b.low), reach.high = reach.high.cwiseMax(b.high);
   }
+  std::vector<double> had(cells_.size(), 0.0);  // m^2, each cell's prisms
+  for (const Tile& t : tiles_) had[t.cell] += area(t.outline);
+  std::vector<int> changed;
+  for (int c = 0; c < static_cast<int>(cells_.size()); ++c) {
+    if (had[c] <= 0 || !reach.meets(box_of(cells_[c]))) continue;
+    double left = 0;
+    for (const Polygon& p : intersect(cells_[c], outline_)) left += area(p);
+    if (std::abs(left - had[c]) > 1e-9 * area(cells_[c])) changed.push_back(c);
+  }
   std::vector<Tile> kept;
-  std::vector<Polygon> replaced;
   for (Tile& t : tiles_) {
-    if (!reach.meets(box_of(t.outline))) {
+    if (std::binary_search(changed.begin(), changed.end(), t.cell))
+      world.remove_static(t.body);
+    else
       kept.push_back(std::move(t));
-      continue;
-    }
-    // the tile's part that is still sheet
-    const std::vector<Polygon> left = intersect(t.outline, outline_);
-    double left_area = 0;
-    for (const Polygon& p : left) left_area += area(p);
-    if (std::abs(left_area - area(t.outline)) <= 1e-9 * area(t.outline)) {
-      kept.push_back(std::move(t));
-      continue;
-    }
-    world.remove_static(t.body);
-    for (const Polygon& p : left) replaced.push_back(p);
   }
   tiles_ = std::move(kept);
-  for (const Polygon& p : replaced)
-    for (const Polygon& convex : convex_parts(p)) add_tile(world, convex);
+  for (const int c : changed) tile_cell(world, c);
 
   // the pieces: under a hull's zone less the crushed ice, all that lies short of the line across the load that
   // touches the hull's larger section (straight, where the hull's circle would leave a concave face of many

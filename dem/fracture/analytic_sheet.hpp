@@ -3,8 +3,8 @@
 // of elements (docs/model/breakage.md, "Level ice cut by closed forms").
 //
 // The sheet is held where it lies, as the lattice's sheet is beyond its radius: an obstacle for the floes in
-// Bullet, as fixed convex prisms (kBoundary, like the mother ice) that start as squares of kTileSize and are
-// cut with it. Each Bullet step, after the load cell has read the contacts:
+// Bullet, as fixed convex prisms (kBoundary, like the mother ice): the sheet within each square cell of
+// kTileSize, as its fewest convex parts. Each Bullet step, after the load cell has read the contacts:
 //   1. the hull's crushed zones at the sheet's edge and their loads (sheet_contact.hpp); the crushing force
 //      is an impulse on the structure that no Bullet contact carries, added to the load cell;
 //   2. the floes' loads on the sheet's edge over the step, each floe's a patch (sheet_floe_load.hpp): the rubble
@@ -13,8 +13,10 @@
 //      the broken ice, less the crushed ice under a zone (all short of the line across the load that touches the hull's
 //      larger section: the hull's overlap and the slivers beside it), leaves as rigid floes at
 //      rest at the sheet's draft, a non-convex piece as its convex parts (convex_partition.hpp), a piece
-//      smaller than kSmallestPiece thickness squared or narrower than the thickness counted as crushed; the prisms the cut crossed are
-//      replaced by their convex parts outside it. The pieces can split again as rigid floes do
+//      smaller than kSmallestPiece thickness squared or narrower than the thickness counted as crushed; each cell the
+//      cut reached is partitioned again, from its square's sheet: its prisms are not cut again and again, which
+//      left fans of slivers along the broken channel's sides (a piece of 0.13 m under the sheet touched some 30 of
+//      them, and the sheet's contacts were most of the solve's rows). The pieces can split again as rigid floes do
 //      (fracture_split.hpp). The zones and patches are found again after a cut, until none breaks; a patch
 //      that broke the sheet is spent (its floe's push left with the piece).
 #pragma once
@@ -33,7 +35,7 @@
 
 namespace icedem {
 
-/// Side of the square prisms the sheet starts as, m: a cut replaces the few it crosses.
+/// Side of the square cells the sheet's prisms are made in, m: a cut partitions again the few it reaches.
 constexpr double kTileSize = 1.0;
 /// Pieces smaller than this many ice thicknesses squared, or narrower anywhere than the ice is thick, are crushed
 /// ice, not floes: a block no wider than the ice is thick is rubble of crushing, and a body that small or thin is
@@ -77,16 +79,19 @@ class AnalyticSheet {
   struct Tile {
     Polygon outline;
     int body = -1;  // in World::bodies()
+    int cell = -1;  // in cells_
   };
   // cut the sheet as `record` says (its load, plan and, for a hull's zone, the hull, whose crushed ice does not
   // become floes), make the pieces floes and keep the record with what broke off; false where no ice lay within
   // the crack (nothing done)
   bool cut(World& world, SheetBreakRecord record);
-  void add_tile(World& world, const Polygon& outline);
+  // the cell's prisms: the sheet within its square as convex parts
+  void tile_cell(World& world, int cell);
   // the prisms' bodies, sorted (what floe_loads_on_prisms reads)
   std::vector<const btCollisionObject*> prism_bodies(const World& world) const;
 
   Polygon outline_;
+  std::vector<Polygon> cells_;  // the squares of kTileSize over the sheet at the start
   std::vector<Tile> tiles_;
   std::vector<SheetBreakRecord> breaks_;
   std::vector<Polygon> outlines_after_;  // per break, for the output
