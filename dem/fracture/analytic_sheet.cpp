@@ -70,7 +70,7 @@ AnalyticSheet::AnalyticSheet(const Scene& scene, World& world, const Polygon& ou
       cells_.push_back(make_ccw({{x, z}, {std::min(x + kTileSize, b.high.x()), z},
                                  {std::min(x + kTileSize, b.high.x()), std::min(z + kTileSize, b.high.y())},
                                  {x, std::min(z + kTileSize, b.high.y())}}));
-      tile_cell(world, static_cast<int>(cells_.size()) - 1);
+      tile_cell(world, static_cast<int>(cells_.size()) - 1, intersect(outline_, cells_.back()));
     }
 }
 
@@ -87,8 +87,8 @@ std::vector<const btCollisionObject*> AnalyticSheet::prism_bodies(const World& w
   return out;
 }
 
-void AnalyticSheet::tile_cell(World& world, int cell) {
-  for (const Polygon& part : intersect(outline_, cells_[cell]))
+void AnalyticSheet::tile_cell(World& world, int cell, const std::vector<Polygon>& sheet_in_cell) {
+  for (const Polygon& part : sheet_in_cell)
     for (const Polygon& convex : convex_parts(part))
       tiles_.push_back(Tile{convex, world.add_static_prism(convex, bottom_, thickness_, friction_), cell});
 }
@@ -185,11 +185,15 @@ bool AnalyticSheet::cut(World& world, SheetBreakRecord record) {
   std::vector<double> had(cells_.size(), 0.0);  // m^2, each cell's prisms
   for (const Tile& t : tiles_) had[t.cell] += area(t.outline);
   std::vector<int> changed;
+  std::vector<std::vector<Polygon>> changed_sheet;  // each changed cell's sheet now
   for (int c = 0; c < static_cast<int>(cells_.size()); ++c) {
     if (had[c] <= 0 || !reach.meets(box_of(cells_[c]))) continue;
-    double left = 0;
-    for (const Polygon& p : intersect(cells_[c], outline_)) left += area(p);
-    if (std::abs(left - had[c]) > 1e-9 * area(cells_[c])) changed.push_back(c);
+    std::vector<Polygon> left = intersect(outline_, cells_[c]);
+    double left_area = 0;
+    for (const Polygon& p : left) left_area += area(p);
+    if (std::abs(left_area - had[c]) <= 1e-9 * area(cells_[c])) continue;
+    changed.push_back(c);
+    changed_sheet.push_back(std::move(left));
   }
   std::vector<Tile> kept;
   for (Tile& t : tiles_) {
@@ -199,7 +203,7 @@ bool AnalyticSheet::cut(World& world, SheetBreakRecord record) {
       kept.push_back(std::move(t));
   }
   tiles_ = std::move(kept);
-  for (const int c : changed) tile_cell(world, c);
+  for (std::size_t k = 0; k < changed.size(); ++k) tile_cell(world, changed[k], changed_sheet[k]);
 
   // the pieces: under a hull's zone less the crushed ice, all that lies short of the line across the load that
   // touches the hull's larger section (straight, where the hull's circle would leave a concave face of many

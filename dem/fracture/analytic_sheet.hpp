@@ -85,8 +85,8 @@ class AnalyticSheet {
   // become floes), make the pieces floes and keep the record with what broke off; false where no ice lay within
   // the crack (nothing done)
   bool cut(World& world, SheetBreakRecord record);
-  // the cell's prisms: the sheet within its square as convex parts
-  void tile_cell(World& world, int cell);
+  // the cell's prisms: `sheet_in_cell` (the sheet within its square) as convex parts
+  void tile_cell(World& world, int cell, const std::vector<Polygon>& sheet_in_cell);
   // the prisms' bodies, sorted (what floe_loads_on_prisms reads)
   std::vector<const btCollisionObject*> prism_bodies(const World& world) const;
 
