@@ -506,6 +506,10 @@ std::vector<KeySpec> make_keys() {
                    "activation region: distance ahead of the structure axis where no floe is frozen"));
   k.push_back(real("activation.region_behind", "m", 2.0, 0.0, 1.0e4,
                    "activation region: distance behind the structure axis where no floe is frozen"));
+  k.push_back(real("activation.leave_behind", "m", 0.0, 0.0, 1.0e4,
+                   "rigid floes lying wholly farther than this behind the structure axis leave the run for good "
+                   "(dem/activation/left_behind.hpp): the channel far behind costs nothing, but beyond it "
+                   "pushes nothing back; 0: none leaves (docs/model/breakage.md, \"The jam\": how far is far enough)"));
 
   // output
   k.push_back(real("output.snapshot_interval", "s", 1.0, 0.0, 1.0e6,

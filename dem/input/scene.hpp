@@ -202,6 +202,7 @@ struct ActivationSettings {
   bool freeze_outside_region;  // resting floes outside the region become fixed obstacles
   double region_ahead;         // m ahead of the structure axis
   double region_behind;        // m behind it
+  double leave_behind;         // m behind the structure axis past which rigid floes leave the run; 0: never
 };
 
 struct OutputSettings {

@@ -462,6 +462,7 @@ Scene make_scene(const Scenario& sc) {
   s.activation.freeze_outside_region = get<bool>(sc, "activation.freeze_outside_region");
   s.activation.region_ahead = real(sc, "activation.region_ahead");
   s.activation.region_behind = real(sc, "activation.region_behind");
+  s.activation.leave_behind = real(sc, "activation.leave_behind");
   // a floe touching the hull must never be frozen: the solver cannot resolve a
   // contact between the kinematic hull and a fixed obstacle
   double hull_radius = 0;
@@ -471,6 +472,10 @@ Scene make_scene(const Scenario& sc) {
     if (s.activation.freeze_outside_region && real(sc, key) < reach)
       fail_key(sc, key, fmt::format("must be at least the hull radius plus a floe diagonal ({:.3f} m), so that "
                                     "no floe touching the structure is frozen", reach));
+  if (s.activation.leave_behind > 0 && s.activation.leave_behind < hull_radius)
+    fail_key(sc, "activation.leave_behind",
+             fmt::format("must be 0 or at least the hull's largest radius ({:.3f} m), so that no floe touching the "
+                         "structure leaves the run", hull_radius));
 
   s.output.snapshot_interval = real(sc, "output.snapshot_interval");
   s.output.checkpoint_interval = real(sc, "output.checkpoint_interval");

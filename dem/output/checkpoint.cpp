@@ -120,6 +120,7 @@ void write_world(const H5::Group& g, const WorldState& world) {
   write_records(g, "lattice_replaced", world.lattice_replaced);
   write_records(g, "joint_broken", world.joint_broken);
   write_records(g, "floe_splits", world.splits);
+  write_records(g, "floes_left", world.left);
   std::vector<ManifoldRow> rows;
   std::vector<btManifoldPoint> points;
   std::vector<int> has_memory;
@@ -142,6 +143,7 @@ WorldState read_world(const H5::Group& g, const std::string& path) {
   world.lattice_replaced = read_records<uint8_t>(g, "lattice_replaced", path);
   world.joint_broken = read_records<uint8_t>(g, "joint_broken", path);
   world.splits = read_records<FloeSplit>(g, "floe_splits", path);
+  if (g.nameExists("floes_left")) world.left = read_records<int>(g, "floes_left", path);  // not before leave_behind
   const std::vector<ManifoldRow> rows = read_records<ManifoldRow>(g, "manifolds", path);
   const std::vector<btManifoldPoint> points = read_records<btManifoldPoint>(g, "contact_points", path);
   const std::vector<int> has_memory = read_records<int>(g, "friction_remembered", path);

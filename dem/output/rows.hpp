@@ -54,6 +54,7 @@ enum BodyActivity : uint8_t {
   kBodyAsleep = 0,  // at rest, not solved
   kBodyAwake = 1,   // being solved
   kBodyGone = 2,    // split into pieces (later bodies whose /bodies/parent names it): no longer in the run
+  kBodyLeft = 3,    // left behind the structure (activation.leave_behind): no longer in the run, where it lay
 };
 
 /// The pose of one body at a snapshot.

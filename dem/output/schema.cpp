@@ -99,7 +99,8 @@ const std::vector<DatasetEntry>& other_datasets() {
       {"/snapshots/rows/orientation", "m x 4", Element::f8, "1",
        "body-to-tank rotation as a unit quaternion (w, x, y, z)"},
       {"/snapshots/rows/awake", "m", Element::u1, "1", "1 if the body was awake (being solved), 0 at rest, 2 gone: split into the pieces whose /bodies/parent "
-       "names it (a body has no row before it is born)"},
+       "names it (a body has no row before it is born), 3 left behind the structure (activation.leave_behind), out of "
+       "the run where it lay"},
       {"/snapshots/mooring_lines", fmt::format("k x lines x {} x 3", kMooringShapePoints), Element::f8, "m",
        fmt::format("moored: each mooring line's shape at the snapshot, {} points from its anchor to its fairlead "
                    "(the catenary solved for the structure's pose; the linear mooring: one straight line from the "

@@ -21,8 +21,9 @@
 namespace icedem {
 
 /// Version of the file layout, written to /meta format_version. 2: /bodies grows as floes split
-/// (with /bodies/parent and /bodies/born), and a snapshot row's awake flag may be 2, gone.
-inline constexpr int kOutputFormatVersion = 2;
+/// (with /bodies/parent and /bodies/born), and a snapshot row's awake flag may be 2, gone. 3: the flag may be
+/// 3, left behind (activation.leave_behind).
+inline constexpr int kOutputFormatVersion = 3;
 
 /// Points per mooring line in /snapshots/mooring_lines: chords of about 0.27 m on the default 4.06 m
 /// lines, which miss their sag by about a centimetre (L_chord^2 w / (8 H)), a picture's accuracy.

@@ -87,6 +87,7 @@ WorldState capture_world(const World& world) {
   }
   for (const DormantLattice& l : world.lattices()) s.lattice_replaced.push_back(l.replaced ? 1 : 0);
   s.splits = world.splits();
+  s.left = world.left_floes();
   for (const IceJoint& j : world.joints()) s.joint_broken.push_back(j.constraint ? 0 : 1);
 
   const auto index = body_indices(world);
@@ -128,6 +129,18 @@ void restore_world(World& world, const WorldState& s) {
   // the split floes' pieces first, in the order they were made: they are bodies of the state (those made
   // already, among the analytic sheet's breaks, the state's first splits)
   replay_splits(world, s.splits, s.splits.size());
+  // the floes that had left the run, out of it again (pieces made above, or floes of the layout)
+  for (int i : s.left) {
+    if (i < 0 || i >= static_cast<int>(world.floes().size()))
+      throw InputError(fmt::format("the checkpoint has body {} leave the run, the scene builds {} ice bodies: it is "
+                                   "not this scene's", i, world.floes().size()));
+    try {
+      world.leave_run(i);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("the checkpoint's body {} left the run, but in the rebuilt world {}: it is not "
+                                   "this scene's checkpoint", i, e.what()));
+    }
+  }
   const auto& bodies = world.bodies();
   if (s.bodies.size() != bodies.size() || s.lattice_replaced.size() != world.lattices().size() ||
       s.joint_broken.size() != world.joints().size())

@@ -45,6 +45,7 @@ struct WorldState {
   std::vector<uint8_t> lattice_replaced;  // per World::lattices(): its elements are in the world
   std::vector<uint8_t> joint_broken;      // per World::joints()
   std::vector<FloeSplit> splits;          // World::splits(): the rebuilt world makes the same pieces
+  std::vector<int> left;                  // World::left_floes(): the floes that left the run, in order
   std::vector<ManifoldState> manifolds;
 };
 

@@ -144,7 +144,10 @@ std::vector<BodyPose> body_poses(const World& world) {
   for (const FloeBody& f : world.floes()) {
     if (f.stand_in) continue;  // its elements are the output bodies
     const Eigen::Isometry3d pose = output_pose(world, f);
-    const uint8_t activity = f.gone ? kBodyGone : output_awake(world, f) ? kBodyAwake : kBodyAsleep;
+    const uint8_t activity = f.gone   ? kBodyGone
+                             : f.left ? kBodyLeft
+                             : output_awake(world, f) ? kBodyAwake
+                                                      : kBodyAsleep;
     poses.push_back(BodyPose{pose.translation(), Eigen::Quaterniond(pose.linear()), activity});
   }
   return poses;

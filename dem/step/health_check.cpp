@@ -89,7 +89,8 @@ StepDiagnostics check_health(const Scene& scene, const State& state) {
   for (const FloeBody& floe : state.world->floes()) {
     if (state.world->in_dormant_lattice(floe)) continue;  // its stand-in counts
     const btRigidBody& body = *floe.body;
-    if (liveness(body) == Liveness::kOutside) continue;  // any other body out of the world (a split floe)
+    // any other body out of the world (a split floe), but for ice left behind, which is still in the tank
+    if (liveness(body) == Liveness::kOutside && !floe.left) continue;
     if (tank.contains(to_eigen(body.getCenterOfMassPosition()))) d.ice_mass += floe.shape->mass;
   }
   // the awake ones (a sleeping body does not move), in the floes' order

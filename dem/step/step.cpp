@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "dem/activation/activation.hpp"
+#include "dem/activation/left_behind.hpp"
 #include "dem/activation/reach.hpp"
 #include "dem/fracture/fracture.hpp"
 #include "dem/fracture/fracture_split.hpp"
@@ -177,7 +178,11 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   }
   state.load = cell.finish(scene.time.dt);
   const double boundary_load = boundary.finish(scene.time.dt);
-  { StageTimer t(times.activation); update_activation(scene, state.structure_position, *state.world); }
+  {
+    StageTimer t(times.activation);
+    update_activation(scene, state.structure_position, *state.world);
+    leave_behind(scene, state.structure_position, *state.world);
+  }
   state.awake_floes = state.world->awake_floes();
   state.contact_points = state.world->contact_points();
   if (!state.first_contact_time && state.load.contacts > 0) state.first_contact_time = state.time;

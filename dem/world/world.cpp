@@ -434,6 +434,24 @@ std::array<int, 2> World::split_floe(const FloeSplit& split) {
   return pieces;
 }
 
+void World::leave_run(int index) {
+  if (index < 0 || index >= static_cast<int>(floes_.size()) || floes_[index].fragment >= 0 ||
+      floes_[index].stand_in || floes_[index].lattice >= 0 || floes_[index].gone || floes_[index].left ||
+      (!floes_[index].body->isInWorld() && !unreached_.contains(index)))
+    throw std::invalid_argument(fmt::format("leave_run: body {} is not a rigid floe in play", index));
+  FloeBody& floe = floes_[index];
+  if (floe.frozen) unfreeze(floe);
+  btRigidBody& body = *floe.body;
+  body.setLinearVelocity(btVector3(0, 0, 0));
+  body.setAngularVelocity(btVector3(0, 0, 0));
+  // a checkpoint's rebuilt world may keep it out until reached, where the run had it in the world
+  if (unreached_.contains(index)) unreached_.remove(index);
+  else dynamics_->removeRigidBody(&body);  // its broadphase proxy, and with it its pairs and manifolds
+  body.forceActivationState(DISABLE_SIMULATION);
+  floe.left = true;
+  left_.push_back(index);
+}
+
 void World::freeze(FloeBody& floe) {
   btRigidBody& b = *floe.body;
   b.setLinearVelocity(btVector3(0, 0, 0));

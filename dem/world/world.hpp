@@ -62,6 +62,7 @@ struct FloeBody {
   int lattice = -1;        // index into World::lattices() for a floe with a lattice region, else -1
   int parent = -1;         // a piece of a split floe: the index of the floe it was split from, else -1
   bool gone = false;       // split into pieces: out of the run for good
+  bool left = false;       // left behind the structure (activation.leave_behind): out of the run for good, where it lay
 };
 
 /// A rigid floe split in two along a straight crack (fracture.mode = "analytic",
@@ -176,6 +177,14 @@ class World {
 
   /// The splits so far, in order.
   const std::vector<FloeSplit>& splits() const { return splits_; }
+
+  /// Rigid floe `index` leaves the run for good where it lies (dem/activation/left_behind.hpp): out of
+  /// Bullet's world, its contacts gone with it, its pose kept. Throws std::invalid_argument if it is not a
+  /// whole rigid floe or piece in the world.
+  void leave_run(int index);
+
+  /// The floes that left the run so far (leave_run), in order: a checkpoint's world takes them out again.
+  const std::vector<int>& left_floes() const { return left_; }
 
   /// The shape of bodies with this outline (made once, owned by the world).
   const FloeShape& shape(const Polygon& outline) { return shapes_.get(outline); }
@@ -316,6 +325,7 @@ class World {
   std::vector<DormantLattice> lattices_;
   std::optional<LevelSheet> level_sheet_;
   std::vector<FloeSplit> splits_;
+  std::vector<int> left_;
   UnreachedFloes unreached_;
   std::unique_ptr<btOverlapFilterCallback> fragment_filter_;
   btRigidBody* structure_ = nullptr;

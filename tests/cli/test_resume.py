@@ -225,6 +225,26 @@ with h5py.File("moored_full.h5", "r") as f:
 killed_and_resumed("moored_killed.h5", 25.0, scenario, moored_options, moored_full, "the moored run",
                    "the structure's motions and the mooring's load")
 
+# floes left behind (activation.leave_behind): the short tow started 1 m past its field's end and towed away
+# from it, every floe in the world from the start, so that the line 2.5 m behind the cone sweeps the field and
+# its floes leave the run a few at a time, before and after the checkpoint at 15 s; the resumed world takes out
+# those that had left
+left_options = every + ["--set", "structure.start_x=11.0", "--set", "activation.leave_behind=2.5",
+                        "--set", "activation.unreached_out_of_world=false", "--set", "output.snapshot_interval=1"]
+p = run("run", scenario, "-q", "-o", "left_full.h5", *left_options)
+left_full = contents("left_full.h5")
+sys.path.insert(0, os.path.join(src, "tools"))
+from icedem_tools.runs import results  # noqa: E402
+with h5py.File("left_full.h5", "r") as f:
+    _, _, awake = results.snapshot_field(f)
+    left = (awake == results.LEFT).sum(axis=1)
+    times = f["snapshots/time"][:]
+    check(p.returncode == 0 and left[times < 15].max() > 0 and left[-1] > left[times < 15].max()
+          and left[-1] == awake.shape[1], f"floes leave before and after t = 15 s, every one by the end "
+          f"({left[times < 15].max()} by 15 s, {left[-1]} of {awake.shape[1]})")
+killed_and_resumed("left_killed.h5", 15.0, scenario, left_options, left_full, "the run leaving floes behind",
+                   "the floes that had left")
+
 # an output lost after the kill: its checkpoint alone resumes it
 name = "lost.h5"
 check(killed_at(name, 25.0), "killed after its checkpoint at t = 25 s")

@@ -2,8 +2,11 @@
 // and a disturbance wakes only the floes it touches. Bullet builds sleeping islands from
 // overlapping bounding boxes, which joins a whole 75 % field into one island
 // (docs/model/bullet.md); the contact island manager joins only touching floes.
+// Floes far behind the structure leave the run (dem/activation/left_behind) and stay ice in the tank.
 #include <gtest/gtest.h>
 
+#include "dem/core/errors.hpp"
+#include "dem/step/health_check.hpp"
 #include "dem/step/initial_state.hpp"
 #include "dem/step/step.hpp"
 #include "tests/support/scenes.hpp"
@@ -184,4 +187,52 @@ TEST(Freezing, SlowContactDoesNotReleaseAFrozenFloe) {
   }
   EXPECT_TRUE(target.frozen);
   EXPECT_EQ(target.body->getCenterOfMassPosition().x(), x0);
+}
+
+// activation.leave_behind (dem/activation/left_behind.hpp): a rigid floe leaves the run when all of it lies
+// farther than the distance behind the structure's axis; one across the line stays. The structure stands 1 m
+// ahead of the field (its hull clear of it) and the line is 2.5 m behind it, 1.5 m into the 3 m field
+TEST(LeftBehind, FloesWhollyBehindTheLineLeaveTheRunAndStayIce) {
+  const Scene scene = scene_from(kField, {"structure.start_x=4.0", "activation.leave_behind=2.5",
+                                          "activation.unreached_out_of_world=false"});
+  State state = initial_state(scene, scene_layout(scene).floes);
+  std::vector<char> behind;
+  for (const FloeBody& f : state.world->floes()) {
+    btVector3 lo, hi;
+    f.body->getCollisionShape()->getAabb(f.body->getWorldTransform(), lo, hi);
+    behind.push_back(hi.x() < 4.0 - 2.5 ? 1 : 0);
+  }
+  const double mass = check_health(scene, state).ice_mass;
+  step(scene, state);
+  int left = 0;
+  for (std::size_t i = 0; i < behind.size(); ++i) {
+    const FloeBody& f = state.world->floes()[i];
+    EXPECT_EQ(f.left, behind[i] != 0) << "floe " << i;
+    EXPECT_EQ(f.body->isInWorld(), !f.left) << "floe " << i;
+    left += f.left;
+  }
+  EXPECT_GT(left, 0);
+  EXPECT_LT(left, static_cast<int>(behind.size()));
+  EXPECT_EQ(state.world->left_floes().size(), static_cast<std::size_t>(left));
+  // the floes that left are still ice in the tank: the mass the health check counts is unchanged (to round-off
+  // of the sum's order)
+  EXPECT_NEAR(state.diagnostics.ice_mass, mass, 1e-12 * mass);
+}
+
+// a floe that nothing has reached waits out of the world where the layout put it: it does not leave
+TEST(LeftBehind, FloesKeptOutUntilReachedDoNotLeave) {
+  const Scene scene = scene_from(kField, {"structure.start_x=4.0", "activation.leave_behind=2.5"});
+  State state = initial_state(scene, scene_layout(scene).floes);
+  step(scene, state);
+  EXPECT_TRUE(state.world->left_floes().empty());
+}
+
+// a distance the hull reaches past would take out a floe the structure touches: refused, naming the key
+TEST(LeftBehind, ADistanceInsideTheHullIsRefused) {
+  try {
+    scene_from(kField, {"activation.leave_behind=0.3"});
+    FAIL() << "activation.leave_behind = 0.3 m, inside the hull, was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("activation.leave_behind"), std::string::npos) << e.what();
+  }
 }

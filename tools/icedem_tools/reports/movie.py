@@ -166,7 +166,7 @@ def draw(run, frames, path, fps, span):
             top_ax.add_collection(PolyCollection([sheet_at(sheet, t)], facecolors="0.85", edgecolors="0.5",
                                                  linewidths=0.5, zorder=0))
         present = [b for b in range(len(top)) if awake[b] != ABSENT]
-        colours = [(*floe_colour[b][:3], 1.0 if awake[b] else 0.45) for b in present]
+        colours = [(*floe_colour[b][:3], 1.0 if awake[b] == 1 else 0.45) for b in present]
         top_ax.add_collection(PolyCollection([top[b] for b in present], facecolors=colours, edgecolors="0.2",
                                              linewidths=0.3))
         side_ax.add_collection(PolyCollection([side[b] for b in present], facecolors=colours, edgecolors="0.2",

@@ -90,6 +90,7 @@ class RunFile:
 
 
 ABSENT = 2  # /snapshots/rows/awake of a body not in the run: gone (split), or born later
+LEFT = 3  # /snapshots/rows/awake of a floe left behind the structure (activation.leave_behind): ice still there
 
 
 def snapshot_field(f):
@@ -98,7 +99,8 @@ def snapshot_field(f):
     bodies whose pose or awake flag changed since the snapshot before (the first stores every
     body): each body keeps its latest row. A body not in the run at a snapshot has awake 2: one
     born later (a piece of a floe that splits, /bodies/born) with no row yet, at the origin
-    unrotated, or one gone (split into pieces), at its last pose."""
+    unrotated, or one gone (split into pieces), at its last pose; a floe left behind the structure
+    (activation.leave_behind) has awake 3 where it left the run."""
     k = len(f["/snapshots/time"])
     nb = len(f["/bodies/floe_id"])
     end = f["/snapshots/end_row"][:k]

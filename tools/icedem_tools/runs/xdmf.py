@@ -4,7 +4,8 @@ prisms in the tank frame (top and bottom faces, m), the XDMF a temporal
 collection of grids over them with each body's floe id and awake flag as cell
 data. Open RUN.xdmf in ParaView (XDMF reader). Awake is 0 at rest, 1 awake and 2
 for a body not in the run at that snapshot (a floe split into pieces, or a piece not
-yet made, fracture.mode = "analytic"): threshold awake below 2 to hide them.
+yet made, fracture.mode = "analytic"): threshold awake below 2 to hide them; 3 for a floe left
+behind the structure (activation.leave_behind), out of the run where it left.
 
 A run with breakable floes gets a second grid per snapshot, "joints": the glued
 face of every joint (a quadrilateral across the ice's thickness, on its first
