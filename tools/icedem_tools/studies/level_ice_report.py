@@ -5,9 +5,12 @@ characteristic-length estimate of the breaking length. Reported, not tuned: the 
 are upper references (ISO's over-predicted 50 field events by a factor of about 1.6).
 
     scripts/level_ice_report SWEEP.toml [--out DIR] [--icedem PATH] [--report PAGE.md]
+                             [--analytic SWEEP.toml [--analytic-out DIR]]
 
 --out is the sweep's run directory (default sweeps/<name>); finished runs count (or their kept
-records), so it can report while the sweep runs. Without --report the page is printed."""
+records), so it can report while the sweep runs. Without --report the page is printed. --analytic adds
+the tows of the sheet cut by closed forms over their starts (studies/level_ice_analytic.py), their runs in
+--analytic-out (default sweeps/<its name>)."""
 import os
 import tomllib
 
@@ -15,6 +18,7 @@ import numpy as np
 
 from ..sweeps import aggregate as agg, execute
 from ..runs import pieces, spec
+from . import level_ice_analytic
 from ..reports import report_sweeps
 from ..reports.report_tables import fmt
 
@@ -53,8 +57,9 @@ def breaking_lengths(record):
     return np.array([e["distance"] for e in record.get("fracture_events", []) if "distance" in e], dtype=float)
 
 
-def page(sweep, out, icedem):
-    """The page's Markdown lines for the sweep file `sweep` with its runs in `out`."""
+def page(sweep, out, icedem, analytic=None, analytic_out=None):
+    """The page's Markdown lines for the sweep file `sweep` with its runs in `out`, and, with `analytic`
+    (a sweep file of analytic tows, runs in `analytic_out`), their section."""
     name, runs = spec.load(sweep)
     L = [f"# {name}: level ice against ISO 19906 and Ralston", "",
          f"Runs of `{os.path.relpath(sweep, spec.ROOT)}` finished so far (`scripts/level_ice_report`). "
@@ -121,12 +126,23 @@ def page(sweep, out, icedem):
           "their true areas and equivalent diameters, and the share of the broken-off area in pieces of one "
           "element, the lattice's grain.", ""]
     L += pieces.table(piece_rows)
-    return L + [""]
+    L += [""]
+    if analytic:
+        L += level_ice_analytic.section(analytic, analytic_out, lambda run: design_loads(icedem, run))
+    return L
 
 
 def main(argv=None):
     def options(ap):
         ap.add_argument("--icedem", default=execute.DEFAULT_ICEDEM, help="the build whose `cone-load` gives the "
                         "design loads (default build/dem/icedem)")
-    return report_sweeps.page_command(argv, __doc__, "the sweep file of level-ice runs",
-                                      lambda sweep, out, args: page(sweep, out, args.icedem), options)
+        ap.add_argument("--analytic", help="a sweep file of analytic level tows over starts "
+                        "(sweeps/studies/level_ice_analytic.toml): their section")
+        ap.add_argument("--analytic-out", help="its run directory (default: sweeps/<its name>)")
+
+    def make(sweep, out, args):
+        analytic = os.path.abspath(args.analytic) if args.analytic else None
+        analytic_out = (os.path.abspath(args.analytic_out) if args.analytic_out else
+                        os.path.join(spec.ROOT, "sweeps", spec.load(analytic)[0]) if analytic else None)
+        return page(sweep, out, args.icedem, analytic, analytic_out)
+    return report_sweeps.page_command(argv, __doc__, "the sweep file of level-ice runs", make, options)

@@ -187,11 +187,42 @@ def lowpass_maxima(t, x, inside):
     return {f"{fc:g}": float(lowpass(x, dt, fc)[inside].max()) for fc in LOWPASS_HZ}
 
 
+# the quantiles a record keeps of a level sheet's breaks and pieces (sheet_record)
+SHEET_QUANTILES = (0.1, 0.25, 0.5, 0.75, 0.9)
+
+
+def sheet_record(run):
+    """Of a run of level ice cut by closed forms (/sheet/breaks), its breaks' crack distances (x*, m) and the
+    areas they broke off, and the pieces at the run's end (the bodies no split made two of): their count, the
+    quantiles of their areas and of their equivalent diameters sqrt(4 A / pi), and the area-weighted mean
+    diameter; None for any other run. Quantiles, not lists: a tow makes hundreds of pieces and a record stays
+    a few kB."""
+    if "/sheet/breaks" not in run:
+        return None
+    b = np.asarray(run["/sheet/breaks"])
+    areas = np.asarray(pieces.body_areas(run), dtype=float)
+    parents = np.asarray(run["/bodies/parent"])
+    whole = np.ones(len(areas), dtype=bool)
+    whole[parents[parents >= 0]] = False  # split into two pieces: its pieces count instead
+    a = areas[whole]
+    d = np.sqrt(4 * a / np.pi)
+
+    def q(x):
+        return [float(f"{v:.6g}") for v in np.quantile(x, SHEET_QUANTILES)] if len(x) else []
+    return {"breaks": int(len(b)), "crack_distance_m": q(b["crack_distance"]) if len(b) else [],
+            "broken_area_m2": float(f"{b['broken_area'].sum():.6g}") if len(b) else 0.0,
+            "crushed_area_m2": float(f"{b['crushed_area'].sum():.6g}") if len(b) else 0.0,
+            "pieces": int(len(a)), "piece_area_m2": q(a), "piece_diameter_m": q(d),
+            "area_weighted_diameter_m": float(f"{(a * d).sum() / a.sum():.6g}") if a.sum() > 0 else None,
+            "quantiles": list(SHEET_QUANTILES)}
+
+
 def make_record(run_dir):
     """The record of a finished run, from its directory: its summary, the Welch spectrum of its
     surge load over the analysis window (up to RECORD_MAX_HZ), its breaks (every field of
-    /fracture/events, mode and mechanism also by name) and the sizes of the pieces they broke off
-    (pieces.summary; kept since 2026-11-27)."""
+    /fracture/events, mode and mechanism also by name), the sizes of the pieces they broke off
+    (pieces.summary; kept since 2026-11-27) and, for level ice cut by closed forms, its breaks' crack
+    distances and its pieces (sheet_record; kept since 2026-11-30)."""
     summary = results.load_summary(os.path.join(run_dir, RUN_FILES["summary"]))
     freq, power, events, window = [], [], [], {}
     run = results.load_run(os.path.join(run_dir, RUN_FILES["h5"]))
@@ -213,8 +244,12 @@ def make_record(run_dir):
         if "mechanism" in e:
             e["mechanism_name"] = str(row["mechanism_name"])
         events.append(e)
-    return {"summary": summary, "spectrum": {"frequency_hz": freq, "power_N2_per_hz": power},
-            "fracture_events": events, "window": window, "pieces": pieces.summary(*pieces.piece_areas(run))}
+    record = {"summary": summary, "spectrum": {"frequency_hz": freq, "power_N2_per_hz": power},
+              "fracture_events": events, "window": window, "pieces": pieces.summary(*pieces.piece_areas(run))}
+    sheet = sheet_record(run)
+    if sheet is not None:
+        record["sheet"] = sheet
+    return record
 
 
 # what says that a run directory holds the run a kept record was made from (load_record)

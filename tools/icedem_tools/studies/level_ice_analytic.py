@@ -1,0 +1,155 @@
+"""The analytic level tows (the sheet cut by closed forms, scenarios/level_ice/level_ice_analytic.toml) over
+an ensemble of starts, for docs/model/level_ice.md (scripts/level_ice_report --analytic SWEEP): each
+configuration's loads over its starts beside ISO 19906's and Ralston's for its cone, ice and friction, and
+what activation.leave_behind does to them, paired start by start against the tow without it.
+
+A level sheet has no random layout: the ensemble's members are one tow started a millimetre apart
+(structure.start_x), whose paths part at the first breaks (the tow is chaotic). A configuration is the
+sweep's scenario with its activation.leave_behind; its members are its starts."""
+import math
+import os
+import tomllib
+
+import numpy as np
+
+from ..runs import spec
+from ..stats import intervals, verdict
+from ..sweeps import aggregate as agg, execute
+from ..reports.report_tables import fmt
+
+START, LEAVE = "structure.start_x", "activation.leave_behind"
+CRITERIA = {"mean": "mean_fx_N", "p99": "p99_fx_N", "max": "max_fx_N"}
+
+
+def _value(record, key):
+    s, w = record["summary"], record.get("window", {})
+    v = s.get(key, w.get(key))
+    return None if v is None else float(v)
+
+
+def configurations(sweep, out):
+    """{(scenario, leave_behind m): {start_x: (run, record)}} of the sweep's finished runs."""
+    _, runs = spec.load(sweep)
+    found = {}
+    for r in runs:
+        if execute.status(r, out).state != "done":
+            continue
+        grid = dict(r.grid)
+        key = (r.scenario, float(grid.get(LEAVE, 0.0)))
+        found.setdefault(key, {})[float(grid.get(START, math.nan))] = (r, agg.load_record(r, out))
+    return found
+
+
+def thickness(run):
+    """The run's ice.thickness (m): its last --set of it, else its scenario file's; None if neither says."""
+    for s in reversed(run.sets):
+        key, _, value = s.partition("=")
+        if key.strip() == "ice.thickness":
+            return float(value)
+    try:
+        with open(run.scenario_file, "rb") as f:
+            return float(tomllib.load(f)["ice"]["thickness"])
+    except (OSError, KeyError, ValueError, tomllib.TOMLDecodeError):
+        return None
+
+
+def lc_h(configs, design_loads):
+    """(l_c, h) in m: the characteristic length `icedem cone-load` gives for the sweep's ice, and its
+    thickness; None for one that cannot be had."""
+    run = next(iter(next(iter(configs.values())).values()))[0]
+    loads, _ = design_loads(run)
+    return (loads["characteristic_length_m"] if loads else None), thickness(run)
+
+
+def sheet_table(configs, lengths):
+    """Where the sheet broke and what it broke into, per configuration: each start's median (its record's
+    sheet block, aggregate.sheet_record), averaged over the starts."""
+    lc, h = lengths
+    L = ["", "Where the sheet broke and what it broke into (each start's median, averaged over its starts): the "
+         "crack distance x* of the closed forms (docs/model/breakage.md), against the characteristic length "
+         + (f"l_c = {lc:.3f} m" if lc else "l_c") + " and the thickness h" + (f" = {h:.3f} m" if h else "")
+         + "; at the JZ20-2 platform's downward 45-degree cones the field's breaking length was about 7 h (Li, Yue, "
+         "Shkhinek and Kärnä), of ice whose l_c / h differs from the model ice's. The pieces at the tow's end "
+         "(the rigid floes broken off, each split floe counted as its two pieces; pieces smaller than h^2 or "
+         "narrower than h are crushed ice and not made): their equivalent diameters sqrt(4 A / pi) and the "
+         "area-weighted mean diameter.", "",
+         "| run | leave m | starts | breaks a tow | x* median m | x* / l_c | x* / h | pieces a tow | "
+         "diameter median m (quartiles) | area-weighted diameter m | its / l_c |",
+         "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for (scenario, leave), members in sorted(configs.items()):
+        sheets = [rec["sheet"] for _, rec in members.values() if rec.get("sheet")]
+        if not sheets:
+            continue
+        qi = sheets[0]["quantiles"].index(0.5)
+        x = np.mean([s["crack_distance_m"][qi] for s in sheets if s["crack_distance_m"]])
+        d = [np.mean([s["piece_diameter_m"][qi + k] for s in sheets if s["piece_diameter_m"]]) for k in (-1, 0, 1)]
+        w = np.mean([s["area_weighted_diameter_m"] for s in sheets if s.get("area_weighted_diameter_m")])
+        L.append(f"| {scenario} | {leave:g} | {len(sheets)} | {np.mean([s['breaks'] for s in sheets]):.0f} | "
+                 f"{x:.3f} | {fmt(x / lc if lc else None, digits=2)} | {fmt(x / h if h else None, digits=1)} | "
+                 f"{np.mean([s['pieces'] for s in sheets]):.0f} | {d[1]:.3f} ({d[0]:.3f}-{d[2]:.3f}) | {w:.3f} | "
+                 f"{fmt(w / lc if lc else None, digits=2)} |")
+    return L
+
+
+def section(sweep, out, design_loads):
+    """The page's lines on the analytic tows of `sweep` (runs in `out`); design_loads(run) is
+    (`icedem cone-load` of the run, None) or (None, why not)."""
+    L = ["## Level ice cut by closed forms", "",
+         f"Runs of `{os.path.relpath(sweep, spec.ROOT)}` finished so far: the sheet as one held body cut by closed "
+         "forms (docs/model/breakage.md, \"Level ice cut by closed forms\"), its pieces rigid floes, rigid contacts. "
+         "The tow is chaotic and the sheet has no random layout, so a configuration's members are the same tow "
+         "started a millimetre apart (structure.start_x); its loads are the mean over its starts with Student's "
+         "95 % interval (none for one start). leave m: `activation.leave_behind`, the pieces farther than it behind "
+         "the cone's axis out of the run (0: none leaves).", ""]
+    configs = configurations(sweep, out)
+    if not configs:
+        return L + ["No finished run yet.", ""]
+    L += ["| run | mu | leave m | starts | mean | p99 | max (mean of the starts') | largest max | ISO 19906 | "
+          "Ralston | largest max / ISO | breaks a tow | real time (CPU) |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for (scenario, leave), members in sorted(configs.items()):
+        recs = [rec for _, rec in members.values()]
+        run = next(iter(members.values()))[0]
+        loads, why = design_loads(run)
+        cells = []
+        for key in CRITERIA.values():
+            v = [x for x in (_value(rec, key) for rec in recs) if x is not None]
+            m, h = intervals.mean_ci(v) if v else (None, None)
+            cells.append("n/a" if m is None else f"{m:.1f}" + (f" ± {h:.1f}" if len(v) > 1 else ""))
+        largest = max((_value(rec, "max_fx_N") or 0.0) for rec in recs)
+        breaks = np.mean([rec["summary"].get("breaks", 0) for rec in recs])
+        rtf = [rec["summary"]["sim_time_s"] / rec["summary"]["cpu_time_s"] for rec in recs
+               if rec["summary"].get("cpu_time_s")]
+        iso = loads["total_N"] if loads else None
+        L.append(f"| {scenario} | {loads['friction']:g} | {leave:g} | {len(recs)} | {' | '.join(cells)} | "
+                 f"{largest:.1f} | {fmt(iso)} | {fmt(loads['ralston_total_N'] if loads else None)} | "
+                 f"{fmt(largest / iso if iso else None, digits=2)} | {breaks:.0f} | "
+                 f"{fmt(float(np.mean(rtf)) if rtf else None, digits=2)} |" if loads else
+                 f"| {scenario} | n/a | {leave:g} | {len(recs)} | {' | '.join(cells)} | {largest:.1f} | n/a ({why}) | "
+                 f"n/a | n/a | {breaks:.0f} | {fmt(float(np.mean(rtf)) if rtf else None, digits=2)} |")
+    L += sheet_table(configs, lc_h(configs, design_loads))
+    # leave_behind against none, start by start
+    changes, names = {}, {}
+    for (scenario, leave), members in sorted(configs.items()):
+        base = configs.get((scenario, 0.0))
+        if leave == 0.0 or not base:
+            continue
+        common = sorted(set(members) & set(base))
+        for label, key in CRITERIA.items():
+            a = [_value(members[s][1], key) for s in common]
+            b = [_value(base[s][1], key) for s in common]
+            pairs = [(x, y) for x, y in zip(a, b) if x is not None and y is not None]
+            if len(pairs) < 2:
+                continue
+            k = (scenario, leave, label)
+            changes[k] = verdict.judged_change([x for x, _ in pairs], [y for _, y in pairs])
+            names[k] = f"{scenario}, leave {leave:g} m: {label}"
+    L += ["", "What leaving the channel behind does, against the tow without it from the same starts (the log "
+          "ratio's change over the starts both ran, its 95 % interval and verdict, docs/model/estimators.md):", ""]
+    if not changes:
+        return L + ["No pair of starts yet.", ""]
+    L += ["| run | leave m | criterion | change | starts |", "|---|---|---|---|---|"]
+    for k in sorted(changes):
+        d, iv, word, _, n = changes[k]
+        L.append(f"| {k[0]} | {k[1]:g} | {k[2]} | {verdict.change_text((d, iv, word))} | {n} |")
+    return L + ["", verdict.family_text(changes, lambda k: names[k]), ""]
