@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -64,6 +65,16 @@ AnalyticSheet::AnalyticSheet(const Scene& scene, World& world, const Polygon& ou
       friction_(scene.friction.ice_ice),
       next_floe_id_(first_floe_id),
       sleeping_(scene.activation.sleeping) {
+  // the ice around holds the sheet at every edge but the one the structure comes in from (its nearest)
+  const Eigen::Vector2d start(scene.structure.start_x, scene.structure.start_z);
+  std::size_t way_in = 0;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < outline_.size(); ++i) {
+    const Eigen::Vector2d mid = 0.5 * (outline_[i] + outline_[(i + 1) % outline_.size()]);
+    if ((mid - start).norm() < nearest) nearest = (mid - start).norm(), way_in = i;
+  }
+  for (std::size_t i = 0; i < outline_.size(); ++i)
+    if (i != way_in) held_.push_back({outline_[i], outline_[(i + 1) % outline_.size()]});
   const Box b = box_of(outline_);
   for (double x = b.low.x(); x < b.high.x() - 1e-9; x += kTileSize)
     for (double z = b.low.y(); z < b.high.y() - 1e-9; z += kTileSize) {
@@ -170,7 +181,7 @@ bool AnalyticSheet::cut(World& world, SheetBreakRecord record) {
   plan.breaking_load = record.breaking_load;
   plan.crack_distance = record.crack_distance;
   const Polygon before = outline_;
-  const SheetCut cut = cut_sheet(outline_, contact, plan, thickness_);
+  const SheetCut cut = cut_sheet(outline_, contact, plan, thickness_, held_);
   if (cut.pieces.empty() && cut.slivers == 0) return false;
   outline_ = cut.sheet;
   record.broken_area = area(before) - area(outline_);

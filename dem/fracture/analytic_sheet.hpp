@@ -91,6 +91,7 @@ class AnalyticSheet {
   std::vector<const btCollisionObject*> prism_bodies(const World& world) const;
 
   Polygon outline_;
+  HeldEdges held_;              // the start outline's edges the ice around holds: all but the structure's way in
   std::vector<Polygon> cells_;  // the squares of kTileSize over the sheet at the start
   std::vector<Tile> tiles_;
   std::vector<SheetBreakRecord> breaks_;

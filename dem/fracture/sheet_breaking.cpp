@@ -87,7 +87,25 @@ SheetBreakPlan plan_sheet_break(const Polygon& sheet, const SheetContact& contac
   return plan;
 }
 
-SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan, double thickness) {
+namespace {
+
+// whether a vertex of `part` lies on one of the held edges (within round-off of the sheet's size: the parts'
+// boundaries there are the start outline's edges, cut by Boost.Geometry)
+bool reaches_held(const Polygon& part, const HeldEdges& held) {
+  constexpr double kOnEdge = 1e-7;  // m
+  for (const Eigen::Vector2d& v : part)
+    for (const auto& [a, b] : held) {
+      const Eigen::Vector2d e = b - a;
+      const double t = std::clamp((v - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+      if ((a + t * e - v).norm() < kOnEdge) return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan, double thickness,
+                   const HeldEdges& held) {
   const Eigen::Vector2d& c = contact.centre;
   const Eigen::Vector2d d = contact.direction;
   const Eigen::Vector2d n(-d.y(), d.x());
@@ -137,11 +155,22 @@ SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const Shee
     out.slivers += area(part) - kept;
   }
   if (left.empty()) throw std::logic_error("cut_sheet: the break takes the whole sheet");
-  const auto largest = std::max_element(left.begin(), left.end(),
-                                        [](const Polygon& a, const Polygon& b) { return area(a) < area(b); });
-  out.sheet = *largest;
-  for (auto it = left.begin(); it != left.end(); ++it)
-    if (it != largest) out.pieces.push_back(*it);
+  // the part that stays: the one the ice around holds, else the largest
+  std::vector<std::size_t> holding;
+  if (!held.empty())
+    for (std::size_t k = 0; k < left.size(); ++k)
+      if (reaches_held(left[k], held)) holding.push_back(k);
+  if (holding.size() > 1) return SheetCut{sheet, {}, 0.0};  // it would part the held sheet: it holds this step
+  const std::size_t stays =
+      holding.size() == 1 ? holding.front()
+                          : static_cast<std::size_t>(std::max_element(left.begin(), left.end(),
+                                                                      [](const Polygon& a, const Polygon& b) {
+                                                                        return area(a) < area(b);
+                                                                      }) -
+                                                     left.begin());
+  out.sheet = left[stays];
+  for (std::size_t k = 0; k < left.size(); ++k)
+    if (k != stays) out.pieces.push_back(left[k]);
   if (!plan.radial_crack) {
     out.pieces.push_back(broken);
     return out;

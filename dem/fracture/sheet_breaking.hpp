@@ -23,6 +23,8 @@
 // to the sheet by a neck that narrow leaves with the pieces.
 #pragma once
 
+#include <array>
+
 #include <Eigen/Core>
 #include <vector>
 
@@ -57,15 +59,23 @@ struct SheetBreakPlan {
 /// The plan for the zone `contact` of the sheet `sheet` (m, ccw).
 SheetBreakPlan plan_sheet_break(const Polygon& sheet, const SheetContact& contact, const SheetIce& ice);
 
+/// Where the ice around holds the sheet (m): the edges of its outline at the start that other ice or the tank's
+/// walls hold (a level sheet's sides and far end; not the edge the structure comes in from).
+using HeldEdges = std::vector<std::array<Eigen::Vector2d, 2>>;
+
 /// The sheet after a break and what broke off it.
 struct SheetCut {
-  Polygon sheet;                // m, what is left: the largest part
+  Polygon sheet;                // m, what is left: the part the ice around holds (else the largest)
   std::vector<Polygon> pieces;  // m, each one piece of ice (convex or not), ccw
   double slivers = 0;           // m^2, what was left narrower than the thickness: crushed
 };
 
 /// Cut the sheet of ice `thickness` (m) at `contact` by `plan`. No pieces (the sheet as it was) where the load is
-/// at a point of the outline that holds no ice within the crack.
-SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan, double thickness);
+/// at a point of the outline that holds no ice within the crack. Of what is left, a part that reaches one of the
+/// `held` edges stays held: only parts that reach none leave as pieces (without held edges, all but the largest
+/// leave). A cut that would leave two or more held parts is not made (the sheet holds that step): the sheet is one
+/// polygon, and making the far parts of a held sheet floes broke off tens of square metres at a time.
+SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan, double thickness,
+                   const HeldEdges& held = {});
 
 }  // namespace icedem

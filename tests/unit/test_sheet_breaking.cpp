@@ -260,3 +260,51 @@ TEST(SheetBreaking, ACutLeavesNoTongueNarrowerThanTheIce) {
 
 }  // namespace
 }  // namespace icedem
+
+namespace icedem {
+namespace {
+
+// A channel 2 m wide cut into a sheet held at its sides (z = -2 and 2) and far end (x = 10), with a strip 0.2 m
+// wide left between the channel's side and the sheet's side at z = -2: a wide floe's push near the strip breaks
+// across it. The sheet's far part beyond the strip (x < 4) still reaches the held side: without held edges it
+// would leave as a floe of several square metres (the tow's runaway: such floes broke the sheet further); with
+// them it stays and the cut, which would part the held sheet in two, is not made
+TEST(SheetBreaking, APartTheIceAroundHoldsStaysSheet) {
+  const Polygon sheet = make_ccw({{0, -2}, {10, -2}, {10, 2}, {0, 2}, {0, 1}, {4, 1}, {4, -1.8}, {0, -1.8}});
+  const HeldEdges held = {{Eigen::Vector2d(0, -2), Eigen::Vector2d(10, -2)},
+                          {Eigen::Vector2d(10, -2), Eigen::Vector2d(10, 2)},
+                          {Eigen::Vector2d(10, 2), Eigen::Vector2d(0, 2)}};
+  const SheetContact c = load_at({2.0, -1.8}, {0, -1}, 0.05);
+  SheetBreakPlan plan;
+  plan.crack_distance = 0.15;
+  plan.opening_angle = M_PI;
+  plan.radial_crack = true;
+  const SheetCut free_cut = cut_sheet(sheet, c, plan, kIce.thickness);
+  double largest_piece = 0;
+  for (const Polygon& p : free_cut.pieces) largest_piece = std::max(largest_piece, area(p));
+  EXPECT_GT(largest_piece, 0.3) << "without held edges the strip's far part leaves as a floe";
+  const SheetCut held_cut = cut_sheet(sheet, c, plan, kIce.thickness, held);
+  EXPECT_TRUE(held_cut.pieces.empty());
+  EXPECT_EQ(area(held_cut.sheet), area(sheet));
+}
+
+// The same cut with the sheet held at its far end and its other side only: the strip's far part (x < 2) reaches
+// no held edge and leaves as a floe, the held sheet stays, and the ice adds up (1e-12)
+TEST(SheetBreaking, APartReachingNoHeldEdgeLeaves) {
+  const Polygon sheet = make_ccw({{0, -2}, {10, -2}, {10, 2}, {0, 2}, {0, 1}, {4, 1}, {4, -1.8}, {0, -1.8}});
+  const HeldEdges held = {{Eigen::Vector2d(10, -2), Eigen::Vector2d(10, 2)},
+                          {Eigen::Vector2d(10, 2), Eigen::Vector2d(0, 2)}};
+  SheetBreakPlan plan;
+  plan.crack_distance = 0.15;
+  plan.opening_angle = M_PI;
+  plan.radial_crack = true;
+  const SheetCut cut = cut_sheet(sheet, load_at({2.0, -1.8}, {0, -1}, 0.05), plan, kIce.thickness, held);
+  double largest_piece = 0;
+  for (const Polygon& p : cut.pieces) largest_piece = std::max(largest_piece, area(p));
+  EXPECT_GT(largest_piece, 0.3);
+  EXPECT_GT(area(cut.sheet), 28.0);  // of 28.8 m^2: all but the strip's far part and the cut
+  EXPECT_NEAR(area(cut.sheet) + total_area(cut.pieces) + cut.slivers, area(sheet), 1e-12 * area(sheet));
+}
+
+}  // namespace
+}  // namespace icedem
