@@ -120,13 +120,15 @@ def section(sweep, out, design_loads):
         breaks = np.mean([rec["summary"].get("breaks", 0) for rec in recs])
         rtf = [rec["summary"]["sim_time_s"] / rec["summary"]["cpu_time_s"] for rec in recs
                if rec["summary"].get("cpu_time_s")]
-        iso = loads["total_N"] if loads else None
-        L.append(f"| {scenario} | {loads['friction']:g} | {leave:g} | {len(recs)} | {' | '.join(cells)} | "
-                 f"{largest:.1f} | {fmt(iso)} | {fmt(loads['ralston_total_N'] if loads else None)} | "
-                 f"{fmt(largest / iso if iso else None, digits=2)} | {breaks:.0f} | "
-                 f"{fmt(float(np.mean(rtf)) if rtf else None, digits=2)} |" if loads else
-                 f"| {scenario} | n/a | {leave:g} | {len(recs)} | {' | '.join(cells)} | {largest:.1f} | n/a ({why}) | "
-                 f"n/a | n/a | {breaks:.0f} | {fmt(float(np.mean(rtf)) if rtf else None, digits=2)} |")
+        rtf = fmt(float(np.mean(rtf)) if rtf else None, digits=2)
+        if loads:
+            iso = loads["total_N"]
+            mu = f"{loads['friction']:g}"
+            design = [fmt(iso), fmt(loads["ralston_total_N"]), fmt(largest / iso, digits=2)]
+        else:
+            mu, design = "n/a", [f"n/a ({why})", "n/a", "n/a"]
+        L.append(f"| {scenario} | {mu} | {leave:g} | {len(recs)} | {' | '.join(cells)} | {largest:.1f} | "
+                 f"{' | '.join(design)} | {breaks:.0f} | {rtf} |")
     L += sheet_table(configs, lc_h(configs, design_loads))
     # leave_behind against none, start by start
     changes, names = {}, {}
