@@ -94,11 +94,8 @@ namespace {
 bool reaches_held(const Polygon& part, const HeldEdges& held) {
   constexpr double kOnEdge = 1e-7;  // m
   for (const Eigen::Vector2d& v : part)
-    for (const auto& [a, b] : held) {
-      const Eigen::Vector2d e = b - a;
-      const double t = std::clamp((v - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-      if ((a + t * e - v).norm() < kOnEdge) return true;
-    }
+    for (const auto& [a, b] : held)
+      if (point_segment_distance(v, a, b) < kOnEdge) return true;
   return false;
 }
 

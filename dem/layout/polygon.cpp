@@ -68,15 +68,6 @@ double max_separation(const Polygon& a, const Polygon& b) {
   return std::max(max_separation_on(a, a, b), max_separation_on(b, a, b));
 }
 
-double point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& s0,
-                              const Eigen::Vector2d& s1) {
-  const Eigen::Vector2d d = s1 - s0;
-  const double len2 = d.squaredNorm();
-  double t = len2 > 0.0 ? (p - s0).dot(d) / len2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return (s0 + t * d - p).norm();
-}
-
 // smallest distance from the vertices of `from` to the edges of `to`
 double vertex_edge_distance(const Polygon& from, const Polygon& to) {
   double best = std::numeric_limits<double>::infinity();
@@ -90,6 +81,15 @@ double vertex_edge_distance(const Polygon& from, const Polygon& to) {
 }
 
 }  // namespace
+
+double point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& s0,
+                              const Eigen::Vector2d& s1) {
+  const Eigen::Vector2d d = s1 - s0;
+  const double len2 = d.squaredNorm();
+  double t = len2 > 0.0 ? (p - s0).dot(d) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return (s0 + t * d - p).norm();
+}
 
 double signed_area(const Polygon& polygon) {
   const size_t n = polygon.size();

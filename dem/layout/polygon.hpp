@@ -80,6 +80,9 @@ Eigen::Vector2d rotate(const Eigen::Vector2d& p, double yaw);
 /// world = centre + rotate(local, yaw).
 Polygon transformed(const Polygon& local, const Eigen::Vector2d& centre, double yaw);
 
+/// Distance of the point `p` from the segment s0-s1, m.
+double point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& s0, const Eigen::Vector2d& s1);
+
 /// Minimum distance between two convex polygons in m; zero if they touch or
 /// their interiors intersect.
 double distance(const Polygon& a, const Polygon& b);
