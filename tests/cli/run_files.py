@@ -11,7 +11,7 @@ def contents(path):
         f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()]).tobytes()) if isinstance(o, h5py.Dataset) else None)
         # the run's statistics, all but its own run time
         # (a number, or what a run without them says instead: "the structure never touched the ice")
-        out["/stats"] = sorted((k, v.decode() if isinstance(v, bytes) else str(v) if isinstance(v, str) else float(v))
+        out["/stats"] = sorted((k, v.decode() if isinstance(v, bytes) else v if isinstance(v, str) else float(v))
                                for k, v in f["stats"].attrs.items() if not k.endswith("time_s"))
         out["/meta/status"] = f["meta"].attrs["status"]
     return out
