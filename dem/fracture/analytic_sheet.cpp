@@ -28,7 +28,7 @@ Box box_of(const Polygon& p) {
 SheetBreakRecord break_record(const SheetContact& contact, const SheetBreakPlan& plan, double time, const World& world) {
   SheetBreakRecord r;
   r.time = time;
-  r.radial_crack = plan.radial_crack ? 1 : 0;
+  r.crack = static_cast<int32_t>(plan.crack);
   r.splits_before = static_cast<int32_t>(world.splits().size());
   r.x = contact.centre.x(), r.z = contact.centre.y();
   r.axis_x = contact.direction.x(), r.axis_z = contact.direction.y();
@@ -177,7 +177,7 @@ bool AnalyticSheet::cut(World& world, SheetBreakRecord record) {
   contact.half_width = record.half_width;
   SheetBreakPlan plan;
   plan.opening_angle = record.opening_angle;
-  plan.radial_crack = record.radial_crack != 0;
+  plan.crack = static_cast<SheetCrack>(record.crack);
   plan.breaking_load = record.breaking_load;
   plan.crack_distance = record.crack_distance;
   const Polygon before = outline_;

@@ -10,7 +10,7 @@ namespace icedem {
 struct SheetBreakRecord {
   double time = 0;                // s
   int32_t by_floe = 0;            // 1: a floe's push on the edge (sheet_floe_load.hpp); 0: the hull's crushed zone
-  int32_t radial_crack = 0;       // 1: the edge cracked radially first, its two wedges broke together
+  int32_t crack = 0;              // how the edge broke: a SheetCrack (sheet_breaking.hpp)
   int32_t pieces = 0;             // floes made
   int32_t splits_before = 0;      // floes' splits (World::splits()) before it: a checkpoint replays both in order
   double x = 0, z = 0;            // m, the load's centre (tank frame)

@@ -6,8 +6,10 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "dem/fracture/floating_plate.hpp"
+#include "dem/fracture/plate_edge_load.hpp"
 #include "dem/fracture/wedge_bending.hpp"
 #include "dem/layout/polygon_set.hpp"
 
@@ -47,6 +49,38 @@ WedgeBending wedge_at(double patch_over_l) {
                       a.crack_distance + t * (b.crack_distance - a.crack_distance)};
 }
 
+// The intact plate's crack across a patch, P_c = sigma_b h^2 / (6 m_x) at x_c (plate_edge_load.hpp), depends on
+// a / l and the Poisson ratio. A solve takes 0.1-0.4 s (its largest M_x searched along the axis), so it is solved on
+// nodes kAcrossStep apart in a / l, where P_c and x_c are smooth (P_c from 1.32 sigma_b h^2 at a point load to
+// nearly straight in a), and interpolated linearly in the load factor 1 / (6 m_x) and in x_c, within 0.1 % of the
+// solve (tests/unit/test_sheet_breaking.cpp). Past kWidestSolved the plate is Hetenyi's strip of width 2a to
+// 0.02 %: m_x = e^(-pi/4) / (2 a / l) at x_c = pi / (4 beta) = (pi / 4) sqrt(2) l.
+constexpr double kAcrossStep = 0.05;
+constexpr double kWidestSolved = 8.0;
+
+struct AcrossPatch {
+  double load_factor = 0;  // P_c / (sigma_b h^2)
+  double distance = 0;     // x_c / l
+};
+
+AcrossPatch across_node(long node, double poisson) {
+  static std::map<std::pair<double, long>, AcrossPatch> memo;
+  const auto key = std::make_pair(poisson, node);
+  if (auto it = memo.find(key); it != memo.end()) return it->second;
+  const PlateEdgeResponse r = plate_edge_response(node * kAcrossStep, poisson);
+  return memo[key] = AcrossPatch{1.0 / (6.0 * r.circumferential_moment), r.circumferential_distance};
+}
+
+AcrossPatch across_at(double patch_over_l, double poisson) {
+  const double a = std::max(patch_over_l, 0.0);
+  if (a >= kWidestSolved) return AcrossPatch{a / (3.0 * std::exp(-M_PI / 4)), M_PI * std::sqrt(2.0) / 4};
+  const long node = static_cast<long>(std::floor(a / kAcrossStep));
+  const double t = a / kAcrossStep - node;
+  const AcrossPatch lo = across_node(node, poisson), hi = across_node(node + 1, poisson);
+  return AcrossPatch{lo.load_factor + t * (hi.load_factor - lo.load_factor),
+                     lo.distance + t * (hi.distance - lo.distance)};
+}
+
 // the part of `parts` that holds `point`, else the one nearest to it (a zone's centroid can lie a hair
 // outside a crescent-shaped part)
 std::size_t part_holding(const std::vector<Polygon>& parts, const Eigen::Vector2d& point) {
@@ -80,10 +114,18 @@ SheetBreakPlan plan_sheet_break(const Polygon& sheet, const SheetContact& contac
   const double polygon_circle = 0.5 * kAngleSegments * std::sin(2 * M_PI / kAngleSegments) *
                                 plan.crack_distance * plan.crack_distance;
   plan.opening_angle = std::clamp(2 * M_PI * filled / polygon_circle, 1e-3, M_PI);
-  plan.radial_crack = plan.opening_angle > kRadialCrackAngle;
-  plan.breaking_load = plan.radial_crack
-                           ? 2 * wedge_load(plan.opening_angle / 2, w, ice.thickness, ice.bending_strength)
-                           : wedge_load(plan.opening_angle, w, ice.thickness, ice.bending_strength);
+  const bool radial = plan.opening_angle > kRadialCrackAngle;
+  plan.crack = radial ? SheetCrack::kRadialWedges : SheetCrack::kWedge;
+  plan.breaking_load = radial ? 2 * wedge_load(plan.opening_angle / 2, w, ice.thickness, ice.bending_strength)
+                              : wedge_load(plan.opening_angle, w, ice.thickness, ice.bending_strength);
+  // a patch wider than the wedges can take: the plate's crack across it, where that needs less
+  const AcrossPatch across = across_at(contact.half_width / l, ice.poisson_ratio);
+  const double across_load = across.load_factor * ice.bending_strength * ice.thickness * ice.thickness;
+  if (across_load < plan.breaking_load) {
+    plan.crack = SheetCrack::kAcrossPatch;
+    plan.breaking_load = across_load;
+    plan.crack_distance = across.distance * l;
+  }
   return plan;
 }
 
@@ -99,6 +141,48 @@ bool reaches_held(const Polygon& part, const HeldEdges& held) {
   return false;
 }
 
+// The region that breaks off the wedges: short of every wedge's chord, within 2 x* of the centre (a free edge that
+// runs back towards a chord would otherwise let the region run along it). The wedges' axes are theta / 4 either
+// side of the load when the radial crack along it halves the edge, else the load's. One convex region serves both
+// wedges: on a wedge's side of the radial crack, (p - c) . a_other = (p - c) . a_own - 2 sin(theta / 4) |(p - c) . n|,
+// so the other's chord holds wherever its own does. Cut as one region, the sheet is cut once: Boost's difference of
+// two cuts in turn that share the radial crack can answer nothing.
+Polygon wedges_region(const Eigen::Vector2d& c, const Eigen::Vector2d& d, const SheetBreakPlan& plan, double reach) {
+  const Eigen::Vector2d n(-d.y(), d.x());
+  const double x = plan.crack_distance;
+  std::vector<Eigen::Vector2d> axes;
+  if (plan.crack == SheetCrack::kRadialWedges) {
+    const double turn = plan.opening_angle / 4;
+    axes = {std::cos(turn) * d + std::sin(turn) * n, std::cos(turn) * d - std::sin(turn) * n};
+  } else {
+    axes = {d};
+  }
+  Polygon region = disc(c, 2 * x, kCrackSegments);
+  for (const Eigen::Vector2d& axis : axes) {
+    const std::vector<Polygon> r = intersect(region, half_plane(c + x * axis, -axis, reach));
+    if (r.empty()) throw std::logic_error("cut_sheet: the chord misses the crack's circle");
+    region = r.front();  // convex with convex: one part
+  }
+  return region;
+}
+
+// The region that breaks off across a patch of half-width a: short of the crack at x_c along the load, which spans
+// the patch, its ends run back to the edge at 45 degrees, and no farther than x_c behind the centre (a free edge
+// running back would otherwise let it run along that edge)
+Polygon across_region(const Eigen::Vector2d& c, const Eigen::Vector2d& d, double x, double a, double reach) {
+  const Eigen::Vector2d n(-d.y(), d.x());
+  const Eigen::Vector2d left = (d + n).normalized(), right = (d - n).normalized();
+  Polygon region = half_plane(c + x * d, -d, reach);
+  for (const auto& [point, inward] : {std::pair{Eigen::Vector2d(c - x * d), Eigen::Vector2d(d)},
+                                      std::pair{Eigen::Vector2d(c + x * d + a * n), Eigen::Vector2d(-left)},
+                                      std::pair{Eigen::Vector2d(c + x * d - a * n), Eigen::Vector2d(-right)}}) {
+    const std::vector<Polygon> r = intersect(region, half_plane(point, inward, reach));
+    if (r.empty()) throw std::logic_error("cut_sheet: the crack across the patch bounds no ice");
+    region = r.front();  // convex with convex: one part
+  }
+  return region;
+}
+
 }  // namespace
 
 SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan, double thickness,
@@ -107,27 +191,10 @@ SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const Shee
   const Eigen::Vector2d d = contact.direction;
   const Eigen::Vector2d n(-d.y(), d.x());
   const double x = plan.crack_distance;
-  const double reach = 4 * x + 1.0;  // half-planes as squares larger than anything they cut here
-  // the wedges' axes: theta / 4 either side of the load when the radial crack along it halves the edge, else
-  // the load's
-  std::vector<Eigen::Vector2d> axes;
-  if (plan.radial_crack) {
-    const double turn = plan.opening_angle / 4;
-    axes = {std::cos(turn) * d + std::sin(turn) * n, std::cos(turn) * d - std::sin(turn) * n};
-  } else {
-    axes = {d};
-  }
-  // The region that breaks off: short of every wedge's chord, within 2 x* of the centre (a free edge that runs
-  // back towards a chord would otherwise let the region run along it). One convex region serves both wedges:
-  // on a wedge's side of the radial crack, (p - c) . a_other = (p - c) . a_own - 2 sin(theta / 4) |(p - c) . n|,
-  // so the other's chord holds wherever its own does. Cut as one region, the sheet is cut once: Boost's
-  // difference of two cuts in turn that share the radial crack can answer nothing.
-  Polygon region = disc(c, 2 * x, kCrackSegments);
-  for (const Eigen::Vector2d& a : axes) {
-    const std::vector<Polygon> r = intersect(region, half_plane(c + x * a, -a, reach));
-    if (r.empty()) throw std::logic_error("cut_sheet: the chord misses the crack's circle");
-    region = r.front();  // convex with convex: one part
-  }
+  const double a = contact.half_width;
+  const double reach = 4 * x + 2 * a + 1.0;  // half-planes as squares larger than anything they cut here
+  const Polygon region = plan.crack == SheetCrack::kAcrossPatch ? across_region(c, d, x, a, reach)
+                                                                : wedges_region(c, d, plan, reach);
   const std::vector<Polygon> inside = intersect(sheet, region);
   if (inside.empty()) return SheetCut{sheet, {}, 0.0};  // the load is at a point of the outline that holds no ice
   // what breaks off is the part that holds the load; another tongue of the sheet that crosses the region stays
@@ -168,7 +235,7 @@ SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const Shee
   out.sheet = left[stays];
   for (std::size_t k = 0; k < left.size(); ++k)
     if (k != stays) out.pieces.push_back(left[k]);
-  if (!plan.radial_crack) {
+  if (plan.crack != SheetCrack::kRadialWedges) {
     out.pieces.push_back(broken);
     return out;
   }

@@ -11,12 +11,21 @@
 //     break together at 2 P_f(theta / 2).
 //   - A wedge of a right angle or less breaks as Nevel's narrow wedge at P_f(theta) (wedge_bending.hpp),
 //     whose radial cracking the beam idealisation cannot tell.
+//   - A load wider than the wedges can take breaks the edge along one crack across its patch, the semi-infinite
+//     plate's circumferential crack: P_c = sigma_b h^2 / (6 m_x(a / l)) at x_c(a / l) (plate_edge_load.hpp), taken
+//     wherever it needs less than the wedges (past a / l of about 0.5 at a straight edge). The wedge's beam puts
+//     the load along its axis, over its first a; a patch is spread across the axis, and past a ~ l / 2 the beam's
+//     load (S -> 0) and crack (x* up to 3 l) run far above the plate's, which tend to Hetenyi's strip of width 2a
+//     (0.73 sigma_b h^2 a / l at 1.11 l; a rubble floe pressed along the edge loads it so). The intact plate's
+//     P_c stands for any edge: a corner narrower than pi would need less, which no closed form gives.
 // The load is spread over the zone's half-width a, the wedge's patch; each wedge breaks across its axis at
 // x*(a / l) from the centre, along a straight crack (the wedge's chord there): the beam's section of the largest
 // moment is the arc of radius x*, but a rigid piece can only hinge about a straight crack, and one bounded by an
 // arc would be locked against the sheet as it turns down (the hinge of a piece broken by bending is the crack's
 // far face). What breaks off is each wedge's ice short of its chord (within 2 x* of the centre, in the part that
-// holds it); what is left of the sheet is its largest part, and any other part it falls into leaves with the pieces.
+// holds it); across a patch, the ice short of the crack at x_c along the load, which spans the patch and whose ends
+// run back to the edge at 45 degrees, as the two wedges' chords do at a straight edge (within x_c behind the
+// centre); what is left of the sheet is its largest part, and any other part it falls into leaves with the pieces.
 // What is left loses its parts narrower than the ice is thick (polygon_set.hpp's opening): a tongue of the sheet
 // left between two cuts that nearly meet, a tenth of a degree wide, is crushed ice, not sheet (one such, its tip
 // the next load's centre, held no ice within the next crack, and stopped the paper's tow at 43 s); a part joined
@@ -24,6 +33,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include <Eigen/Core>
 #include <vector>
@@ -48,12 +58,19 @@ constexpr double kRadialCrackAngle = M_PI / 2;
 /// Segments of the circle that bounds a break (2 x* about the centre), over a full turn.
 constexpr int kCrackSegments = 16;
 
+/// How the edge breaks at a zone (the output's /sheet/breaks crack).
+enum class SheetCrack : int32_t {
+  kWedge = 0,         // a corner of a right angle or less: one wedge, across its axis at x*
+  kRadialWedges = 1,  // a wider edge cracks radially under the load; its two wedges of theta / 2 break together
+  kAcrossPatch = 2,   // a load wider than the wedges can take: one crack across its patch at the plate's x_c
+};
+
 /// Where and at what load the sheet breaks at a zone.
 struct SheetBreakPlan {
-  double opening_angle = 0;   // rad, theta, in (0, pi]
-  bool radial_crack = false;  // two wedges of theta / 2
-  double breaking_load = 0;   // N, normal to the sheet
-  double crack_distance = 0;  // m, x* from the zone's centre
+  double opening_angle = 0;              // rad, theta, in (0, pi]
+  SheetCrack crack = SheetCrack::kWedge;
+  double breaking_load = 0;              // N, normal to the sheet
+  double crack_distance = 0;             // m, x* (x_c across a patch) from the zone's centre
 };
 
 /// The plan for the zone `contact` of the sheet `sheet` (m, ccw).

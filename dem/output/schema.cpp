@@ -180,8 +180,9 @@ const std::vector<EventField>& sheet_break_fields() {
       {"by_floe", offsetof(R, by_floe), Element::i4, "1",
        "1: a floe's push on the sheet's edge broke it (the rubble the structure pushes), 0: the structure's crushed "
        "zone"},
-      {"radial_crack", offsetof(R, radial_crack), Element::i4, "1",
-       "1: the edge cracked radially first and its two wedges broke together, 0: one wedge"},
+      {"crack", offsetof(R, crack), Element::i4, "1",
+       "how the edge broke: 0 one wedge across its axis, 1 a radial crack and its two wedges together, 2 one crack "
+       "across the load's patch"},
       {"pieces", offsetof(R, pieces), Element::i4, "1", "floes made (the last bodies of /bodies born at its time)"},
       {"splits_before", offsetof(R, splits_before), Element::i4, "1", "splits of rigid floes before it"},
       {"x", offsetof(R, x), Element::f8, "m", "the load's centre, tank frame"},
@@ -193,7 +194,8 @@ const std::vector<EventField>& sheet_break_fields() {
       {"breaking_load", offsetof(R, breaking_load), Element::f8, "N", "the closed form's breaking load (<= load)"},
       {"opening_angle", offsetof(R, opening_angle), Element::f8, "rad",
        "the angle the sheet fills about the centre (pi at a straight edge)"},
-      {"crack_distance", offsetof(R, crack_distance), Element::f8, "m", "x*: the cracks' distance from the centre"},
+      {"crack_distance", offsetof(R, crack_distance), Element::f8, "m",
+       "x*: the cracks' distance from the centre (x_c across a patch)"},
       {"hull_x", offsetof(R, hull_x), Element::f8, "m", "the structure's axis at the break (by_floe 0)"},
       {"hull_z", offsetof(R, hull_z), Element::f8, "m", "the structure's axis at the break (by_floe 0)"},
       {"hull_radius", offsetof(R, hull_radius), Element::f8, "m",

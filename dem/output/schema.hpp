@@ -22,8 +22,9 @@ namespace icedem {
 
 /// Version of the file layout, written to /meta format_version. 2: /bodies grows as floes split
 /// (with /bodies/parent and /bodies/born), and a snapshot row's awake flag may be 2, gone. 3: the flag may be
-/// 3, left behind (activation.leave_behind).
-inline constexpr int kOutputFormatVersion = 3;
+/// 3, left behind (activation.leave_behind). 4: /sheet/breaks radial_crack became crack (0, 1 as before, 2 across
+/// the patch).
+inline constexpr int kOutputFormatVersion = 4;
 
 /// Points per mooring line in /snapshots/mooring_lines: chords of about 0.27 m on the default 4.06 m
 /// lines, which miss their sag by about a centimetre (L_chord^2 w / (8 H)), a picture's accuracy.

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "dem/fracture/plate_edge_load.hpp"
 #include "dem/fracture/sheet_breaking.hpp"
 #include "dem/fracture/wedge_bending.hpp"
 #include "dem/layout/polygon_set.hpp"
@@ -38,7 +39,7 @@ TEST(SheetBreaking, AStraightEdgeBreaksAtTheClosedFormLoad) {
   const Polygon sheet = make_ccw({{0, -5}, {10, -5}, {10, 5}, {0, 5}});
   const SheetBreakPlan plan = plan_sheet_break(sheet, load_at({0, 0}, {1, 0}, 0.1 * kL), kIce);
   EXPECT_NEAR(plan.opening_angle, M_PI, 0.01 * M_PI);
-  EXPECT_TRUE(plan.radial_crack);
+  EXPECT_EQ(plan.crack, SheetCrack::kRadialWedges);
   EXPECT_NEAR(plan.breaking_load, 2 * 16.6, 0.05 * 2 * 16.6);
   EXPECT_NEAR(plan.crack_distance, 0.51 * kL, 0.02 * kL);
 }
@@ -65,7 +66,7 @@ TEST(SheetBreaking, AWedgeBreaksAtTheClosedFormLoad) {
                                   {reach * std::cos(half), reach * std::sin(half)}});
   const SheetBreakPlan plan = plan_sheet_break(wedge, load_at({0, 0}, {1, 0}, 0.1 * kL), kIce);
   EXPECT_NEAR(plan.opening_angle, M_PI / 3, 0.02 * M_PI / 3);
-  EXPECT_FALSE(plan.radial_crack);
+  EXPECT_EQ(plan.crack, SheetCrack::kWedge);
   EXPECT_NEAR(plan.breaking_load, 9.6, 0.05 * 9.6);
   EXPECT_NEAR(plan.crack_distance, 0.51 * kL, 0.02 * kL);
 }
@@ -87,6 +88,61 @@ TEST(SheetBreaking, ACutKeepsTheIcesArea) {
   EXPECT_NEAR(area(cut.sheet) + total_area(cut.pieces), area(sheet), 1e-12 * area(sheet));
   EXPECT_NEAR(cut.slivers, 0.0, 1e-12 * area(sheet)) << "a straight edge leaves no tongue";
   EXPECT_FALSE(contains(cut.sheet, {0.01, 0.3})) << "the loaded ice has gone";
+}
+
+// A patch wider than the wedges can take breaks the straight edge along one crack across it, at the semi-infinite
+// plate's circumferential load and distance (plate_edge_breaking_load, solved afresh here): to 0.1 % at patches on
+// and between the interpolation's nodes (a / l from 0.77 to 7.9). The switch from the wedges lies where the two
+// loads cross, between a / l = 0.4 (wedges 1.25 sigma_b h^2, plate 1.37) and 0.6 (1.57 against 1.42)
+TEST(SheetBreaking, AWidePatchBreaksAcrossItAtThePlatesLoad) {
+  const Polygon sheet = make_ccw({{0, -30}, {10, -30}, {10, 30}, {0, 30}});
+  for (double a : {0.77, 1.0, 1.33, 3.21, 7.9}) {
+    const SheetBreakPlan plan = plan_sheet_break(sheet, load_at({0, 0}, {1, 0}, a * kL), kIce);
+    const PlateEdgeBreak solved = plate_edge_breaking_load(a * kL, kIce.thickness, kIce.elastic_modulus,
+                                                           kIce.poisson_ratio, kIce.bending_strength,
+                                                           kIce.water_density, kIce.gravity);
+    EXPECT_EQ(plan.crack, SheetCrack::kAcrossPatch) << "a / l " << a;
+    EXPECT_NEAR(plan.breaking_load, solved.circumferential_load, 1e-3 * solved.circumferential_load) << "a / l " << a;
+    EXPECT_NEAR(plan.crack_distance, solved.circumferential_distance, 1e-3 * solved.circumferential_distance)
+        << "a / l " << a;
+  }
+  EXPECT_EQ(plan_sheet_break(sheet, load_at({0, 0}, {1, 0}, 0.4 * kL), kIce).crack, SheetCrack::kRadialWedges);
+  EXPECT_EQ(plan_sheet_break(sheet, load_at({0, 0}, {1, 0}, 0.6 * kL), kIce).crack, SheetCrack::kAcrossPatch);
+}
+
+// Past the solved patches the plate is a strip of width 2a: Hetenyi's semi-infinite beam loaded at its end, whose
+// largest moment and its distance come here from the beam solver of wedge_bending.hpp with a constant width (an
+// independent evaluation): M = m P / beta at x = s / beta, beta = 1 / (sqrt(2) l) with the plate's D, so the edge
+// breaks at sigma_b h^2 / 6 * 2a / (m sqrt(2) l). At a / l = 10, 1 %: the beam's elements (it gives 0.3224 and
+// pi / 4 to 1e-3) and the plate's two-dimensional part, 0.02 % of the load at a / l = 8
+TEST(SheetBreaking, AVeryWidePatchBreaksAsAStrip) {
+  const Polygon sheet = make_ccw({{0, -30}, {10, -30}, {10, 30}, {0, 30}});
+  const double a = 10 * kL;
+  const WedgeBending beam = constant_width_bending();
+  const double strip = kIce.bending_strength * kIce.thickness * kIce.thickness / 6 * 2 * a /
+                       (beam.stress_factor * std::sqrt(2.0) * kL);
+  const SheetBreakPlan plan = plan_sheet_break(sheet, load_at({0, 0}, {1, 0}, a), kIce);
+  EXPECT_EQ(plan.crack, SheetCrack::kAcrossPatch);
+  EXPECT_NEAR(plan.breaking_load, strip, 0.01 * strip);
+  EXPECT_NEAR(plan.crack_distance, beam.crack_distance * std::sqrt(2.0) * kL, 0.01 * kL);
+}
+
+// The cut across a patch at a straight edge: one piece, short of the crack at x_c and of its ends running back to the
+// edge at 45 degrees, a trapezoid of area 2 a x_c + x_c^2 (to round-off); the sheet left plus the piece is the sheet
+// before
+TEST(SheetBreaking, ACutAcrossAPatchKeepsTheIcesArea) {
+  const Polygon sheet = make_ccw({{0, -5}, {10, -5}, {10, 5}, {0, 5}});
+  const SheetContact c = load_at({0, 0.3}, {1, 0}, 1.0 * kL);
+  const SheetBreakPlan plan = plan_sheet_break(sheet, c, kIce);
+  ASSERT_EQ(plan.crack, SheetCrack::kAcrossPatch);
+  const SheetCut cut = cut_sheet(sheet, c, plan, kIce.thickness);
+  ASSERT_EQ(cut.pieces.size(), 1u);
+  const double x = plan.crack_distance, trapezoid = 2 * c.half_width * x + x * x;
+  EXPECT_NEAR(area(cut.pieces[0]), trapezoid, 1e-9 * trapezoid);
+  EXPECT_TRUE(is_convex(cut.pieces[0]));
+  EXPECT_NEAR(area(cut.sheet) + total_area(cut.pieces), area(sheet), 1e-12 * area(sheet));
+  EXPECT_FALSE(contains(cut.sheet, {0.5 * x, 0.3 + c.half_width})) << "the ice across the patch has gone";
+  EXPECT_TRUE(contains(cut.sheet, {1.1 * x, 0.3})) << "beyond the crack the sheet holds";
 }
 
 // A second break beside the first, on the scalloped edge the first left: the pieces and the sheet still add
@@ -127,7 +183,7 @@ TEST(SheetBreaking, TheConeBreaksTheEdgeAtTheClosedFormLoad) {
     const WedgeBreak closed = wedge_breaking_load(M_PI / 2, c.half_width, kIce.thickness, kIce.elastic_modulus,
                                                   kIce.poisson_ratio, kIce.bending_strength, kIce.water_density,
                                                   kIce.gravity);
-    EXPECT_TRUE(plan.radial_crack);
+    EXPECT_EQ(plan.crack, SheetCrack::kRadialWedges);
     EXPECT_NEAR(plan.breaking_load, 2 * closed.load, 0.05 * 2 * closed.load);
     EXPECT_NEAR(plan.crack_distance, closed.crack_distance, 0.02 * kL);
     EXPECT_LT(c.bending_force, plan.breaking_load * 1.2) << "found within one advance of the load";
@@ -173,7 +229,7 @@ TEST(SheetBreaking, ACutBesideTheTowsScallopsKeepsTheArea) {
   SheetBreakPlan plan;
   plan.crack_distance = 0.16283547994193723;
   plan.opening_angle = 2.4894679635507089;
-  plan.radial_crack = true;
+  plan.crack = SheetCrack::kRadialWedges;
   const SheetCut cut = cut_sheet(sheet, c, plan, kIce.thickness);
   ASSERT_FALSE(cut.pieces.empty());
   EXPECT_NEAR(area(cut.sheet) + total_area(cut.pieces) + cut.slivers, area(sheet), 1e-12 * area(sheet));
@@ -247,7 +303,7 @@ TEST(SheetBreaking, ACutLeavesNoTongueNarrowerThanTheIce) {
                                  0.12058351628104491);
   SheetBreakPlan plan;
   plan.opening_angle = 1.4498849658255413;
-  plan.radial_crack = false;
+  plan.crack = SheetCrack::kWedge;
   plan.breaking_load = 19.798223198729985;
   plan.crack_distance = 0.3152105711696393;
   const SheetCut cut = cut_sheet(sheet, c, plan, kIce.thickness);
@@ -278,7 +334,7 @@ TEST(SheetBreaking, APartTheIceAroundHoldsStaysSheet) {
   SheetBreakPlan plan;
   plan.crack_distance = 0.15;
   plan.opening_angle = M_PI;
-  plan.radial_crack = true;
+  plan.crack = SheetCrack::kRadialWedges;
   const SheetCut free_cut = cut_sheet(sheet, c, plan, kIce.thickness);
   double largest_piece = 0;
   for (const Polygon& p : free_cut.pieces) largest_piece = std::max(largest_piece, area(p));
@@ -297,7 +353,7 @@ TEST(SheetBreaking, APartReachingNoHeldEdgeLeaves) {
   SheetBreakPlan plan;
   plan.crack_distance = 0.15;
   plan.opening_angle = M_PI;
-  plan.radial_crack = true;
+  plan.crack = SheetCrack::kRadialWedges;
   const SheetCut cut = cut_sheet(sheet, load_at({2.0, -1.8}, {0, -1}, 0.05), plan, kIce.thickness, held);
   double largest_piece = 0;
   for (const Polygon& p : cut.pieces) largest_piece = std::max(largest_piece, area(p));
