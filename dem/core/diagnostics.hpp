@@ -30,6 +30,7 @@ struct StepDiagnostics {
   double boundary_load = 0;         // N, fixed bodies' resistance to the structure's push (dem/world/boundary_load.hpp)
   double locked = 0;                // 1 if the boundaries carry kLockedShare of the surge load or more
   double held_edge_overloads = 0;   // a level sheet's joints at its held edge over their capacity (never broken)
+  double sheet_holds = 0;           // the analytic sheet's loads at their breaking load where it was not cut
 };
 
 /// How a diagnostic goes into the run's summary: its largest value over the run (the health
@@ -114,6 +115,12 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      "clamp bends the free sheet harder than the ice would. Many: fracture.lattice_radius too small "
      "(docs/model/breakage.md, \"Level ice\")",
      &StepDiagnostics::held_edge_overloads},
+    {"sheet_holds", "1",
+     "level ice cut by closed forms: the sheet's loaded zones at or over their breaking load that were not cut at the "
+     "end of the step (summed over its substeps): the cut would have parted the held sheet in two or left a hole in "
+     "it, or no ice lay within its crack. The sheet holds them and they crush on (docs/model/breakage.md, \"Level "
+     "ice cut by closed forms\")",
+     &StepDiagnostics::sheet_holds},
 };
 inline constexpr std::size_t kDiagnosticCount = std::size(kDiagnosticColumns);
 

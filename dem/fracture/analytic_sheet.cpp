@@ -121,6 +121,7 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> AnalyticSheet::step(const Scene& sce
   std::vector<SheetContact> zones;
   for (bool broke = true, first = true; broke; first = false) {
     broke = false;
+    holds_ = 0;  // the last pass, which cut nothing, saw every zone and patch of the final outline
     zones = sheet_contacts(outline_, hull, law, scene.friction.ice_structure);
     const FloePatches floes = floe_patches(outline_, pushes, thickness_);
     if (first) {
@@ -137,7 +138,10 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> AnalyticSheet::step(const Scene& sce
       SheetBreakRecord r = break_record(c, plan, time, world);
       r.by_floe = by_floe ? 1 : 0;
       if (!by_floe) r.hull_x = hull.axis.x(), r.hull_z = hull.axis.y(), r.hull_radius = hull.larger();
-      if (!cut(world, r)) continue;
+      if (!cut(world, r)) {
+        ++holds_;
+        continue;
+      }
       FractureEvent e{time, -1, -1, static_cast<int>(FailureMode::kBending), c.bending_force / plan.breaking_load,
                       c.centre.x(), c.centre.y()};
       e.touching_structure = by_floe ? 0 : 1;

@@ -73,6 +73,10 @@ class AnalyticSheet {
     double interior = 0;
   };
   const FloeLoadTotals& floe_load_totals() const { return floe_totals_; }
+  /// The zones and patches at or over their breaking load that the last step() did not cut: the cut would have
+  /// parted the held sheet or left a hole in it, or no ice lay within the crack (cut_sheet's refusals). The sheet
+  /// holds them that step.
+  int holds() const { return holds_; }
   void set_floe_load_totals(const FloeLoadTotals& totals) { floe_totals_ = totals; }
 
  private:
@@ -97,6 +101,7 @@ class AnalyticSheet {
   std::vector<SheetBreakRecord> breaks_;
   std::vector<Polygon> outlines_after_;  // per break, for the output
   FloeLoadTotals floe_totals_;
+  int holds_ = 0;  // in the last step()
   double bottom_ = 0;     // m, the ice's bottom face
   double thickness_ = 0;  // m
   double friction_ = 0;   // ice against ice

@@ -149,6 +149,10 @@ std::string summary_table(const RunSummary& s) {
     out += fmt::format("  level ice: {:d} times a joint at the held edge reached its capacity (not broken: the held sheet's "
                        "clamp; many say fracture.lattice_radius is too small; /diagnostics/held_edge_overloads)\n",
                        s.held_edge_overloads);
+  if (s.sheet_holds > 0)
+    out += fmt::format("  level ice: {:d} times a zone of the sheet at its breaking load was not cut (the cut would have "
+                       "parted the held sheet or left a hole in it): it crushed on (/diagnostics/sheet_holds)\n",
+                       s.sheet_holds);
   if (!s.near_structure_max_ratio.empty()) {
     const auto& r = s.near_structure_max_ratio;
     const long over_half = std::count_if(r.begin(), r.end(), [](double x) { return x >= 0.5; });
@@ -228,6 +232,10 @@ const std::vector<SummaryField>& summary_fields() {
        "level ice: over the run, the sheet's joints at its held edge that reached their capacity, counted each step "
        "(/diagnostics/held_edge_overloads); they do not break. Many: fracture.lattice_radius too small",
        [](S s) { return json(s.held_edge_overloads); }},
+      {"sheet_holds", "1", true, false,
+       "level ice cut by closed forms: over the run, the sheet's zones at their breaking load that were not cut, "
+       "counted each step (/diagnostics/sheet_holds); they crush on",
+       [](S s) { return json(s.sheet_holds); }},
       {"steps", "1", true, false, "solver steps", [](S s) { return json(s.steps); }},
       {"sim_time_s", "s", true, false, "simulated time", [](S s) { return json(s.sim_time_s); }},
       {"bullet_step_s", "s", false, false,

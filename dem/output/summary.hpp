@@ -81,6 +81,7 @@ struct RunSummary {
   // load / capacity ratio of its joints over the run (dem/fracture/break_context.hpp)
   std::vector<double> near_structure_max_ratio;
   long held_edge_overloads = 0;  // level ice: joint-steps at the held edge over capacity (/diagnostics/held_edge_overloads)
+  long sheet_holds = 0;  // analytic level ice: zone-steps at the breaking load not cut (/diagnostics/sheet_holds)
   StageTimes stage_times;   // s of wall time per stage of step()
   SolverSummary solver;     // sweeps, residuals and capped steps of the contact solver
   // the fixed boundaries (dem/world/boundary_load.hpp) over the analysis window: the share of the

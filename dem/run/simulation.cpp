@@ -534,7 +534,10 @@ RunSummary run_simulation(const Scene& scene, const RunOptions& options) {
   summary.breaks_by_mechanism = state.fracture.breaks_by_mechanism;
   record_floe_margins(state, recorder, summary);
   for (int n : state.fracture.breaks_by_mode) summary.breaks += n;
-  for (const StepDiagnostics& d : history.diagnostics) summary.held_edge_overloads += static_cast<long>(d.held_edge_overloads);
+  for (const StepDiagnostics& d : history.diagnostics) {
+    summary.held_edge_overloads += static_cast<long>(d.held_edge_overloads);
+    summary.sheet_holds += static_cast<long>(d.sheet_holds);
+  }
   compute_statistics(scene, history, summary);
   summary.solver = solver_summary(scene, history, summary);
   boundary_summary(history, summary);

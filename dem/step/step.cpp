@@ -137,6 +137,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   LoadCell cell;
   BoundaryLoad boundary;
   int held_edge_overloads = 0;  // a level sheet's joints at its held edge over their capacity
+  int sheet_holds = 0;          // the analytic sheet's zones at their breaking load it held
   state.world->solver_report().clear();
   // the fracture stage's measure of how near a joint is to breaking, for the contact solver's
   // second, tighter solve of such islands (solver.breaking_ratio)
@@ -170,6 +171,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
         cell.add(impulse, angular);
         state.structure_motion.ice_impulse += impulse;
         state.structure_motion.ice_angular_impulse += angular;
+        sheet_holds += state.sheet->holds();
       }
       held_edge_overloads += check_fracture(scene, *state.world, state.time, state.structure_position, h, state.fracture);
       if (floes_split(scene))
@@ -191,6 +193,7 @@ void step(const Scene& scene, State& state, const PointLoads* loads) {
   record_solver_report(state.world->solver_report(), state.diagnostics);
   record_boundary_load(scene, boundary_load, state.load, state.diagnostics);
   state.diagnostics.held_edge_overloads = held_edge_overloads;
+  state.diagnostics.sheet_holds = sheet_holds;
 }
 
 void advance(const Scene& scene, State& state, StepCase* attached) {

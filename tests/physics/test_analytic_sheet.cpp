@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "dem/fracture/analytic_sheet.hpp"
+#include "dem/fracture/sheet_breaking.hpp"
 #include "dem/layout/polygon_set.hpp"
 #include "dem/step/initial_state.hpp"
 #include "dem/step/step.hpp"
@@ -101,4 +102,41 @@ TEST(AnalyticSheet, BreaksKeepTheIce) {
   EXPECT_NEAR(pieces + crushed, broken, 1e-9 * before);
   EXPECT_LT(crushed, 0.2 * broken) << "most of the broken ice is pieces";
   EXPECT_LT(deepest, 3e-3);
+}
+
+// A sheet whose front is a neck 5 cm deep before a slot that runs from its back (the neck 0.16 m wide across the
+// load), every edge but the front held: a cut at the front takes the neck whole (its wedges' chords reach 0.16 m
+// either side of the axis 5 cm in: x* is 0.148 m or more) and would part the sheet into two held halves, so it is
+// not made. The sheet holds every zone at its breaking load, and the step counts each one (holds(),
+// /diagnostics/sheet_holds): the count equals the zones at or over their closed-form load found here afresh from
+// the outline and the hull, over 50 such steps of the cone crushing on into the neck (the world's own sheet lies
+// clear of it, 10 m away)
+TEST(AnalyticSheet, ACutThatWouldPartTheHeldSheetIsHeldAndCounted) {
+  const Scene scene = sheet_scene();
+  State state = start(scene);
+  const Polygon slotted = make_ccw({{13.0, -1.5}, {14.0, -1.5}, {14.0, -0.08}, {13.05, -0.08}, {13.05, 0.08},
+                                    {14.0, 0.08}, {14.0, 1.5}, {13.0, 1.5}});
+  Scene here = scene;
+  here.structure.start_x = 12.3;  // the front, x = 13 m, is the edge the structure comes in from
+  AnalyticSheet sheet(here, *state.world, slotted, 1000);
+  const double before = area(sheet.outline());
+  const CrushingLaw law{scene.ice.compressive_strength, scene.contact.pressure_area_exponent,
+                        scene.ice.thickness * scene.ice.thickness};
+  const SheetIce ice = sheet_ice(scene);
+  const double h = scene.time.dt;
+  int held_steps = 0;
+  for (int k = 1; k <= 200 && held_steps < 50; ++k) {
+    const Eigen::Vector3d structure(12.3 + scene.structure.speed * h * k, state.structure_position.y(),
+                                    state.structure_position.z());
+    sheet.step(here, *state.world, structure, k * h, h, state.fracture);
+    int over = 0;
+    for (const SheetContact& c : sheet_contacts(sheet.outline(), hull_in_ice(here, structure), law,
+                                                scene.friction.ice_structure))
+      over += c.bending_force >= plan_sheet_break(sheet.outline(), c, ice).breaking_load;
+    EXPECT_EQ(sheet.holds(), over) << "step " << k;
+    held_steps += over > 0;
+  }
+  EXPECT_EQ(held_steps, 50) << "the cone's zone reached its breaking load";
+  EXPECT_TRUE(sheet.breaks().empty()) << "the held sheet was never parted";
+  EXPECT_EQ(area(sheet.outline()), before);
 }
