@@ -189,6 +189,11 @@ bool AnalyticSheet::cut(World& world, SheetBreakRecord record) {
   if (cut.pieces.empty() && cut.slivers == 0) return false;
   outline_ = cut.sheet;
   record.broken_area = area(before) - area(outline_);
+  // a cut that made pieces must have taken their ice from the sheet, else the next pass breaks it again, without end
+  if (!(record.broken_area > 0))
+    throw std::logic_error("the level sheet's cut at t = " + std::to_string(record.time) +
+                           " s made pieces but took no ice from the sheet (docs/model/breakage.md, \"Level ice cut by "
+                           "closed forms\")");
 
   // the cells the ice that left crosses (the pieces and the slivers): each whose sheet changed is partitioned
   // again from its square, its prisms replaced

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 #include "dem/fracture/plate_edge_load.hpp"
 #include "dem/fracture/sheet_breaking.hpp"
@@ -143,6 +146,35 @@ TEST(SheetBreaking, ACutAcrossAPatchKeepsTheIcesArea) {
   EXPECT_NEAR(area(cut.sheet) + total_area(cut.pieces), area(sheet), 1e-12 * area(sheet));
   EXPECT_FALSE(contains(cut.sheet, {0.5 * x, 0.3 + c.half_width})) << "the ice across the patch has gone";
   EXPECT_TRUE(contains(cut.sheet, {1.1 * x, 0.3})) << "beyond the crack the sheet holds";
+}
+
+// A cut recorded from the paper's tow (mu 0.2, started at 5.202 m, 215.78 s), where the sheet within 2 x* of the
+// load is three parts: Boost's difference of the part holding the load from the sheet answered the sheet unchanged,
+// the ice that broke off stayed sheet and left as pieces too, and the next pass broke it again, 11,000 times in the
+// step until the memory ran out. The cut takes the region instead (its two slivers of other tongues breaking off
+// with it): the sheet left, the pieces and the slivers are the sheet before to round-off, and the sheet lost ice
+TEST(SheetBreaking, ACutThatBoostCannotTakeKeepsTheArea) {
+  std::ifstream in(std::string(ICEDEM_SOURCE_DIR) + "/tests/unit/data/sheet_outline_215s.txt");
+  ASSERT_TRUE(in.good());
+  Polygon sheet;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    double x = 0, z = 0;
+    row >> x >> z;
+    sheet.emplace_back(x, z);
+  }
+  ASSERT_EQ(sheet.size(), 206u);
+  const SheetContact c = load_at({20.918298264036537, -0.034424301703904765},
+                                 {0.99842022329635716, -0.05618770072580221}, 0.086008752961129975);
+  SheetBreakPlan plan;
+  plan.opening_angle = M_PI;
+  plan.crack = SheetCrack::kRadialWedges;
+  plan.crack_distance = 0.27115482228568072;
+  const SheetCut cut = cut_sheet(sheet, c, plan, kIce.thickness);
+  ASSERT_FALSE(cut.pieces.empty());
+  EXPECT_NEAR(area(cut.sheet) + total_area(cut.pieces) + cut.slivers, area(sheet), 1e-9 * area(sheet));
+  EXPECT_GT(area(sheet) - area(cut.sheet), 0.1) << "the broken ice, 0.15 m^2, left the sheet";
 }
 
 // A second break beside the first, on the scalloped edge the first left: the pieces and the sheet still add
