@@ -18,12 +18,19 @@ from ..sweeps import aggregate as agg, execute
 from ..reports.report_tables import fmt
 
 START, LEAVE = "structure.start_x", "activation.leave_behind"
-CRITERIA = {"mean": "mean_fx_N", "p99": "p99_fx_N", "max": "max_fx_N"}
+# the 5 Hz low-passed maximum (aggregate.lowpass_maxima): a rigid contact's largest loads are single steps of the
+# pieces locked between the cone and the held sheet, set by the step, not the ice
+LOWPASS = "max_lowpass_fx_N/5"
+CRITERIA = {"mean": "mean_fx_N", "p99": "p99_fx_N", "max": "max_fx_N", "max 5 Hz": LOWPASS}
 
 
 def _value(record, key):
     s, w = record["summary"], record.get("window", {})
-    v = s.get(key, w.get(key))
+    if "/" in key:
+        name, cutoff = key.split("/")
+        v = w.get(name, {}).get(cutoff)
+    else:
+        v = s.get(key, w.get(key))
     return None if v is None else float(v)
 
 
@@ -104,9 +111,12 @@ def section(sweep, out, design_loads):
     configs = configurations(sweep, out)
     if not configs:
         return L + ["No finished run yet.", ""]
-    L += ["| run | mu | leave m | starts | mean | p99 | max (mean of the starts') | largest max | ISO 19906 | "
-          "Ralston | largest max / ISO | breaks a tow | real time (CPU) |",
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    L += ["Loads in N, surge, over the analysis window; max 5 Hz: the largest of the load low-passed at 5 Hz (a "
+          "rigid contact's largest loads are single steps of the pieces locked between the cone and the held sheet: "
+          "the step sets them, not the ice).", "",
+          "| run | mu | leave m | starts | mean | p99 | max (mean of the starts') | max 5 Hz | largest max | "
+          "ISO 19906 | Ralston | largest max / ISO | largest max 5 Hz / ISO | breaks a tow | real time (CPU) |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for (scenario, leave), members in sorted(configs.items()):
         recs = [rec for _, rec in members.values()]
         run = next(iter(members.values()))[0]
@@ -117,6 +127,7 @@ def section(sweep, out, design_loads):
             m, h = intervals.mean_ci(v) if v else (None, None)
             cells.append("n/a" if m is None else f"{m:.1f}" + (f" ± {h:.1f}" if len(v) > 1 else ""))
         largest = max((_value(rec, "max_fx_N") or 0.0) for rec in recs)
+        largest_5 = max((_value(rec, LOWPASS) or 0.0) for rec in recs)
         breaks = np.mean([rec["summary"].get("breaks", 0) for rec in recs])
         rtf = [rec["summary"]["sim_time_s"] / rec["summary"]["cpu_time_s"] for rec in recs
                if rec["summary"].get("cpu_time_s")]
@@ -124,9 +135,10 @@ def section(sweep, out, design_loads):
         if loads:
             iso = loads["total_N"]
             mu = f"{loads['friction']:g}"
-            design = [fmt(iso), fmt(loads["ralston_total_N"]), fmt(largest / iso, digits=2)]
+            design = [fmt(iso), fmt(loads["ralston_total_N"]), fmt(largest / iso, digits=2),
+                      fmt(largest_5 / iso, digits=2)]
         else:
-            mu, design = "n/a", [f"n/a ({why})", "n/a", "n/a"]
+            mu, design = "n/a", [f"n/a ({why})", "n/a", "n/a", "n/a"]
         L.append(f"| {scenario} | {mu} | {leave:g} | {len(recs)} | {' | '.join(cells)} | {largest:.1f} | "
                  f"{' | '.join(design)} | {breaks:.0f} | {rtf} |")
     L += sheet_table(configs, lc_h(configs, design_loads))

@@ -1,0 +1,64 @@
+#!/usr/bin/python3
+"""The analytic level tows' section of docs/model/level_ice.md (tools/icedem_tools/studies/level_ice_analytic.py),
+on records made here: a configuration's loads are the mean over its starts with Student's interval (mean, p99, max
+and the 5 Hz low-passed max, the largest of each over ISO 19906); leaving the channel behind is judged start by
+start against the tow without it (a uniform +10 % moves, by +10.0 %); no finished run says so."""
+import math
+import os
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
+from checks import check, finish  # noqa: E402
+from icedem_tools.sweeps import execute  # noqa: E402
+from icedem_tools.studies import level_ice_analytic as la  # noqa: E402
+
+SWEEP = """name = "analytic_test"
+seeds = 1
+[[scenario]]
+name = "mu02"
+file = "scenarios/level_ice/level_ice_analytic.toml"
+[grid]
+"structure.start_x" = [5.2, 5.201, 5.202]
+"activation.leave_behind" = [0.0, 3.0]
+"""
+
+# per start: the tow without leaving behind, and the one leaving at 3 m 10 % higher in every criterion
+MEANS = {5.2: 20.0, 5.201: 22.0, 5.202: 24.0}
+
+
+def record(mean, factor):
+    m = mean * factor
+    return {"summary": {"mean_fx_N": m, "max_fx_N": 100 * m, "cpu_time_s": 560.0, "sim_time_s": 280.0,
+                        "breaks": 500},
+            "window": {"p99_fx_N": 3 * m, "max_lowpass_fx_N": {"5": 10 * m, "10": 20 * m}}}
+
+
+def design(run):
+    return {"friction": 0.2, "total_N": 200.0, "ralston_total_N": 250.0, "characteristic_length_m": 0.379}, None
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    sweep = os.path.join(tmp, "analytic.toml")
+    with open(sweep, "w") as f:
+        f.write(SWEEP)
+    execute.status = lambda run, out: execute.Status(run, "pending")
+    text = "\n".join(la.section(sweep, tmp, design))
+    check("No finished run yet" in text, "no finished run: the section says so")
+
+    execute.status = lambda run, out: execute.Status(run, "done")
+    la.agg.load_record = lambda run, out: record(MEANS[float(dict(run.grid)[la.START])],
+                                                 1.1 if float(dict(run.grid)[la.LEAVE]) == 3.0 else 1.0)
+    lines = la.section(sweep, tmp, design)
+    rows = {tuple(c.strip() for c in l.split("|")[1:4]): l for l in lines if l.startswith("| mu02 | 0.2 |")}
+    base = rows.get(("mu02", "0.2", "0"))
+    # the mean over 20, 22, 24: 22 +- t(0.975, 2) * 2 / sqrt(3) = 4.97
+    half = 4.302653 * 2.0 / math.sqrt(3)
+    check(base is not None and f"| 3 | 22.0 ± {half:.1f} | 66.0 ± {3 * half:.1f} | 2200.0 ± {100 * half:.1f} | "
+          f"220.0 ± {10 * half:.1f} | 2400.0 | 200.0 | 250.0 | 12.00 | 1.20 | 500 | 0.50 |" in base,
+          f"the tow's loads over its starts, the largest max and max 5 Hz over ISO: {base}")
+    change = [l for l in lines if l.startswith("| mu02 | 3 | max 5 Hz |")]
+    check(len(change) == 1 and "+10.0 %" in change[0] and "(moves)" in change[0] and change[0].endswith("| 3 |"),
+          f"leaving behind judged start by start, the 5 Hz maximum among the criteria: {change}")
+    check(sum(l.startswith("| mu02 | 3 |") for l in lines) == 4, "four criteria judged")
+finish()
