@@ -213,9 +213,9 @@ SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const Shee
   // round-off of the sheet's area; where it is not, the region itself is taken, the other tongues in it breaking
   // off too (slivers of it, there); where that fails as well, the sheet holds this step.
   const double inside_area = [&] {
-    double a = 0;
-    for (const Polygon& p : inside) a += area(p);
-    return a;
+    double sum = 0;
+    for (const Polygon& p : inside) sum += area(p);
+    return sum;
   }();
   const double tolerance = kAreaRoundOff * area(sheet);
   const auto takes = [&](const std::vector<Polygon>& rest, double expected) {

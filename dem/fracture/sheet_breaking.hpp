@@ -88,10 +88,12 @@ struct SheetCut {
 };
 
 /// Cut the sheet of ice `thickness` (m) at `contact` by `plan`. No pieces (the sheet as it was) where the load is
-/// at a point of the outline that holds no ice within the crack. Of what is left, a part that reaches one of the
-/// `held` edges stays held: only parts that reach none leave as pieces (without held edges, all but the largest
-/// leave). A cut that would leave two or more held parts is not made (the sheet holds that step): the sheet is one
-/// polygon, and making the far parts of a held sheet floes broke off tens of square metres at a time.
+/// at a point of the outline that holds no ice within the crack, where the cut would leave a hole in the sheet, or
+/// where Boost.Geometry's difference does not take the broken ice from the sheet to round-off. Of what is left, a
+/// part that reaches one of the `held` edges stays held: only parts that reach none leave as pieces (without held
+/// edges, all but the largest leave). A cut that would leave two or more held parts is not made (the sheet holds
+/// that step): the sheet is one polygon, and making the far parts of a held sheet floes broke off tens of square
+/// metres at a time.
 SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const SheetBreakPlan& plan, double thickness,
                    const HeldEdges& held = {});
 
