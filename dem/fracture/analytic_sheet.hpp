@@ -74,8 +74,8 @@ class AnalyticSheet {
   };
   const FloeLoadTotals& floe_load_totals() const { return floe_totals_; }
   /// The zones and patches at or over their breaking load that the last step() did not cut: the cut would have
-  /// parted the held sheet or left a hole in it, or no ice lay within the crack (cut_sheet's refusals). The sheet
-  /// holds them that step.
+  /// parted the held sheet or left a hole in it, no ice lay within the crack, or Boost.Geometry's difference did not
+  /// take the broken ice (cut_sheet's refusals). The sheet holds them that step.
   int holds() const { return holds_; }
   void set_floe_load_totals(const FloeLoadTotals& totals) { floe_totals_ = totals; }
 

@@ -84,6 +84,13 @@ AcrossPatch across_at(double patch_over_l, double poisson) {
                      lo.distance + t * (hi.distance - lo.distance)};
 }
 
+// the parts' area, m^2
+double total_area(const std::vector<Polygon>& parts) {
+  double sum = 0;
+  for (const Polygon& p : parts) sum += area(p);
+  return sum;
+}
+
 // the part of `parts` that holds `point`, else the one nearest to it (a zone's centroid can lie a hair
 // outside a crescent-shaped part)
 std::size_t part_holding(const std::vector<Polygon>& parts, const Eigen::Vector2d& point) {
@@ -212,16 +219,10 @@ SheetCut cut_sheet(const Polygon& sheet, const SheetContact& contact, const Shee
   // in one step, until the memory ran out). So the ice the difference takes must be the ice that breaks off, to
   // round-off of the sheet's area; where it is not, the region itself is taken, the other tongues in it breaking
   // off too (slivers of it, there); where that fails as well, the sheet holds this step.
-  const double inside_area = [&] {
-    double sum = 0;
-    for (const Polygon& p : inside) sum += area(p);
-    return sum;
-  }();
+  const double inside_area = total_area(inside);
   const double tolerance = kAreaRoundOff * area(sheet);
   const auto takes = [&](const std::vector<Polygon>& rest, double expected) {
-    double kept = 0;
-    for (const Polygon& p : rest) kept += area(p);
-    return std::abs(area(sheet) - kept - expected) <= tolerance;
+    return std::abs(area(sheet) - total_area(rest) - expected) <= tolerance;
   };
   bool with_tongues = inside.size() == 1;
   try {

@@ -151,7 +151,8 @@ std::string summary_table(const RunSummary& s) {
                        s.held_edge_overloads);
   if (s.sheet_holds > 0)
     out += fmt::format("  level ice: {:d} times a zone of the sheet at its breaking load was not cut (the cut would have "
-                       "parted the held sheet or left a hole in it): it crushed on (/diagnostics/sheet_holds)\n",
+                       "parted the held sheet or left a hole in it, or could not be made): it crushed on "
+                       "(/diagnostics/sheet_holds)\n",
                        s.sheet_holds);
   if (!s.near_structure_max_ratio.empty()) {
     const auto& r = s.near_structure_max_ratio;
