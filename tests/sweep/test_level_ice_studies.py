@@ -1,0 +1,130 @@
+#!/usr/bin/python3
+"""The analytic level tows' comparisons in docs/model/level_ice.md, on records made here:
+- an ensemble changed in one thing (tools/icedem_tools/studies/level_ice_against.py: the halved step, the
+  crushing law) against the tows without leave_behind, matched by scenario: a uniform +10 % is judged to move
+  by +10.0 % over the starts both ran, each ensemble's mean with its step and its count of starts;
+- the thickness and speed tows (level_ice_thickness_speed.py): a row per run with its loads over ISO's and its
+  crack distance and piece size over l_c, and the figure written;
+- which model lies closer to ISO 19906 (level_ice_report.closer_to_iso): the smallest |log ratio| wins,
+  a factor above as far as the same factor below."""
+import math
+import os
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
+from checks import check, finish  # noqa: E402
+from icedem_tools.sweeps import execute  # noqa: E402
+from icedem_tools.studies import level_ice_against as against, level_ice_analytic as la  # noqa: E402
+from icedem_tools.studies import level_ice_report, level_ice_thickness_speed as ts  # noqa: E402
+
+BASE = """name = "base"
+seeds = 1
+[[scenario]]
+name = "mu02"
+file = "scenarios/level_ice/level_ice_analytic.toml"
+[grid]
+"structure.start_x" = [5.2, 5.201, 5.202]
+"activation.leave_behind" = [0.0]
+"""
+CRUSHING = """name = "crushing"
+seeds = 1
+[[scenario]]
+name = "mu02_crushing"
+file = "scenarios/level_ice/level_ice_analytic.toml"
+set = ["contact.model=\\"crushing\\""]
+[grid]
+"structure.start_x" = [5.2, 5.201]
+"""
+THICKNESS_SPEED = """name = "ts"
+seeds = 1
+[[scenario]]
+name = "mu02"
+file = "scenarios/level_ice/level_ice_analytic.toml"
+[variants]
+slow = ["structure.speed=0.035", "time.duration=560.0"]
+fast = ["structure.speed=0.14", "time.duration=140.0"]
+[grid]
+"ice.thickness" = [0.025, 0.041]
+"""
+MEANS = {5.2: 20.0, 5.201: 22.0, 5.202: 24.0}
+
+
+def record(mean, step=0.02, capped=None):
+    s = {"mean_fx_N": mean, "max_fx_N": 100 * mean, "cpu_time_s": 560.0, "sim_time_s": 280.0, "breaks": 500,
+         "bullet_step_s": step}
+    if capped is not None:
+        s["solver"] = {"capped_window_fraction": capped}
+    return {"summary": s, "window": {"p99_fx_N": 3 * mean, "max_lowpass_fx_N": {"5": 10 * mean, "10": 20 * mean}},
+            "sheet": {"quantiles": [0.25, 0.5, 0.75], "crack_distance_m": [0.2, 0.3, 0.4],
+                      "area_weighted_diameter_m": 0.6, "piece_diameter_m": [0.1, 0.2, 0.3], "breaks": 500,
+                      "pieces": 400}}
+
+
+def design(run):
+    h = ts._set(run, "ice.thickness") or 0.033
+    return {"friction": 0.2, "total_N": 200.0 * h / 0.033, "ralston_total_N": 250.0,
+            "characteristic_length_m": 0.3 * (h / 0.033) ** 0.75}, None
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    files = {}
+    for name, text in (("base", BASE), ("crushing", CRUSHING), ("ts", THICKNESS_SPEED)):
+        files[name] = os.path.join(tmp, name + ".toml")
+        with open(files[name], "w") as f:
+            f.write(text)
+    execute.status = lambda run, out: execute.Status(run, "pending")
+    text = "\n".join(against.section(files["base"], tmp, files["crushing"], tmp, against.CRUSHING,
+                                     lambda n: n.removesuffix("_crushing")))
+    check("No finished run yet" in text, "no finished run: the comparison says so")
+
+    execute.status = lambda run, out: execute.Status(run, "done")
+
+    def load(run, out):
+        start = float(dict(run.grid).get(la.START, 5.2))
+        if run.scenario == "mu02_crushing":
+            return record(1.1 * MEANS[start], step=0.02, capped=0.05)
+        if run.scenario == "mu02" and la.START in dict(run.grid):
+            return record(MEANS[start])
+        return record(10.0 * (ts._set(run, "ice.thickness") / 0.025) * (2.0 if "0.14" in str(run.sets) else 1.0))
+    la.agg.load_record = load
+    ts.agg.load_record = load
+
+    lines = against.section(files["base"], tmp, files["crushing"], tmp, against.CRUSHING,
+                            lambda n: n.removesuffix("_crushing"))
+    rows = [l for l in lines if l.startswith("| mu02_crushing | mu02 | mean |")]
+    half = 4.302653 * 2.0 / math.sqrt(3)
+    check(len(rows) == 1 and f"| 0.02 | 22.0 ± {half:.1f} (3) | 0.02 | 23.1 ± " in rows[0]
+          and "+10.0 %" in rows[0] and "(moves)" in rows[0] and rows[0].endswith("| 2 |"),
+          f"each ensemble's mean with its step and starts, the change over the two starts both ran: {rows}")
+    check(sum(l.startswith("| mu02_crushing | mu02 |") for l in lines) == 4, "four criteria compared")
+    check(any("5.0 % of their analysis windows' steps stopped at the solve's iteration cap" in l for l in lines),
+          "the changed tows' capped steps are told")
+
+    figure = os.path.join(tmp, "ts.png")
+    lines = ts.section(files["ts"], tmp, design, figure)
+    rows = [l for l in lines if l.startswith("| mu02 | 0.2 |")]
+    # h = 0.041 at 0.14 m/s: mean 10 * 0.041 / 0.025 * 2 = 32.8 N; ISO 200 * 0.041 / 0.033 = 248.5 N
+    fast_thick = [l for l in rows if l.startswith("| mu02 | 0.2 | 0.140 | 0.041 |")]
+    iso = 200.0 * 0.041 / 0.033
+    lc = 0.3 * (0.041 / 0.033) ** 0.75
+    check(len(rows) == 4 and len(fast_thick) == 1
+          and f"| 32.8 | 98.4 | 3280.0 | 328.0 | {iso:.1f} | 250.0 | {32.8 / iso:.2f} | {328.0 / iso:.2f} | 500 | "
+          f"{lc:.3f} | {0.3 / lc:.2f} | {0.6 / lc:.2f} | 0.50 |" in fast_thick[0],
+          f"a row per run, its loads over ISO's and its crack and pieces over l_c: {fast_thick}")
+    check(os.path.isfile(figure) and os.path.getsize(figure) > 10000 and any("ts.png" in l for l in lines),
+          "the figure is written and shown")
+
+    lattice = [("r12", 0.2, {"mean": 0.5, "max": 0.7}), ("r20", 0.2, {"mean": 0.4, "max": 0.9})]
+    lines = level_ice_report.closer_to_iso(lattice, [("rigid", {(0.2, "mean"): 1.9, (0.2, "max"): 3.0}),
+                                                     ("crushing", {(0.2, "mean"): 0.6, (0.2, "max"): 1.05})])
+    mean = [l for l in lines if l.startswith("| 0.2 | mean |")]
+    mx = [l for l in lines if l.startswith("| 0.2 | max |")]
+    # mean: |log 0.6| = 0.51 < |log 1.9| = 0.64, |log 0.5| = 0.69; max: |log 1.05| = 0.05 is the smallest
+    check(mean == ["| 0.2 | mean | r12 0.50, r20 0.40 | 1.90 | 0.60 | cut sheet, crushing |"],
+          f"a factor below is as far as the same factor above: {mean}")
+    lines = level_ice_report.closer_to_iso(lattice, [("rigid", {(0.2, "max"): 3.0})])
+    check([l for l in lines if l.startswith("| 0.2 | max |")] == ["| 0.2 | max | r12 0.70, r20 0.90 | 3.00 | "
+                                                                "lattice r20 |"], "the lattice's closest run named")
+    check(mx and mx[0].endswith("| cut sheet, crushing |"), f"the closest of all: {mx}")
+finish()

@@ -1,0 +1,94 @@
+"""The analytic level tow's ensemble changed in one thing, against the tows without leave_behind of the analytic
+sweep, for docs/model/level_ice.md (scripts/level_ice_report --analytic SWEEP with --step STEP_SWEEP, the step
+halved, sweeps/studies/level_ice_analytic_step.toml; --crushing CRUSHING_SWEEP, the crushing contact law,
+sweeps/studies/level_ice_analytic_crushing.toml): per scenario (friction) and criterion, each ensemble's mean
+over its starts and the change over the starts both ran.
+
+The tow is chaotic: a start at a halved step, or under another contact law, parts from the same start's tow
+within the first breaks, so the two are not one path but two draws. The change is still taken over the starts
+both ran (the project's one estimator, stats/verdict.judged_change): pairing independent draws costs nothing in
+bias, and its interval, over few starts, is wide and says so."""
+import math
+import os
+
+from ..runs import spec
+from ..stats import intervals, verdict
+from . import level_ice_analytic as la
+
+
+def _step(members):
+    """The Bullet step (s) of an ensemble's records (summary bullet_step_s), None unless they share one."""
+    steps = {rec["summary"].get("bullet_step_s") for _, rec in members.values()}
+    return steps.pop() if len(steps) == 1 and None not in steps else None
+
+
+def _ensemble(values):
+    v = [x for x in values if x is not None]
+    if not v:
+        return "n/a"
+    m, h = intervals.mean_ci(v)
+    return f"{m:.1f}" + (f" ± {h:.1f}" if len(v) > 1 and not math.isnan(h) else "") + f" ({len(v)})"
+
+
+# (heading, what the changed tows are, why they are run or how to read them)
+STEP = ("### Halving the step", "the same tows at half their step",
+        "The 5 Hz low-passed maximum is the one maximum a step does not set by construction; the unfiltered "
+        "maximum is a single step's.")
+CRUSHING = ("### The crushing contact law",
+            "the same tows with the ice crushing against the cone (contact.model = \"crushing\", at the structure "
+            "only, docs/model/crushing.md) instead of rigid contacts",
+            "The sheet's own contact zones bear load by that law already, while its pieces met the cone rigidly, "
+            "and a piece locked between the cone and the held sheet then took in one step whatever stopped it.")
+
+
+def section(analytic, analytic_out, other, other_out, what, base_of=lambda scenario: scenario):
+    """The page's lines: each scenario's tows of `other` (runs in `other_out`) against the tows of `analytic`
+    (runs in `analytic_out`) without leave_behind, scenario `base_of(name)` there; `what` is (heading, what
+    the other tows are) as STEP and CRUSHING give."""
+    heading, text, why = what
+    L = [heading, "",
+         f"The tows above without leave_behind against {text} (`{os.path.relpath(other, spec.ROOT)}`). {why} The "
+         "tow is chaotic, so a start of these tows is another draw, not the same path: each ensemble's mean over "
+         "its starts (their number in brackets) with Student's 95 % interval, and the change over the starts both "
+         "ran (the log ratio's 95 % interval and verdict, docs/model/estimators.md; wide over few starts).", ""]
+    base = {sc: m for (sc, leave), m in la.configurations(analytic, analytic_out).items() if leave == 0.0}
+    changed = {sc: m for (sc, _), m in la.configurations(other, other_out).items()}
+    if not changed:
+        return L + ["No finished run yet.", ""]
+    L += ["| run | against | criterion | step s | against's | step s | these | change, starts both ran | starts |",
+          "|---|---|---|---|---|---|---|---|---|"]
+    changes, names = {}, {}
+    for scenario in sorted(changed):
+        h_members, b_members = changed[scenario], base.get(base_of(scenario), {})
+        dt_b, dt_h = _step(b_members), _step(h_members)
+        common = sorted(set(h_members) & set(b_members))
+        for label, key in la.CRITERIA.items():
+            a = [la._value(h_members[s][1], key) for s in common]
+            b = [la._value(b_members[s][1], key) for s in common]
+            pairs = [(x, y) for x, y in zip(a, b) if x is not None and y is not None]
+            if len(pairs) >= 2:
+                k = (scenario, label)
+                changes[k] = verdict.judged_change([x for x, _ in pairs], [y for _, y in pairs])
+                names[k] = f"{scenario}: {label}"
+                change = verdict.change_text(changes[k][:3])
+            elif pairs:
+                change = f"{100 * (pairs[0][0] / pairs[0][1] - 1):+.1f} % (one start)"
+            else:
+                change = "n/a"
+            L.append(f"| {scenario} | {base_of(scenario)} | {label} | {'n/a' if dt_b is None else f'{dt_b:g}'} | "
+                     f"{_ensemble(la._value(rec, key) for _, rec in b_members.values())} | "
+                     f"{'n/a' if dt_h is None else f'{dt_h:g}'} | "
+                     f"{_ensemble(la._value(rec, key) for _, rec in h_members.values())} | {change} | {len(pairs)} |")
+    rtf = [rec["summary"]["sim_time_s"] / rec["summary"]["cpu_time_s"] for members in changed.values()
+           for _, rec in members.values() if rec["summary"].get("cpu_time_s")]
+    capped = [(rec["summary"].get("solver") or {}).get("capped_window_fraction") for members in changed.values()
+              for _, rec in members.values()]
+    capped = [c for c in capped if c is not None]
+    if rtf:
+        L += ["", f"These tows ran at {sum(rtf) / len(rtf):.2f} times real time in CPU on average"
+              + (f"; {100 * sum(capped) / len(capped):.1f} % of their analysis windows' steps stopped at the solve's "
+                 "iteration cap above its tolerance (their loads not converged)" if capped else "") + "."]
+    L += [""]
+    if changes:
+        L += [verdict.family_text(changes, lambda k: names[k]), ""]
+    return L

@@ -1,0 +1,118 @@
+"""The analytic level tow over ice thickness and tow speed, for docs/model/level_ice.md (scripts/level_ice_report
+--thickness-speed SWEEP): each finished tow of SWEEP (sweeps/studies/level_ice_thickness_speed.toml: frictions as
+scenarios, speeds as variants, ice.thickness as its grid) beside ISO 19906's and Ralston's loads for its own cone,
+ice and friction, a table and a figure of the mean and the 5 Hz low-passed maximum against thickness, one line
+per speed. One start per point: the analytic ensemble says how far one start scatters."""
+import os
+
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from ..runs import spec  # noqa: E402
+from ..sweeps import aggregate as agg, execute  # noqa: E402
+from ..reports.report_tables import fmt  # noqa: E402
+from . import level_ice_analytic as la  # noqa: E402
+
+THICKNESS, SPEED = "ice.thickness", "structure.speed"
+
+
+def _set(run, key):
+    """The run's value of `key` (a number) from its grid, else its last --set of it; None if neither."""
+    grid = dict(run.grid)
+    if key in grid:
+        return float(grid[key])
+    for s in reversed(run.sets):
+        k, _, v = s.partition("=")
+        if k.strip() == key:
+            return float(v)
+    return None
+
+
+def points(sweep, out, design_loads):
+    """[(scenario, speed m/s, thickness m, record, design loads or None, why not)] of the sweep's finished
+    runs, by scenario, speed, thickness."""
+    _, runs = spec.load(sweep)
+    found = []
+    for r in runs:
+        if execute.status(r, out).state != "done":
+            continue
+        speed = _set(r, SPEED)
+        h = _set(r, THICKNESS) or la.thickness(r)
+        loads, why = design_loads(r)
+        found.append((r.scenario, speed, h, agg.load_record(r, out), loads, why))
+    return sorted(found, key=lambda p: (p[0], p[1] or 0.0, p[2] or 0.0))
+
+
+def figure(found, path):
+    """The mean and the 5 Hz low-passed maximum against thickness, a line per speed, per friction (rows),
+    ISO 19906's and Ralston's loads over the same thicknesses dashed and dotted."""
+    scenarios = sorted({p[0] for p in found})
+    fig, axes = plt.subplots(len(scenarios), 2, figsize=(10, 3.6 * len(scenarios)), squeeze=False)
+    for row, scenario in zip(axes, scenarios):
+        mine = [p for p in found if p[0] == scenario]
+        for ax, (label, key) in zip(row, (("mean", "mean_fx_N"), ("max 5 Hz", la.LOWPASS))):
+            for speed in sorted({p[1] for p in mine}):
+                line = [(p[2], la._value(p[3], key)) for p in mine if p[1] == speed and la._value(p[3], key)]
+                if line:
+                    ax.plot(*zip(*line), "o-", label=f"{speed:g} m/s")
+            design = sorted({(p[2], p[4]["total_N"], p[4]["ralston_total_N"]) for p in mine if p[4]})
+            if design:
+                h = [d[0] for d in design]
+                ax.plot(h, [d[1] for d in design], "k--", label="ISO 19906")
+                ax.plot(h, [d[2] for d in design], "k:", label="Ralston")
+            mu = next((p[4]["friction"] for p in mine if p[4]), None)
+            ax.set_title(f"{scenario}" + (f" (mu {mu:g})" if mu is not None else "") + f": {label}")
+            ax.set_xlabel("ice thickness, m")
+            ax.set_ylabel("surge load, N")
+            ax.set_yscale("log")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def section(sweep, out, design_loads, figure_path=None):
+    """The page's lines on the tows of `sweep` (runs in `out`); design_loads(run) as level_ice_analytic's;
+    with `figure_path`, the figure is written there and the section shows it (by its name: beside the page)."""
+    L = ["### Thickness and speed", "",
+         f"Runs of `{os.path.relpath(sweep, spec.ROOT)}` finished so far: the analytic tow over ice thickness and "
+         "tow speed, each over the same 19.6 m of sheet, the model ice's strength and modulus the paper's; one "
+         "start each (the ensemble above says how far one start scatters). Loads in N, surge, over the analysis "
+         "window, beside ISO 19906 and Ralston for the run's own ice and friction (neither depends on speed). x*: "
+         "the median crack distance; d_w: the pieces' area-weighted diameter; both against the run's "
+         "characteristic length l_c.", ""]
+    found = points(sweep, out, design_loads)
+    if not found:
+        return L + ["No finished run yet.", ""]
+    L += ["| run | mu | speed m/s | h m | mean | p99 | max | max 5 Hz | ISO 19906 | Ralston | mean / ISO | "
+          "max 5 Hz / ISO | breaks | l_c m | x* / l_c | d_w / l_c | real time (CPU) |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for scenario, speed, h, rec, loads, why in found:
+        s = rec["summary"]
+        mean, p99, mx, m5 = (la._value(rec, k) for k in la.CRITERIA.values())
+        iso = loads["total_N"] if loads else None
+        lc = loads["characteristic_length_m"] if loads else None
+        sheet = rec.get("sheet") or {}
+        x = d = None
+        if sheet.get("crack_distance_m"):
+            x = sheet["crack_distance_m"][sheet["quantiles"].index(0.5)]
+        if sheet.get("area_weighted_diameter_m"):
+            d = sheet["area_weighted_diameter_m"]
+        cpu = s.get("cpu_time_s")
+        mu = f"{loads['friction']:g}" if loads else "n/a"
+        L.append(f"| {scenario} | {mu} | "
+                 f"{fmt(speed, digits=3)} | {fmt(h, digits=3)} | {fmt(mean)} | {fmt(p99)} | {fmt(mx)} | {fmt(m5)} | "
+                 f"{fmt(iso) if loads else f'n/a ({why})'} | {fmt(loads['ralston_total_N']) if loads else 'n/a'} | "
+                 f"{fmt(mean / iso if mean and iso else None, digits=2)} | "
+                 f"{fmt(m5 / iso if m5 and iso else None, digits=2)} | {s.get('breaks', 'n/a')} | "
+                 f"{fmt(lc, digits=3)} | {fmt(x / lc if x and lc else None, digits=2)} | "
+                 f"{fmt(d / lc if d and lc else None, digits=2)} | "
+                 f"{fmt(s['sim_time_s'] / cpu if cpu else None, digits=2)} |")
+    if figure_path:
+        figure(found, figure_path)
+        L += ["", f"![mean and 5 Hz maximum against thickness, a line per speed]({os.path.basename(figure_path)})"]
+    return L + [""]
