@@ -10,7 +10,8 @@
 //     magnified) and solver.structure_merit_tolerance where it touches the structure (the
 //     load is read off its impulses, which a loose solve leaves low along force chains);
 //  2. an island left at solver.method_iterations above its merit goes on with
-//     solver.handover_method from that answer (solver.handover_iterations);
+//     solver.handover_method from that answer (solver.handover_iterations), or with Newton
+//     where it has crushing contacts that method does not take;
 //  3. an island whose answer puts a joint's failure ratio within 1 - solver.breaking_ratio
 //     of 1 is solved on from its answer, first to solver.breaking_check_tolerance (where it
 //     stops if every ratio is then clear of 1 by solver.breaking_check_band), else to
@@ -75,10 +76,11 @@ class IslandSolve {
   double tolerance(const ContactProblem& problem) const;
 
  private:
-  // whether the second-order methods (the hand-over, the finisher) can take the problem: they
-  // fold the joints into the mass matrix, which a rigid joint row (compliance 0) does not
-  // allow, and not every one takes crushing contacts (the registry's takes_crushing)
-  bool finishable(const ContactProblem& problem) const;
+  // the second-order method that goes on with `problem` left at the cap and finishes its breaking solves: the
+  // hand-over method, or Newton where the problem has crushing contacts the hand-over method does not take (the
+  // registry's takes_crushing); null where none can (a rigid joint row, which they cannot fold into the mass
+  // matrix) or where it would be the method itself
+  ContactMethod* finisher(const ContactProblem& problem) const;
 
   SolverSettings settings_;
   JointRatio joint_ratio_;
@@ -86,6 +88,7 @@ class IslandSolve {
   std::string finishing_method_;              // handover_'s: settings_.handover_method, or Newton with "none"
   std::unique_ptr<ContactMethod> method_;     // null: the sweeps
   std::unique_ptr<ContactMethod> handover_;   // goes on with what the method left at its cap; finishes breaking solves
+  std::unique_ptr<ContactMethod> crushing_finisher_;  // Newton, for crushing islands handover_ does not take
   // the finishing method's iterations in a breaking solve: Newton needed at most 485 of its steps
   // to 3e-6 on the lattices' breaking steps, the interior-point method 26-571 on a level sheet's
   static constexpr int kBreakingFinishIterations = 1000;

@@ -152,8 +152,10 @@ std::vector<KeySpec> make_keys() {
                      "with the stiffness of a lattice's joints: on a level sheet's islands it reaches the joints' "
                      "merit in about 10 iterations from the gradient method's capped answer where that method "
                      "takes 16,000 steps; over 50 s of level ice it left 0.8 % of the steps capped where 32 % were, "
-                     "at 1.09 times the CPU (docs/model/contact_problems.md). \"none\": the island stays capped, "
-                     "labelled, and the Newton method finishes the breaking solves (as before 2026-11-28)"));
+                     "at 1.09 times the CPU (docs/model/contact_problems.md). An island with crushing contacts, which "
+                     "the interior-point method does not take, goes on with the Newton method instead. \"none\": the "
+                     "island stays capped, labelled, and the Newton method finishes the breaking solves (as before "
+                     "2026-11-28)"));
   k.push_back(integer("solver.handover_iterations", 100, 1, 100000,
                       "solver.method other than \"pgs\": cap of solver.handover_method's iterations on an island "
                       "handed over at solver.method_iterations"));

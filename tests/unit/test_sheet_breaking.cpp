@@ -394,5 +394,25 @@ TEST(SheetBreaking, APartReachingNoHeldEdgeLeaves) {
   EXPECT_NEAR(area(cut.sheet) + total_area(cut.pieces) + cut.slivers, area(sheet), 1e-12 * area(sheet));
 }
 
+// A cut across a patch recorded from the paper's tow (mu 0.3, started at 5.201 m, leave_behind 6 m, 108.16 s; a
+// floe's push): its region, cut out of half-planes as squares, two of which had sides on one line, came out empty from
+// Boost and the run stopped. Written down as its trapezoid, at an edge through the load across it the piece is the
+// trapezoid's half within the sheet, 2 a x_c + x_c^2 (to round-off)
+TEST(SheetBreaking, TheRegionAcrossAPatchOfTheTowIsItsTrapezoid) {
+  const Eigen::Vector2d c(13.929497929642871, -1.9059728050136762), d(-0.43309320218659886, -0.90134914335109784);
+  const Eigen::Vector2d n(-d.y(), d.x());
+  const Polygon sheet = make_ccw({c - 5 * n, c + 5 * n, c + 5 * n + 5 * d, c - 5 * n + 5 * d});
+  const SheetContact contact = load_at(c, d, 0.75155887255711207);
+  SheetBreakPlan plan;
+  plan.opening_angle = 2.6165922989837456;
+  plan.crack = SheetCrack::kAcrossPatch;
+  plan.crack_distance = 0.40576135856317513;
+  const SheetCut cut = cut_sheet(sheet, contact, plan, kIce.thickness);
+  ASSERT_EQ(cut.pieces.size(), 1u);
+  const double x = plan.crack_distance, trapezoid = 2 * contact.half_width * x + x * x;
+  EXPECT_NEAR(area(cut.pieces[0]), trapezoid, 1e-9 * trapezoid);
+  EXPECT_NEAR(area(cut.sheet) + total_area(cut.pieces), area(sheet), 1e-12 * area(sheet));
+}
+
 }  // namespace
 }  // namespace icedem
