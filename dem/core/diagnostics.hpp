@@ -93,7 +93,8 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
      &StepDiagnostics::breaking_capped, Reduction::kCount},
     {"handovers", "1",
      "islands the method left at solver.method_iterations above their merit in the step, which "
-     "solver.handover_method went on with from that answer (solver_capped says whether it reached the merit)",
+     "solver.handover_method (Newton for crushing contacts it does not take) went on with from that answer "
+     "(solver_capped says whether it reached the merit)",
      &StepDiagnostics::handovers, Reduction::kCount},
     {"runaways", "1",
      "answers of a later stage in the step (the hand-over at the cap, a breaking solve's further stages) not "

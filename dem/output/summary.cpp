@@ -52,9 +52,10 @@ std::string solver_line(const SolverSummary& v) {
                        "breaking_decided, breaking_capped)\n",
                        long(n.breaking_solves), v.breaking_tolerance, long(n.breaking_decided), long(n.breaking_capped));
   if (n.handovers > 0)
-    out += fmt::format("  {} islands left at the cap above their merit went on with {} from that answer (their "
-                       "iterations count above; /diagnostics/handovers)\n",
-                       long(n.handovers), v.handover_method);
+    out += fmt::format("  {} islands left at the cap above their merit went on with {} from that answer, or with "
+                       "newton where they held crushing contacts {} does not take (their iterations count above; "
+                       "/diagnostics/handovers)\n",
+                       long(n.handovers), v.handover_method, v.handover_method);
   if (n.runaways > 0)
     out += fmt::format("  {} answers of a later stage (hand-over, breaking solves) not taken: they lowered the merit by "
                        "growing the island's impulses over tenfold, the answer before kept (/diagnostics/runaways)\n",

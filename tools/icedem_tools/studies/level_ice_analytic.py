@@ -34,6 +34,17 @@ def _value(record, key):
     return None if v is None else float(v)
 
 
+def at_the_cap(records):
+    """"k/n": of the n records that describe their window's largest steps (aggregate.largest_steps), the k whose
+    largest load fell at a step whose solve reached its cap (an island handed over there, or left capped); "n/a"
+    when none describes them."""
+    steps = [rec.get("window", {}).get("largest_steps") for rec in records]
+    steps = [s[0] for s in steps if s]
+    if not steps:
+        return "n/a"
+    return f"{sum(bool(s.get('handovers')) or bool(s.get('capped')) for s in steps)}/{len(steps)}"
+
+
 def configurations(sweep, out):
     """{(scenario, leave_behind m): {start_x: (run, record)}} of the sweep's finished runs."""
     _, runs = spec.load(sweep)
@@ -113,10 +124,14 @@ def section(sweep, out, design_loads):
         return L + ["No finished run yet.", ""]
     L += ["Loads in N, surge, over the analysis window; max 5 Hz: the largest of the load low-passed at 5 Hz (a "
           "rigid contact's largest loads are single steps of the pieces locked between the cone and the held sheet: "
-          "the step sets them, not the ice).", "",
+          "the step sets them, not the ice). Max at the cap: of the starts whose records describe their largest "
+          "steps, those whose largest load fell at a step whose solve reached its iteration cap (handed over there, "
+          "or left capped): a piece locked between the moving cone and the held sheet has no rigid answer, and "
+          "the solve runs to its cap.", "",
           "| run | mu | leave m | starts | mean | p99 | max (mean of the starts') | max 5 Hz | largest max | "
-          "ISO 19906 | Ralston | largest max / ISO | largest max 5 Hz / ISO | breaks a tow | real time (CPU) |",
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+          "ISO 19906 | Ralston | largest max / ISO | largest max 5 Hz / ISO | breaks a tow | real time (CPU) | "
+          "max at the cap |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for (scenario, leave), members in sorted(configs.items()):
         recs = [rec for _, rec in members.values()]
         run = next(iter(members.values()))[0]
@@ -140,7 +155,7 @@ def section(sweep, out, design_loads):
         else:
             mu, design = "n/a", [f"n/a ({why})", "n/a", "n/a", "n/a"]
         L.append(f"| {scenario} | {mu} | {leave:g} | {len(recs)} | {' | '.join(cells)} | {largest:.1f} | "
-                 f"{' | '.join(design)} | {breaks:.0f} | {rtf} |")
+                 f"{' | '.join(design)} | {breaks:.0f} | {rtf} | {at_the_cap(recs)} |")
     L += sheet_table(configs, lc_h(configs, design_loads))
     # leave_behind against none, start by start
     changes, names = {}, {}

@@ -217,12 +217,33 @@ def sheet_record(run):
             "quantiles": list(SHEET_QUANTILES)}
 
 
+# how many of a window's largest loads a record describes step by step (largest_steps)
+LARGEST_STEPS = 5
+
+
+def largest_steps(run, t, x, inside, count=LARGEST_STEPS):
+    """The window's `count` largest surge loads, largest first, each with what the contact solve did in its step: its
+    iterations, whether an island was handed over at the cap and whether one stayed capped (/diagnostics; None where
+    the run does not have them). A rigid contact that locks a piece between the cone and the held sheet has no
+    answer short of an impulse the step sets, and its solve runs to the cap: the step's load is the solver's, not the
+    ice's."""
+    index = np.flatnonzero(inside)
+    top = index[np.argsort(x[index])[::-1][:count]]
+
+    def column(name, k):
+        path = "/diagnostics/" + name
+        return int(run[path][k]) if path in run and len(run[path]) > k else None
+    return [{"time_s": float(t[k]), "surge_N": float(x[k]), "iterations": column("solver_iterations", k),
+             "handovers": column("handovers", k), "capped": column("solver_capped", k)} for k in top]
+
+
 def make_record(run_dir):
     """The record of a finished run, from its directory: its summary, the Welch spectrum of its
     surge load over the analysis window (up to RECORD_MAX_HZ), its breaks (every field of
     /fracture/events, mode and mechanism also by name), the sizes of the pieces they broke off
     (pieces.summary; kept since 2026-11-27) and, for level ice cut by closed forms, its breaks' crack
-    distances and its pieces (sheet_record; kept since 2026-11-30)."""
+    distances and its pieces (sheet_record; kept since 2026-11-30); and the window's largest loads step by step
+    with what the contact solve did there (largest_steps; kept since 2026-11-30)."""
     summary = results.load_summary(os.path.join(run_dir, RUN_FILES["summary"]))
     freq, power, events, window = [], [], [], {}
     run = results.load_run(os.path.join(run_dir, RUN_FILES["h5"]))
@@ -236,6 +257,7 @@ def make_record(run_dir):
         if sel.any():  # the load a run exceeds 1 % of its window, less driven by one event than the max
             window["p99_fx_N"] = float(np.quantile(x[sel], 0.99))
             window["max_lowpass_fx_N"] = lowpass_maxima(t, x, sel)
+            window["largest_steps"] = largest_steps(run, t, x, sel)
     ev = run.events
     fields = [k for k in (ev.dtype.names or ()) if k not in ("mode_name", "mechanism_name")]
     for row in ev:
@@ -259,7 +281,7 @@ SAME_RUN_KEYS = ("steps", "mean_fx_N", "max_fx_N", "breaks")
 def load_record(run, out):
     """The record of a finished run: the kept file when the sweep keeps records and it is at
     least as new as the run's summary (and has the window's quantiles and filtered maxima, kept since
-    2026-11-26); else made from the run's directory (reading its HDF5 file) and kept. A kept record
+    2026-11-26, and its largest steps, kept since 2026-11-30); else made from the run's directory (reading its HDF5 file) and kept. A kept record
     is never replaced by a run directory holding another run (a figure's rerun by another build:
     its SAME_RUN_KEYS differ): the record stays, and a warning names the directory."""
     from . import execute
@@ -273,7 +295,7 @@ def load_record(run, out):
     kept = existing if existing is not None and (
         not os.path.isfile(summary) or os.path.getmtime(run.record_file) >= os.path.getmtime(summary)) else None
     finished_here = execute.finished_here(run, out)
-    if finished_here and (kept is None or "max_lowpass_fx_N" not in kept.get("window", {})):
+    if finished_here and (kept is None or "largest_steps" not in kept.get("window", {})):
         if existing is not None:
             here = results.load_summary(summary)
             was = existing["summary"]
