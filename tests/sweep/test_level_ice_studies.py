@@ -74,7 +74,7 @@ with tempfile.TemporaryDirectory() as tmp:
         with open(files[name], "w") as f:
             f.write(text)
     execute.status = lambda run, out: execute.Status(run, "pending")
-    text = "\n".join(against.section(files["base"], tmp, files["crushing"], tmp, against.CRUSHING,
+    text = "\n".join(against.section([(files["base"], tmp)], files["crushing"], tmp, against.CRUSHING,
                                      lambda n: n.removesuffix("_crushing")))
     check("No finished run yet" in text, "no finished run: the comparison says so")
 
@@ -90,7 +90,7 @@ with tempfile.TemporaryDirectory() as tmp:
     la.agg.load_record = load
     ts.agg.load_record = load
 
-    lines = against.section(files["base"], tmp, files["crushing"], tmp, against.CRUSHING,
+    lines = against.section([(files["base"], tmp)], files["crushing"], tmp, against.CRUSHING,
                             lambda n: n.removesuffix("_crushing"))
     rows = [l for l in lines if l.startswith("| mu02_crushing | mu02 | mean |")]
     half = 4.302653 * 2.0 / math.sqrt(3)
@@ -114,6 +114,7 @@ with tempfile.TemporaryDirectory() as tmp:
           f"a row per run, its loads over ISO's and its crack and pieces over l_c: {fast_thick}")
     check(os.path.isfile(figure) and os.path.getsize(figure) > 10000 and any("ts.png" in l for l in lines),
           "the figure is written and shown")
+    check("Contact law: rigid (contact.model)." in lines, "the runs' contact law is said (rigid: none --set)")
 
     lattice = [("r12", 0.2, {"mean": 0.5, "max": 0.7}), ("r20", 0.2, {"mean": 0.4, "max": 0.9})]
     lines = level_ice_report.closer_to_iso(lattice, [("rigid", {(0.2, "mean"): 1.9, (0.2, "max"): 3.0}),

@@ -31,7 +31,7 @@ def _ensemble(values):
 
 
 # (heading, what the changed tows are, why they are run or how to read them)
-STEP = ("### Halving the step", "the same tows at half their step",
+STEP = ("### Halving the step", "the same tows at half their step (each against the tows above of its scenario's name)",
         "The 5 Hz low-passed maximum is the one maximum a step does not set by construction; the unfiltered "
         "maximum is a single step's.")
 CRUSHING = ("### The crushing contact law",
@@ -41,17 +41,17 @@ CRUSHING = ("### The crushing contact law",
             "and a piece locked between the cone and the held sheet then took in one step whatever stopped it.")
 
 
-def section(analytic, analytic_out, other, other_out, what, base_of=lambda scenario: scenario):
-    """The page's lines: each scenario's tows of `other` (runs in `other_out`) against the tows of `analytic`
-    (runs in `analytic_out`) without leave_behind, scenario `base_of(name)` there; `what` is (heading, what
-    the other tows are) as STEP and CRUSHING give."""
+def section(bases, other, other_out, what, base_of=lambda scenario: scenario):
+    """The page's lines: each scenario's tows of `other` (runs in `other_out`) against the tows without
+    leave_behind of scenario `base_of(name)` in the sweeps `bases` ([(sweep file, run directory)], their scenarios'
+    names distinct); `what` is STEP or CRUSHING."""
     heading, text, why = what
     L = [heading, "",
          f"The tows above without leave_behind against {text} (`{os.path.relpath(other, spec.ROOT)}`). {why} The "
          "tow is chaotic, so a start of these tows is another draw, not the same path: each ensemble's mean over "
          "its starts (their number in brackets) with Student's 95 % interval, and the change over the starts both "
          "ran (the log ratio's 95 % interval and verdict, docs/model/estimators.md; wide over few starts).", ""]
-    base = {sc: m for (sc, leave), m in la.configurations(analytic, analytic_out).items() if leave == 0.0}
+    base = {sc: m for sweep, out in bases for (sc, leave), m in la.configurations(sweep, out).items() if leave == 0.0}
     changed = {sc: m for (sc, _), m in la.configurations(other, other_out).items()}
     if not changed:
         return L + ["No finished run yet.", ""]

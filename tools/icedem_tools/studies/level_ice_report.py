@@ -110,7 +110,8 @@ def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thick
          thickness_speed_out=None, figure=None):
     """The page's Markdown lines for the sweep file `sweep` with its runs in `out`, and, with `analytic`
     (a sweep file of analytic tows, runs in `analytic_out`), their section, the same tows changed in one thing
-    (`against`: [(sweep file, run directory, what, base_of)] as level_ice_against.section takes), the tows over
+    (`against`: [(sweep file, run directory, what, base_of)] as level_ice_against.section takes, each against the
+    analytic tows and the crushing ones), the tows over
     thickness and speed (`thickness_speed`, runs in `thickness_speed_out`, their figure written to `figure`),
     and which model lies closer to ISO 19906."""
     name, runs = spec.load(sweep)
@@ -188,8 +189,11 @@ def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thick
     if analytic:
         design = lambda run: design_loads(icedem, run)  # noqa: E731
         L += level_ice_analytic.section(analytic, analytic_out, design)
+        # each changed ensemble against the tows of its scenario's base name among the analytic and crushing sweeps
+        bases = [(analytic, analytic_out)] + [(o, o_out) for o, o_out, what, _ in against
+                                              if what == level_ice_against.CRUSHING]
         for other, other_out, what, base_of in against:
-            L += level_ice_against.section(analytic, analytic_out, other, other_out, what, base_of)
+            L += level_ice_against.section(bases, other, other_out, what, base_of)
         if thickness_speed:
             L += level_ice_thickness_speed.section(thickness_speed, thickness_speed_out, design, figure)
         sheets = [("rigid", sheet_ratios(analytic, analytic_out, design))]

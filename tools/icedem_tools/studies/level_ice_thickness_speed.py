@@ -31,9 +31,18 @@ def _set(run, key):
     return None
 
 
+def law(run):
+    """The run's contact law: its last --set of contact.model, else the scenario's default, "rigid"."""
+    for s in reversed(run.sets):
+        k, _, v = s.partition("=")
+        if k.strip() == "contact.model":
+            return v.strip().strip('"')
+    return "rigid"
+
+
 def points(sweep, out, design_loads):
-    """[(scenario, speed m/s, thickness m, record, design loads or None, why not)] of the sweep's finished
-    runs, by scenario, speed, thickness."""
+    """[(scenario, speed m/s, thickness m, record, design loads or None, why not, contact law)] of the sweep's
+    finished runs, by scenario, speed, thickness."""
     _, runs = spec.load(sweep)
     found = []
     for r in runs:
@@ -42,7 +51,7 @@ def points(sweep, out, design_loads):
         speed = _set(r, SPEED)
         h = _set(r, THICKNESS) or la.thickness(r)
         loads, why = design_loads(r)
-        found.append((r.scenario, speed, h, agg.load_record(r, out), loads, why))
+        found.append((r.scenario, speed, h, agg.load_record(r, out), loads, why, law(r)))
     return sorted(found, key=lambda p: (p[0], p[1] or 0.0, p[2] or 0.0))
 
 
@@ -88,10 +97,11 @@ def section(sweep, out, design_loads, figure_path=None):
     found = points(sweep, out, design_loads)
     if not found:
         return L + ["No finished run yet.", ""]
-    L += ["| run | mu | speed m/s | h m | mean | p99 | max | max 5 Hz | ISO 19906 | Ralston | mean / ISO | "
+    L += [f"Contact law: {', '.join(sorted({p[6] for p in found}))} (contact.model).", "",
+          "| run | mu | speed m/s | h m | mean | p99 | max | max 5 Hz | ISO 19906 | Ralston | mean / ISO | "
           "max 5 Hz / ISO | breaks | l_c m | x* / l_c | d_w / l_c | real time (CPU) |",
           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for scenario, speed, h, rec, loads, why in found:
+    for scenario, speed, h, rec, loads, why, _ in found:
         s = rec["summary"]
         mean, p99, mx, m5 = (la._value(rec, k) for k in la.CRITERIA.values())
         iso = loads["total_N"] if loads else None
