@@ -7,7 +7,8 @@
 #   scripts/bench.sh [--duration SECONDS] [--quick]
 #   scripts/bench.sh --level-ice [--duration SECONDS]
 #                                 the level tow cut by closed forms (scenarios/level_ice/level_ice_analytic.toml,
-#                                 default 120 s) at both frictions, and with crushing contacts, the first row the
+#                                 default 120 s) at both frictions, rigid and crushing at the cone, with every
+#                                 contact crushing and with the channel left behind at 3 m, the first row the
 #                                 baseline: its cost grows with the broken channel behind the cone, so the
 #                                 duration is part of the figure
 #   scripts/bench.sh --micro      the Google Benchmark microbenchmarks of the hot paths
@@ -64,7 +65,10 @@ if [ "${level_ice:-0}" = 1 ]; then
   variants=(
     "analytic level tow, mu 0.2 (rigid contacts, the default)|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2"
     "analytic level tow, mu 0.3|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.3"
+    "analytic level tow, mu 0.2, crushing at the cone|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2 contact.model=crushing"
+    "analytic level tow, mu 0.3, crushing at the cone|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.3 contact.model=crushing"
     "analytic level tow, mu 0.2, every ice contact crushing|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2 contact.model=crushing contact.crushing_contacts=all"
+    "analytic level tow, mu 0.2, pieces 3 m behind the axis leave|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2 activation.leave_behind=3.0"
   )
 fi
 

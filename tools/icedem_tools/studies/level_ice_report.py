@@ -12,10 +12,11 @@ are upper references (ISO's over-predicted 50 field events by a factor of about 
 --out is the sweep's run directory (default sweeps/<name>); finished runs count (or their kept
 records), so it can report while the sweep runs. Without --report the page is printed. --analytic adds
 the tows of the sheet cut by closed forms over their starts (studies/level_ice_analytic.py), their runs in
---analytic-out (default sweeps/<its name>); with it, --step adds the same tows at a halved step against them
-and --crushing under the crushing contact law (studies/level_ice_against.py), and --thickness-speed the tows over ice thickness and speed with their figure,
-written beside --report (studies/level_ice_thickness_speed.py); and the page says which model of level ice,
-the lattice or the sheet cut by closed forms, lies closer to ISO 19906, criterion by criterion."""
+--analytic-out (default sweeps/<its name>); with it, --crushing adds the same tows under the crushing contact
+law and --step the crushing tows at a halved step, each against the tows of its scenario's name
+(studies/level_ice_against.py), and --thickness-speed the tows over ice thickness and speed with their figure,
+written beside --report (studies/level_ice_thickness_speed.py); and the page says which model of level ice, the
+lattice or the sheet cut by closed forms, lies closer to ISO 19906, criterion by criterion."""
 import os
 import tomllib
 
@@ -95,12 +96,13 @@ def closer_to_iso(lattice, sheets):
     keys = sorted({k for _, r in sheets for k in r}, key=lambda k: (k[0], order.index(k[1])))
     rows = 0
     for mu, label in keys:
-        runs = [(f"lattice {name}", ratios[label]) for name, m, ratios in lattice if m == mu and ratios.get(label)]
+        runs = [(name, ratios[label]) for name, m, ratios in lattice if m == mu and ratios.get(label)]
         if not runs:
             continue
-        mine = [(f"cut sheet, {n}", r.get((mu, label))) for n, r in sheets]
-        closest = min(runs + [c for c in mine if c[1]], key=lambda c: abs(np.log(c[1])))[0]
-        L.append(f"| {mu:g} | {label} | {', '.join(f'{n[8:]} {r:.2f}' for n, r in runs)} | "
+        mine = [(n, r.get((mu, label))) for n, r in sheets]
+        candidates = [(f"lattice {n}", r) for n, r in runs] + [(f"cut sheet, {n}", r) for n, r in mine if r]
+        closest = min(candidates, key=lambda c: abs(np.log(c[1])))[0]
+        L.append(f"| {mu:g} | {label} | {', '.join(f'{n} {r:.2f}' for n, r in runs)} | "
                  + " | ".join("n/a" if r is None else f"{r:.2f}" for _, r in mine) + f" | {closest} |")
         rows += 1
     return L + ([] if rows else ["No friction both models ran at yet."]) + [""]
@@ -111,9 +113,8 @@ def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thick
     """The page's Markdown lines for the sweep file `sweep` with its runs in `out`, and, with `analytic`
     (a sweep file of analytic tows, runs in `analytic_out`), their section, the same tows changed in one thing
     (`against`: [(sweep file, run directory, what, base_of)] as level_ice_against.section takes, each against the
-    analytic tows and the crushing ones), the tows over
-    thickness and speed (`thickness_speed`, runs in `thickness_speed_out`, their figure written to `figure`),
-    and which model lies closer to ISO 19906."""
+    analytic tows and the crushing ones), the tows over thickness and speed (`thickness_speed`, runs in
+    `thickness_speed_out`, their figure written to `figure`), and which model lies closer to ISO 19906."""
     name, runs = spec.load(sweep)
     L = [f"# {name}: level ice against ISO 19906 and Ralston", "",
          f"Runs of `{os.path.relpath(sweep, spec.ROOT)}` finished so far (`scripts/level_ice_report`). "
@@ -210,8 +211,8 @@ def main(argv=None):
         ap.add_argument("--analytic", help="a sweep file of analytic level tows over starts "
                         "(sweeps/studies/level_ice_analytic.toml): their section")
         ap.add_argument("--analytic-out", help="its run directory (default: sweeps/<its name>)")
-        ap.add_argument("--step", help="with --analytic: a sweep file of the same tows at a halved step "
-                        "(sweeps/studies/level_ice_analytic_step.toml)")
+        ap.add_argument("--step", help="with --analytic: a sweep file of the same tows at a halved step, its scenarios "
+                        "named as the tows they are compared with (sweeps/studies/level_ice_analytic_step.toml)")
         ap.add_argument("--step-out", help="its run directory (default: sweeps/<its name>)")
         ap.add_argument("--crushing", help="with --analytic: a sweep file of the same tows under the crushing "
                         "contact law, its scenarios named <analytic scenario>_crushing "
