@@ -128,4 +128,8 @@ with tempfile.TemporaryDirectory() as tmp:
     check([l for l in lines if l.startswith("| 0.2 | max |")] == ["| 0.2 | max | r12 0.70, r20 0.90 | 3.00 | "
                                                                 "lattice r20 |"], "the lattice's closest run named")
     check(mx and mx[0].endswith("| cut sheet, crushing |"), f"the closest of all: {mx}")
+    lines = level_ice_report.closer_to_iso(lattice, [("rigid", {(0.2, "mean"): 1.9, (0.2, "max"): 3.0})])
+    # mean: |log 1.9| = 0.64 < |log 0.5| = 0.69, the cut sheet; max: |log 0.9| = 0.11, the lattice
+    check("Of the 2 criteria and frictions compared, the closest: cut sheet, rigid 1, the lattice 1." in lines,
+          f"the closest counted: {lines[-2]}")
 finish()

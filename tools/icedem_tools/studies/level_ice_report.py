@@ -94,7 +94,7 @@ def closer_to_iso(lattice, sheets):
          + " | closest |", "|---|---|---|" + "---|" * len(names) + "---|"]
     order = list(level_ice_analytic.CRITERIA)
     keys = sorted({k for _, r in sheets for k in r}, key=lambda k: (k[0], order.index(k[1])))
-    rows = 0
+    rows, wins = 0, {}
     for mu, label in keys:
         runs = [(name, ratios[label]) for name, m, ratios in lattice if m == mu and ratios.get(label)]
         if not runs:
@@ -102,10 +102,15 @@ def closer_to_iso(lattice, sheets):
         mine = [(n, r.get((mu, label))) for n, r in sheets]
         candidates = [(f"lattice {n}", r) for n, r in runs] + [(f"cut sheet, {n}", r) for n, r in mine if r]
         closest = min(candidates, key=lambda c: abs(np.log(c[1])))[0]
+        model = "the lattice" if closest.startswith("lattice") else closest
+        wins[model] = wins.get(model, 0) + 1
         L.append(f"| {mu:g} | {label} | {', '.join(f'{n} {r:.2f}' for n, r in runs)} | "
                  + " | ".join("n/a" if r is None else f"{r:.2f}" for _, r in mine) + f" | {closest} |")
         rows += 1
-    return L + ([] if rows else ["No friction both models ran at yet."]) + [""]
+    if not rows:
+        return L + ["No friction both models ran at yet.", ""]
+    return L + ["", f"Of the {rows} criteria and frictions compared, the closest: "
+                + ", ".join(f"{m} {k}" for m, k in sorted(wins.items(), key=lambda w: (-w[1], w[0]))) + ".", ""]
 
 
 def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thickness_speed=None,
