@@ -3,6 +3,7 @@
 scenarios, speeds as variants, ice.thickness as its grid) beside ISO 19906's and Ralston's loads for its own cone,
 ice and friction, a table and a figure of the mean and the 5 Hz low-passed maximum against thickness, one line
 per speed. One start per point: the analytic ensemble says how far one start scatters."""
+import dataclasses
 import os
 
 import matplotlib
@@ -40,39 +41,49 @@ def law(run):
     return "rigid"
 
 
+@dataclasses.dataclass
+class Tow:
+    scenario: str
+    speed: float      # m/s
+    thickness: float  # m
+    record: dict      # aggregate.load_record's
+    loads: dict       # `icedem cone-load` for the run, or None
+    why: str          # why there are no design loads, or None
+    law: str          # contact.model
+
+
 def points(sweep, out, design_loads):
-    """[(scenario, speed m/s, thickness m, record, design loads or None, why not, contact law)] of the sweep's
-    finished runs, by scenario, speed, thickness."""
+    """The sweep's finished tows (Tow), by scenario, speed, thickness."""
     _, runs = spec.load(sweep)
     found = []
     for r in runs:
         if execute.status(r, out).state != "done":
             continue
-        speed = _set(r, SPEED)
-        h = _set(r, THICKNESS) or la.thickness(r)
         loads, why = design_loads(r)
-        found.append((r.scenario, speed, h, agg.load_record(r, out), loads, why, law(r)))
-    return sorted(found, key=lambda p: (p[0], p[1] or 0.0, p[2] or 0.0))
+        found.append(Tow(r.scenario, _set(r, SPEED), _set(r, THICKNESS) or la.thickness(r), agg.load_record(r, out),
+                         loads, why, law(r)))
+    return sorted(found, key=lambda t: (t.scenario, t.speed or 0.0, t.thickness or 0.0))
 
 
 def figure(found, path):
     """The mean and the 5 Hz low-passed maximum against thickness, a line per speed, per friction (rows),
     ISO 19906's and Ralston's loads over the same thicknesses dashed and dotted."""
-    scenarios = sorted({p[0] for p in found})
+    scenarios = sorted({t.scenario for t in found})
     fig, axes = plt.subplots(len(scenarios), 2, figsize=(10, 3.6 * len(scenarios)), squeeze=False)
     for row, scenario in zip(axes, scenarios):
-        mine = [p for p in found if p[0] == scenario]
+        mine = [t for t in found if t.scenario == scenario]
         for ax, (label, key) in zip(row, (("mean", "mean_fx_N"), ("max 5 Hz", la.LOWPASS))):
-            for speed in sorted({p[1] for p in mine}):
-                line = [(p[2], la._value(p[3], key)) for p in mine if p[1] == speed and la._value(p[3], key)]
+            for speed in sorted({t.speed for t in mine}):
+                line = [(t.thickness, la._value(t.record, key)) for t in mine
+                        if t.speed == speed and la._value(t.record, key)]
                 if line:
                     ax.plot(*zip(*line), "o-", label=f"{speed:g} m/s")
-            design = sorted({(p[2], p[4]["total_N"], p[4]["ralston_total_N"]) for p in mine if p[4]})
+            design = sorted({(t.thickness, t.loads["total_N"], t.loads["ralston_total_N"]) for t in mine if t.loads})
             if design:
                 h = [d[0] for d in design]
                 ax.plot(h, [d[1] for d in design], "k--", label="ISO 19906")
                 ax.plot(h, [d[2] for d in design], "k:", label="Ralston")
-            mu = next((p[4]["friction"] for p in mine if p[4]), None)
+            mu = next((t.loads["friction"] for t in mine if t.loads), None)
             ax.set_title(f"{scenario}" + (f" (mu {mu:g})" if mu is not None else "") + f": {label}")
             ax.set_xlabel("ice thickness, m")
             ax.set_ylabel("surge load, N")
@@ -97,11 +108,12 @@ def section(sweep, out, design_loads, figure_path=None):
     found = points(sweep, out, design_loads)
     if not found:
         return L + ["No finished run yet.", ""]
-    L += [f"Contact law: {', '.join(sorted({p[6] for p in found}))} (contact.model).", "",
+    L += [f"Contact law: {', '.join(sorted({t.law for t in found}))} (contact.model).", "",
           "| run | mu | speed m/s | h m | mean | p99 | max | max 5 Hz | ISO 19906 | Ralston | mean / ISO | "
           "max 5 Hz / ISO | breaks | l_c m | x* / l_c | d_w / l_c | real time (CPU) |",
           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for scenario, speed, h, rec, loads, why, _ in found:
+    for t in found:
+        scenario, speed, h, rec, loads, why = t.scenario, t.speed, t.thickness, t.record, t.loads, t.why
         s = rec["summary"]
         mean, p99, mx, m5 = (la._value(rec, k) for k in la.CRITERIA.values())
         iso = loads["total_N"] if loads else None
