@@ -50,9 +50,10 @@ SolverAnswer IslandSolve::solve(const ContactProblem& problem, SolverReport& rep
   // the gradient method's count of steps grows with the island's stiffness (a lattice's
   // joints, a level sheet's above all), the interior-point method's hardly: an island left at
   // the cap goes on from that answer (docs/model/contact_problems.md, "The interior-point method")
-  ContactMethod* const finishing = method_ ? finisher(problem) : nullptr;
-  if (settings_.handover_method != "none" && finishing && answer.residual > options.tolerance &&
-      answer.sweeps >= options.max_iterations) {
+  // (which method goes on is asked only there: it reads every joint row and contact of the island)
+  ContactMethod* finishing = nullptr;
+  if (settings_.handover_method != "none" && answer.residual > options.tolerance &&
+      answer.sweeps >= options.max_iterations && (finishing = finisher(problem))) {
     MethodOptions more = options;
     more.max_iterations = settings_.handover_iterations;
     SolverAnswer next = finishing->solve(started_from(problem, answer), more);
@@ -103,7 +104,7 @@ SolverAnswer IslandSolve::solve(const ContactProblem& problem, SolverReport& rep
       // lattices' breaking steps one island in 17 stayed at 2e-5 after 20,000 gradient steps,
       // where Newton reached 3e-6 in 327 of its steps): what the first method leaves above the
       // tolerance, the hand-over method (else Newton) finishes from its best answer
-      if (answer.residual > settings_.breaking_merit_tolerance && finishing) {
+      if (answer.residual > settings_.breaking_merit_tolerance && (finishing = finisher(problem))) {
         options.max_iterations = kBreakingFinishIterations;
         keep_better(finishing->solve(started_from(problem, answer), options));
       }

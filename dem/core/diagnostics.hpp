@@ -119,8 +119,8 @@ inline constexpr DiagnosticColumn kDiagnosticColumns[] = {
     {"sheet_holds", "1",
      "level ice cut by closed forms: the sheet's loaded zones at or over their breaking load that were not cut at the "
      "end of the step (summed over its substeps): the cut would have parted the held sheet in two or left a hole in "
-     "it, no ice lay within its crack, or Boost.Geometry's difference did not take the broken ice from the sheet. The sheet holds them and they crush on (docs/model/breakage.md, \"Level "
-     "ice cut by closed forms\")",
+     "it, no ice lay within its crack, or Boost.Geometry's difference did not take the broken ice from the sheet. "
+     "The sheet holds them and they crush on (docs/model/breakage.md, \"Level ice cut by closed forms\")",
      &StepDiagnostics::sheet_holds},
 };
 inline constexpr std::size_t kDiagnosticCount = std::size(kDiagnosticColumns);
