@@ -14,6 +14,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
 from checks import check, finish  # noqa: E402
+from icedem_tools.runs import spec  # noqa: E402
 from icedem_tools.sweeps import execute  # noqa: E402
 from icedem_tools.studies import level_ice_against as against, level_ice_analytic as la  # noqa: E402
 from icedem_tools.studies import level_ice_report, level_ice_thickness_speed as ts  # noqa: E402
@@ -62,7 +63,7 @@ def record(mean, step=0.02, capped=None):
 
 
 def design(run):
-    h = ts._set(run, "ice.thickness") or 0.033
+    h = spec.run_value(run, "ice.thickness") or 0.033
     return {"friction": 0.2, "total_N": 200.0 * h / 0.033, "ralston_total_N": 250.0,
             "characteristic_length_m": 0.3 * (h / 0.033) ** 0.75}, None
 
@@ -86,7 +87,7 @@ with tempfile.TemporaryDirectory() as tmp:
             return record(1.1 * MEANS[start], step=0.02, capped=0.05)
         if run.scenario == "mu02" and la.START in dict(run.grid):
             return record(MEANS[start])
-        return record(10.0 * (ts._set(run, "ice.thickness") / 0.025) * (2.0 if "0.14" in str(run.sets) else 1.0))
+        return record(10.0 * (spec.run_value(run, "ice.thickness") / 0.025) * (2.0 if "0.14" in str(run.sets) else 1.0))
     la.agg.load_record = load
     ts.agg.load_record = load
 

@@ -233,15 +233,27 @@ def key_default(key):
     raise KeyError(key)
 
 
+def run_value(run, key):
+    """A scenario key's value in a run: its last --set of it (the sweep's, its scenario's, its variant's and its
+    grid's are all among run.sets), else its scenario file's, else icedem's default. A --set value that is not TOML
+    (a bare word) is taken as the text it is. OSError if the scenario file cannot be read."""
+    for s in reversed(run.sets):
+        k, _, value = s.partition("=")
+        if k.strip() == key:
+            try:
+                return tomllib.loads("v = " + value)["v"]
+            except tomllib.TOMLDecodeError:
+                return value.strip()
+    with open(run.scenario_file, "rb") as f:
+        table = tomllib.load(f)
+    *sections, name = key.split(".")
+    for section in sections:
+        table = table.get(section, {})
+    return table[name] if name in table else key_default(key)
+
+
 def bullet_step(run):
     """The Bullet step a run takes, time.dt / time.substeps, s: from its --set values (the last wins),
     else its scenario file, else icedem's defaults. Read from what the sweep declares, since a run's
     record keeps only its outer step."""
-    with open(run.scenario_file, "rb") as f:
-        time = tomllib.load(f).get("time", {})
-    values = {"dt": time.get("dt", key_default("time.dt")), "substeps": time.get("substeps", key_default("time.substeps"))}
-    for s in run.sets:
-        key, _, value = s.partition("=")
-        if key in ("time.dt", "time.substeps"):
-            values[key[5:]] = tomllib.loads("v = " + value)["v"]
-    return values["dt"] / values["substeps"]
+    return run_value(run, "time.dt") / run_value(run, "time.substeps")

@@ -8,11 +8,10 @@ The tow is chaotic: a start at a halved step, or under another contact law, part
 within the first breaks, so the two are not one path but two draws. The change is still taken over the starts
 both ran (the project's one estimator, stats/verdict.judged_change): pairing independent draws costs nothing in
 bias, and its interval, over few starts, is wide and says so."""
-import math
 import os
 
 from ..runs import spec
-from ..stats import intervals, verdict
+from ..stats import verdict
 from . import level_ice_analytic as la
 
 
@@ -23,11 +22,9 @@ def _step(members):
 
 
 def _ensemble(values):
+    """An ensemble's mean with its interval (level_ice_analytic.mean_text) and its number of starts."""
     v = [x for x in values if x is not None]
-    if not v:
-        return "n/a"
-    m, h = intervals.mean_ci(v)
-    return f"{m:.1f}" + (f" ± {h:.1f}" if len(v) > 1 and not math.isnan(h) else "") + f" ({len(v)})"
+    return la.mean_text(v) + (f" ({len(v)})" if v else "")
 
 
 # (heading, what the changed tows are, why they are run or how to read them)

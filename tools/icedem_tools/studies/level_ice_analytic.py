@@ -34,6 +34,16 @@ def _value(record, key):
     return None if v is None else float(v)
 
 
+def mean_text(values):
+    """The mean of `values` (None left out) with Student's 95 % half-width where there are two or more, as the
+    pages print it ("22.0 ± 5.0"); "n/a" for none."""
+    v = [x for x in values if x is not None]
+    if not v:
+        return "n/a"
+    m, h = intervals.mean_ci(v)
+    return f"{m:.1f}" + (f" ± {h:.1f}" if len(v) > 1 else "")
+
+
 def at_the_cap(records):
     """"k/n": of the n records that describe their window's largest steps (aggregate.largest_steps), the k whose
     largest load fell at a step whose solve reached its cap (an island handed over there, or left capped); "n/a"
@@ -59,14 +69,9 @@ def configurations(sweep, out):
 
 
 def thickness(run):
-    """The run's ice.thickness (m): its last --set of it, else its scenario file's; None if neither says."""
-    for s in reversed(run.sets):
-        key, _, value = s.partition("=")
-        if key.strip() == "ice.thickness":
-            return float(value)
+    """The run's ice.thickness (m) (spec.run_value); None if its scenario file cannot be read."""
     try:
-        with open(run.scenario_file, "rb") as f:
-            return float(tomllib.load(f)["ice"]["thickness"])
+        return float(spec.run_value(run, "ice.thickness"))
     except (OSError, KeyError, ValueError, tomllib.TOMLDecodeError):
         return None
 
@@ -136,11 +141,7 @@ def section(sweep, out, design_loads):
         recs = [rec for _, rec in members.values()]
         run = next(iter(members.values()))[0]
         loads, why = design_loads(run)
-        cells = []
-        for key in CRITERIA.values():
-            v = [x for x in (_value(rec, key) for rec in recs) if x is not None]
-            m, h = intervals.mean_ci(v) if v else (None, None)
-            cells.append("n/a" if m is None else f"{m:.1f}" + (f" ± {h:.1f}" if len(v) > 1 else ""))
+        cells = [mean_text(_value(rec, key) for rec in recs) for key in CRITERIA.values()]
         largest = max((_value(rec, "max_fx_N") or 0.0) for rec in recs)
         largest_5 = max((_value(rec, LOWPASS) or 0.0) for rec in recs)
         breaks = np.mean([rec["summary"].get("breaks", 0) for rec in recs])

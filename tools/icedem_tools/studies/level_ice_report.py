@@ -43,18 +43,9 @@ def bullet_step(run, summary):
     if summary.get("bullet_step_s"):
         return float(summary["bullet_step_s"])
     try:
-        with open(run.scenario_file, "rb") as f:
-            time = tomllib.load(f).get("time", {})
+        return spec.bullet_step(run)
     except (OSError, tomllib.TOMLDecodeError):
         return None
-    dt, substeps = float(time.get("dt", 0.02)), int(time.get("substeps", 1))
-    for s in run.sets:
-        key, _, value = s.partition("=")
-        if key.strip() == "time.dt":
-            dt = float(value)
-        elif key.strip() == "time.substeps":
-            substeps = int(value)
-    return dt / substeps
 
 
 def breaking_lengths(record):
@@ -193,18 +184,23 @@ def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thick
     L += pieces.table(piece_rows)
     L += [""]
     if analytic:
-        design = lambda run: design_loads(icedem, run)  # noqa: E731
+        # one `icedem cone-load` per scenario and --set's: the sections ask again for the same runs
+        known = {}
+
+        def design(run):
+            key = (run.scenario_file, tuple(run.sets))
+            if key not in known:
+                known[key] = design_loads(icedem, run)
+            return known[key]
         L += level_ice_analytic.section(analytic, analytic_out, design)
+        crushing = [(o, o_out) for o, o_out, what, _ in against if what == level_ice_against.CRUSHING]
         # each changed ensemble against the tows of its scenario's base name among the analytic and crushing sweeps
-        bases = [(analytic, analytic_out)] + [(o, o_out) for o, o_out, what, _ in against
-                                              if what == level_ice_against.CRUSHING]
         for other, other_out, what, base_of in against:
-            L += level_ice_against.section(bases, other, other_out, what, base_of)
+            L += level_ice_against.section([(analytic, analytic_out)] + crushing, other, other_out, what, base_of)
         if thickness_speed:
             L += level_ice_thickness_speed.section(thickness_speed, thickness_speed_out, design, figure)
         sheets = [("rigid", sheet_ratios(analytic, analytic_out, design))]
-        sheets += [("crushing", sheet_ratios(o, o_out, design)) for o, o_out, what, _ in against
-                   if what == level_ice_against.CRUSHING]
+        sheets += [("crushing", sheet_ratios(o, o_out, design)) for o, o_out in crushing]
         L += closer_to_iso(lattice, sheets)
     return L
 

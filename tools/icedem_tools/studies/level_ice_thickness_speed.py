@@ -17,28 +17,7 @@ from ..sweeps import aggregate as agg, execute  # noqa: E402
 from ..reports.report_tables import fmt  # noqa: E402
 from . import level_ice_analytic as la  # noqa: E402
 
-THICKNESS, SPEED = "ice.thickness", "structure.speed"
-
-
-def _set(run, key):
-    """The run's value of `key` (a number) from its grid, else its last --set of it; None if neither."""
-    grid = dict(run.grid)
-    if key in grid:
-        return float(grid[key])
-    for s in reversed(run.sets):
-        k, _, v = s.partition("=")
-        if k.strip() == key:
-            return float(v)
-    return None
-
-
-def law(run):
-    """The run's contact law: its last --set of contact.model, else the scenario's default, "rigid"."""
-    for s in reversed(run.sets):
-        k, _, v = s.partition("=")
-        if k.strip() == "contact.model":
-            return v.strip().strip('"')
-    return "rigid"
+SPEED = "structure.speed"
 
 
 @dataclasses.dataclass
@@ -60,8 +39,8 @@ def points(sweep, out, design_loads):
         if execute.status(r, out).state != "done":
             continue
         loads, why = design_loads(r)
-        found.append(Tow(r.scenario, _set(r, SPEED), _set(r, THICKNESS) or la.thickness(r), agg.load_record(r, out),
-                         loads, why, law(r)))
+        found.append(Tow(r.scenario, float(spec.run_value(r, SPEED)), la.thickness(r), agg.load_record(r, out),
+                         loads, why, spec.run_value(r, "contact.model")))
     return sorted(found, key=lambda t: (t.scenario, t.speed or 0.0, t.thickness or 0.0))
 
 
