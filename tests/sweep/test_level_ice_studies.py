@@ -133,4 +133,28 @@ with tempfile.TemporaryDirectory() as tmp:
     # mean: |log 1.9| = 0.64 < |log 0.5| = 0.69, the cut sheet; max: |log 0.9| = 0.11, the lattice
     check("Of the 2 criteria and frictions compared, the closest: cut sheet, rigid 1, the lattice 1." in lines,
           f"the closest counted: {lines[-2]}")
+
+    # why: ISO's terms, the cut sheet's breaks (a metre of tow, crack over l_c, the zone's force), the ratios inside
+    # the lattice's range
+    iso = {0.2: {"friction": 0.2, "total_N": 200.0, "breaking_N": 150.0, "crack_width_m": 2.0,
+                  "characteristic_length_m": 0.4}}
+    rec = record(20.0)
+    rec["fracture_events"] = [{"floe": -1, "touching_structure": 1, "structure_force": f} for f in (30.0, 50.0, 70.0)]
+    rec["fracture_events"] += [{"floe": 3, "touching_structure": 1, "structure_force": 900.0},  # a piece's split
+                               {"floe": -1, "touching_structure": 0, "structure_force": 0.0}]  # a floe's patch
+    la.agg.load_record = lambda run, out: rec
+    breaking = level_ice_report.sheet_breaking(files["crushing"], tmp, lambda run: (iso[0.2], None))
+    # 500 breaks over 0.07 m/s x 280 s = 19.6 m; crack 0.3 m over l_c 0.4 m; the median of the cone's zones 50 N
+    check(list(breaking) == [0.2] and abs(breaking[0.2][0] - 500 / 19.6) < 1e-9 and abs(breaking[0.2][1] - 0.75)
+          < 1e-12 and breaking[0.2][2] == 50.0, f"the sheet's breaks a metre, crack over l_c, the zone's force: {breaking}")
+    lines = level_ice_report.why_below_iso(iso, lattice, [("crushing", {(0.2, "mean"): 0.45, (0.2, "max"): 1.2})],
+                                           {"crushing": breaking})
+    text = " ".join(lines)
+    check("200.0 N: 150.0 N the breaking term" in text and "2.00 m wide, and 50.0 N pushing" in text
+          and "broke 26 times a metre of tow, its cracks 0.75 l_c" in text and "median of 50.0 N" in text
+          and "0.33 of ISO's breaking term" in text and "is 4.8 times that force" in text,
+          f"ISO's terms and the sheet's breaks told from the records: {text}")
+    # mean 0.45 lies in the lattice's 0.40-0.50, max 1.2 above its 0.70-0.90
+    check("Of the 2 ratios of the cut sheet's ensembles compared, 1 lie within the range" in text
+          and ": crushing mean;" in text, f"the ratios within the lattice's spread counted: {text}")
 finish()
