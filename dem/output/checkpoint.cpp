@@ -125,8 +125,12 @@ void write_world(const H5::Group& g, const WorldState& world) {
   std::vector<btManifoldPoint> points;
   std::vector<int> has_memory;
   std::vector<btVector3> memory;
+  std::vector<int> crushed;
+  std::vector<double> crushed_depth;
   for (const ManifoldState& m : world.manifolds) {
     rows.push_back({m.body0, m.body1, static_cast<int>(points.size()), static_cast<int>(m.points.size())});
+    crushed.push_back(m.crushed);
+    crushed_depth.push_back(m.crushed_depth);
     points.insert(points.end(), m.points.begin(), m.points.end());
     has_memory.insert(has_memory.end(), m.has_friction_memory.begin(), m.has_friction_memory.end());
     memory.insert(memory.end(), m.friction_memory.begin(), m.friction_memory.end());
@@ -135,6 +139,8 @@ void write_world(const H5::Group& g, const WorldState& world) {
   write_records(g, "contact_points", points);
   write_records(g, "friction_remembered", has_memory);
   write_records(g, "friction_memory", memory);
+  write_records(g, "manifold_crushed", crushed);
+  write_records(g, "manifold_crushed_depth", crushed_depth);
 }
 
 WorldState read_world(const H5::Group& g, const std::string& path) {
@@ -148,7 +154,18 @@ WorldState read_world(const H5::Group& g, const std::string& path) {
   const std::vector<btManifoldPoint> points = read_records<btManifoldPoint>(g, "contact_points", path);
   const std::vector<int> has_memory = read_records<int>(g, "friction_remembered", path);
   const std::vector<btVector3> memory = read_records<btVector3>(g, "friction_memory", path);
-  for (const ManifoldRow& r : rows) {
+  // the crushed ice of crushing manifolds (none in a checkpoint made before it was kept)
+  std::vector<int> crushed(rows.size(), 0);
+  std::vector<double> crushed_depth(rows.size(), 0.0);
+  if (g.nameExists("manifold_crushed")) {
+    crushed = read_records<int>(g, "manifold_crushed", path);
+    crushed_depth = read_records<double>(g, "manifold_crushed_depth", path);
+  }
+  if (crushed.size() != rows.size() || crushed_depth.size() != rows.size())
+    throw InputError(fmt::format("{}: the checkpoint's crushed ice does not match its contact manifolds: the file is "
+                                 "damaged", path));
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const ManifoldRow& r = rows[k];
     if (r.first < 0 || r.count <= 0 || static_cast<std::size_t>(r.first + r.count) > points.size() ||
         points.size() != has_memory.size() || points.size() != memory.size())
       throw InputError(fmt::format("{}: the checkpoint's contact points do not add up: the file is damaged", path));
@@ -158,6 +175,8 @@ WorldState read_world(const H5::Group& g, const std::string& path) {
     m.points.assign(points.begin() + r.first, points.begin() + r.first + r.count);
     m.has_friction_memory.assign(has_memory.begin() + r.first, has_memory.begin() + r.first + r.count);
     m.friction_memory.assign(memory.begin() + r.first, memory.begin() + r.first + r.count);
+    m.crushed = crushed[k];
+    m.crushed_depth = crushed_depth[k];
     world.manifolds.push_back(std::move(m));
   }
   return world;

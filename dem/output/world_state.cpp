@@ -107,6 +107,10 @@ WorldState capture_world(const World& world) {
       ms.has_friction_memory.push_back(memory ? 1 : 0);
       ms.friction_memory.push_back(memory ? *memory : btVector3(0, 0, 0));
     }
+    if (const CrushedIce::Memory* crushed = world.contact_solver().crushed_ice().remembered(&manifold)) {
+      ms.crushed = crushed->crushing ? 2 : 1;
+      ms.crushed_depth = crushed->depth;
+    }
     s.manifolds.push_back(std::move(ms));
   }
   return s;
@@ -236,6 +240,9 @@ void restore_world(World& world, const WorldState& s) {
         world.contact_solver().remember_friction(&target->getContactPoint(at),
                                                  swap ? -ms.friction_memory[p] : ms.friction_memory[p]);
     }
+    if (ms.crushed)
+      world.contact_solver().crushed_ice().remember(
+          target, CrushedIce::Memory{target->getBody0(), target->getBody1(), ms.crushed_depth, ms.crushed == 2});
   }
 
   // velocities, frozen floes and sleep as they were

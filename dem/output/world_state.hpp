@@ -38,6 +38,9 @@ struct ManifoldState {
   std::vector<btManifoldPoint> points;    // Bullet's points, as they are (user data cleared)
   std::vector<int> has_friction_memory;   // per point: 1 if the solver remembers its friction impulse
   std::vector<btVector3> friction_memory; // per point: that impulse on body0, N s, world frame
+  int crushed = 0;                        // the crushed ice the solver remembers (dem/world/crushing_contact.hpp):
+                                          // 0 none, 1 below its bound, 2 crushing at it
+  double crushed_depth = 0.0;             // m
 };
 
 struct WorldState {

@@ -83,6 +83,7 @@ void ContactSolver::prepareSolve(int numBodies, int numManifolds) {
   btSequentialImpulseConstraintSolver::prepareSolve(numBodies, numManifolds);
   std::swap(friction_previous_, friction_current_);
   friction_current_.clear();
+  crushed_.next_step();
   friction_current_.reserve(friction_previous_.size());
 }
 
@@ -90,6 +91,7 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
                                     const btContactSolverInfo& info) {
   structure_rows_.clear();
   normal_caps_.clear();
+  crushing_manifolds_.clear();
   two_directions_ = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
   sorted_manifolds_.assign(manifolds, manifolds + numManifolds);
   if (settings_.order != SweepOrder::kBullet)
@@ -107,15 +109,18 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
     if (law_.crushing_force > 0 && end > first)
       for (int r = first; r < end; ++r)
         m_tmpSolverContactConstraintPool[r].m_upperLimit = law_.crushing_force * info.m_timeStep / (end - first);
-    // crushing: each row carries at most its share of what the overlap bears, and the overlap,
-    // crushed ice, stays (no split-impulse push apart)
+    // crushing: each row carries at most its share of what the overlap bears, and the crushed
+    // ice stays: the position pass pushes out only the overlap beyond it (crushing_contact.hpp)
     if (law_.crushing) {
       normal_caps_.resize(end, std::numeric_limits<double>::infinity());
-      if (const auto cap = crushing_cap(manifold, *law_.crushing, info.m_timeStep, !law_.crushing_everywhere))
+      if (const auto cap = crushing_cap(manifold, *law_.crushing, info.m_timeStep, !law_.crushing_everywhere)) {
+        const double crushed = crushed_.depth(manifold);
         for (int r = first; r < end; ++r) {
           normal_caps_[r] = *cap;
-          m_tmpSolverContactConstraintPool[r].m_rhsPenetration = 0;
+          push_beyond(m_tmpSolverContactConstraintPool[r], crushed, info);
         }
+        crushing_manifolds_.push_back({&manifold, first, end});
+      }
     }
     if (on_structure) {
       const double sign = manifold.getBody0() == structure_ ? 1.0 : -1.0;
@@ -214,6 +219,21 @@ void ContactSolver::warm_start_friction(int first_row, const btContactSolverInfo
         b.internalApplyImpulse(f.m_contactNormal2 * b.internalGetInvMass(), f.m_angularComponentB, f.m_appliedImpulse);
     }
   }
+}
+
+// Bullet's row corrects the point's whole overlap, in the position pass (split impulse) or in the
+// velocity row (Baumgarte), at the rate erp: here only the overlap deeper than `crushed`
+void ContactSolver::push_beyond(btSolverConstraint& row, double crushed, const btContactSolverInfo& info) {
+  const auto& point = *static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
+  const double penetration = point.getDistance() + info.m_linearSlop;
+  if (penetration >= 0) return;  // no overlap: Bullet's row has no position term
+  const bool split = info.m_splitImpulse && penetration <= info.m_splitImpulsePenetrationThreshold;
+  const double rate = (split ? info.m_erp2 : info.m_erp) / info.m_timeStep * row.m_jacDiagABInv;
+  const double whole = -penetration * rate, beyond = std::max(0.0, -penetration - crushed) * rate;
+  if (split)
+    row.m_rhsPenetration = beyond;
+  else
+    row.m_rhs += beyond - whole;
 }
 
 void ContactSolver::build_order(bool from_structure) {
@@ -479,6 +499,14 @@ void ContactSolver::convertBodies(btCollisionObject** bodies, int numBodies, con
 
 btScalar ContactSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies,
                                                       const btContactSolverInfo& info) {
+  // which crushing manifolds crushed: a row at its bound (within the merit's relative tolerance, to
+  // which the method solves) closes, and the overlap it reaches over the step is crushed ice
+  for (const CrushingRows& m : crushing_manifolds_) {
+    bool crushing = false;
+    for (int r = m.first; r < m.end && !crushing; ++r)
+      crushing = m_tmpSolverContactConstraintPool[r].m_appliedImpulse >= (1.0 - kAtBound) * normal_caps_[r];
+    crushed_.set_crushing(*m.manifold, crushing);
+  }
   // remember each point's friction impulse as a world vector for the next step
   if (settings_.friction_warm_start) {
     for (int r = 0; r < m_tmpSolverContactConstraintPool.size(); ++r) {

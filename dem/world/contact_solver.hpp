@@ -24,8 +24,9 @@
 //    cannot press on each other harder than the ice can bear;
 //  - optionally gives the ice's contacts the crushing law (contact.model =
 //    "crushing", dem/contact/crushing.hpp): each contact row of ice carries at
-//    most the force its overlap bears (dem/world/crushing_contact.hpp), and its
-//    overlap, the crushed ice, is not pushed out by the position pass;
+//    most the force its overlap bears (dem/world/crushing_contact.hpp), and the
+//    overlap it reached while crushing, the crushed ice, is not pushed out by the
+//    position pass (only the overlap beyond it is);
 //  - reports per step the sweeps used, the final residual and whether the cap
 //    stopped an island before it converged.
 // With warm_start 0.85 (Bullet's), no friction warm start, Bullet's row order
@@ -68,6 +69,7 @@
 #include "dem/contact/island_solve.hpp"
 #include "dem/contact/problem.hpp"
 #include "dem/contact/solver_settings.hpp"
+#include "dem/world/crushing_contact.hpp"
 #include "dem/world/static_friction.hpp"
 
 namespace icedem {
@@ -136,6 +138,10 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   /// from a checkpoint).
   void remember_friction(const btManifoldPoint* point, const btVector3& impulse);
 
+  /// The crushed depth of each crushing manifold (contact.model = "crushing"), carried from step to step.
+  CrushedIce& crushed_ice() { return crushed_; }
+  const CrushedIce& crushed_ice() const { return crushed_; }
+
   /// A manifold's place in the canonical order (SweepOrder::kCanonical): the bodies it joins,
   /// then the child shapes its first point names. Sums over manifolds in this order do not
   /// depend on the order of Bullet's arrays (the load cell's, in a world rebuilt from a checkpoint).
@@ -192,6 +198,14 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
     btVector3 tangent;        // friction impulse on body A, world frame, N s
   };
 
+  // a crushing manifold's rows in the group's pool
+  struct CrushingRows {
+    const btPersistentManifold* manifold;
+    int first, end;
+  };
+  // how close to its bound a row's impulse is at its bound: the merit's relative tolerance
+  static constexpr double kAtBound = 1e-3;
+
   // per solver body of the group: its mass and radius, and its velocity change so far
   struct BodyScale {
     double mass = 0;    // kg; 0 for fixed and kinematic bodies
@@ -204,6 +218,8 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   void warm_start_friction(int first_row, const btContactSolverInfo& info);
   void stick_or_slip(const btPersistentManifold& manifold, int first_row, bool on_structure);
   void build_order(bool from_structure);
+  // limit a crushing row's position correction to the overlap beyond the crushed depth `crushed` (m)
+  static void push_beyond(btSolverConstraint& row, double crushed, const btContactSolverInfo& info);
   // one sweep over the joint rows (those with sweeps left) and, if `contacts`, the contact rows
   // in the given direction of the order; returns the largest change of a contact impulse, N s
   double sweep(int iteration, bool contacts, bool reverse);
@@ -229,6 +245,8 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   bool two_directions_ = false;               // two friction rows per contact (else one), set per group
   std::vector<int> order_;                    // contact rows of the current group, sweep order
   std::vector<double> normal_caps_;           // each contact row's largest normal impulse (law_.crushing), N s
+  std::vector<CrushingRows> crushing_manifolds_;  // of the current group
+  CrushedIce crushed_;
   std::vector<BodyScale> bodies_;             // solver bodies of the current group
   // the group's manifolds and joints in the order their rows are made: Bullet's (SweepOrder::kBullet),
   // else canonical (sorted by the bodies and joints they act on)

@@ -91,6 +91,42 @@ double nominal_area(const btCollisionObject& a, const btCollisionObject& b, cons
 
 }  // namespace
 
+double manifold_overlap(const btPersistentManifold& manifold) {
+  double deepest = 0.0;
+  for (int i = 0; i < manifold.getNumContacts(); ++i)
+    deepest = std::max(deepest, -double(manifold.getContactPoint(i).getDistance()));
+  return deepest;
+}
+
+void CrushedIce::next_step() {
+  std::swap(previous_, current_);
+  current_.clear();
+}
+
+double CrushedIce::depth(const btPersistentManifold& manifold) {
+  const double overlap = manifold_overlap(manifold);
+  const auto it = previous_.find(&manifold);
+  const bool known = it != previous_.end() && it->second.a == manifold.getBody0() && it->second.b == manifold.getBody1();
+  double d = overlap;
+  if (known) d = it->second.crushing ? std::max(it->second.depth, overlap) : std::min(it->second.depth, overlap);
+  current_[&manifold] = Memory{manifold.getBody0(), manifold.getBody1(), d, false};
+  return d;
+}
+
+void CrushedIce::set_crushing(const btPersistentManifold& manifold, bool crushing) {
+  const auto it = current_.find(&manifold);
+  if (it != current_.end()) it->second.crushing = crushing;
+}
+
+const CrushedIce::Memory* CrushedIce::remembered(const btPersistentManifold* manifold) const {
+  const auto it = current_.find(manifold);
+  if (it == current_.end() || it->second.a != manifold->getBody0() || it->second.b != manifold->getBody1())
+    return nullptr;
+  return &it->second;
+}
+
+void CrushedIce::remember(const btPersistentManifold* manifold, const Memory& memory) { current_[manifold] = memory; }
+
 std::optional<double> crushing_cap(const btPersistentManifold& manifold, const CrushingLaw& law, double h,
                                    bool structure_only) {
   const btCollisionObject& a = *manifold.getBody0();

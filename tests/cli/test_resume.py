@@ -11,9 +11,9 @@ SIGKILL once it has written its checkpoint at t = 5, 15 and 25 s, resumed with
 `icedem resume`, and every dataset and the /stats attributes compared, bit for bit. A kill
 during a checkpoint write is reproduced by what it leaves on the disk: a torn temporary
 checkpoint and a torn output file. Then a run of breakable floes killed between two groups
-of breaks, one of rigid floes that split (their pieces are bodies made mid-run) and one of level ice cut by
-closed forms. `icedem info` and refusals are checked on the way,
-and checkpoints changed or damaged after they were written are refused.
+of breaks, one of rigid floes that split (their pieces are bodies made mid-run), one of level ice cut by
+closed forms, a moored structure, one under the crushing contact law and floes left behind. `icedem info`
+and refusals are checked on the way, and checkpoints changed or damaged after they were written are refused.
 """
 import json
 import os
@@ -224,6 +224,20 @@ with h5py.File("moored_full.h5", "r") as f:
           "the moored run meets the ice after t = 25 s and the ice moves the structure")
 killed_and_resumed("moored_killed.h5", 25.0, scenario, moored_options, moored_full, "the moored run",
                    "the structure's motions and the mooring's load")
+
+# the crushing contact law at the structure (contact.model = "crushing"): its bounds, hand-overs to Newton and each
+# crushing manifold's crushed depth (dem/world/crushing_contact.hpp; in the checkpoint, though at a step's end it
+# rarely differs from the manifold's overlap, which a world rebuilt without it would take: this run resumes alike
+# either way); killed in the ice after the checkpoint at 25 s, the resumed run ends as the uninterrupted one
+crushing_options = every + ["--set", 'contact.model="crushing"']
+p = run("run", scenario, "-q", "-o", "crushing_full.h5", *crushing_options)
+crushing_full = contents("crushing_full.h5")
+with h5py.File("crushing_full.h5", "r") as f:
+    t = f["load/time"][:]
+    check(p.returncode == 0 and (f["load/cone_contacts"][:][(t > 20.0) & (t < 30.0)] > 0).any(),
+          "the crushing run is in the ice around t = 25 s")
+killed_and_resumed("crushing_killed.h5", 25.0, scenario, crushing_options, crushing_full, "the crushing run",
+                   "the crushed ice")
 
 # floes left behind (activation.leave_behind): the short tow started 1 m past its field's end and towed away
 # from it, every floe in the world from the start, so that the line 2.5 m behind the cone sweeps the field and
