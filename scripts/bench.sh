@@ -63,12 +63,12 @@ variants=(
 [ -n "$float_bin" ] && variants+=("float precision|$float_bin|")
 if [ "${level_ice:-0}" = 1 ]; then
   variants=(
-    "analytic level tow, mu 0.2 (rigid contacts, the default)|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2"
-    "analytic level tow, mu 0.3|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.3"
-    "analytic level tow, mu 0.2, crushing at the cone|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2 contact.model=crushing"
-    "analytic level tow, mu 0.3, crushing at the cone|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.3 contact.model=crushing"
+    "analytic level tow, mu 0.2, rigid contacts|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2 contact.model=rigid"
+    "analytic level tow, mu 0.3, rigid contacts|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.3 contact.model=rigid"
+    "analytic level tow, mu 0.2, crushing at the cone (the scenario's)|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2 contact.model=crushing"
+    "analytic level tow, mu 0.3, crushing at the cone (the scenario's)|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.3 contact.model=crushing"
     "analytic level tow, mu 0.2, every ice contact crushing|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2 contact.model=crushing contact.crushing_contacts=all"
-    "analytic level tow, mu 0.2, pieces 3 m behind the axis leave|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2 activation.leave_behind=3.0"
+    "analytic level tow, mu 0.2, rigid, pieces 3 m behind the axis leave|$ICEDEM_BUILD/dem/icedem|friction.ice_structure=0.2 contact.model=rigid activation.leave_behind=3.0"
   )
 fi
 

@@ -115,7 +115,8 @@ with tempfile.TemporaryDirectory() as tmp:
           f"a row per run, its loads over ISO's and its crack and pieces over l_c: {fast_thick}")
     check(os.path.isfile(figure) and os.path.getsize(figure) > 10000 and any("ts.png" in l for l in lines),
           "the figure is written and shown")
-    check("Contact law: rigid (contact.model)." in lines, "the runs' contact law is said (rigid: none --set)")
+    check("Contact law: crushing (contact.model)." in lines,
+          "the runs' contact law is said (none --set: the scenario file's, crushing)")
 
     lattice = [("r12", 0.2, {"mean": 0.5, "max": 0.7}), ("r20", 0.2, {"mean": 0.4, "max": 0.9})]
     lines = level_ice_report.closer_to_iso(lattice, [("rigid", {(0.2, "mean"): 1.9, (0.2, "max"): 3.0}),
