@@ -83,8 +83,8 @@ void ContactSolver::prepareSolve(int numBodies, int numManifolds) {
   btSequentialImpulseConstraintSolver::prepareSolve(numBodies, numManifolds);
   std::swap(friction_previous_, friction_current_);
   friction_current_.clear();
-  crushed_.next_step();
   friction_current_.reserve(friction_previous_.size());
+  crushed_.next_step();
 }
 
 void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds,

@@ -155,7 +155,7 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   const SolverReport& report() const { return report_; }
 
   // Bullet's per-step hook: the friction impulses of the last step become the
-  // ones to warm-start from
+  // ones to warm-start from, and its crushed ice the one this step starts from
   void prepareSolve(int numBodies, int numManifolds) override;
 
   // One island's solve, its bodies first put in the canonical order (their user index 2, as

@@ -106,7 +106,8 @@ void CrushedIce::next_step() {
 double CrushedIce::depth(const btPersistentManifold& manifold) {
   const double overlap = manifold_overlap(manifold);
   const auto it = previous_.find(&manifold);
-  const bool known = it != previous_.end() && it->second.a == manifold.getBody0() && it->second.b == manifold.getBody1();
+  const bool known =
+      it != previous_.end() && it->second.a == manifold.getBody0() && it->second.b == manifold.getBody1();
   double d = overlap;
   if (known) d = it->second.crushing ? std::max(it->second.depth, overlap) : std::min(it->second.depth, overlap);
   current_[&manifold] = Memory{manifold.getBody0(), manifold.getBody1(), d, false};

@@ -31,7 +31,8 @@ constexpr double kSpeed = 0.07;        // m/s along the face's normal
 double deepest_overlap(btDiscreteDynamicsWorld& world) {
   double depth = 0;
   btDispatcher& d = *world.getDispatcher();
-  for (int m = 0; m < d.getNumManifolds(); ++m) depth = std::max(depth, icedem::manifold_overlap(*d.getManifoldByIndexInternal(m)));
+  for (int m = 0; m < d.getNumManifolds(); ++m)
+    depth = std::max(depth, icedem::manifold_overlap(*d.getManifoldByIndexInternal(m)));
   return depth;
 }
 

@@ -147,7 +147,8 @@ with tempfile.TemporaryDirectory() as tmp:
     breaking = level_ice_report.sheet_breaking(files["crushing"], tmp, lambda run: (iso[0.2], None))
     # 500 breaks over 0.07 m/s x 280 s = 19.6 m; crack 0.3 m over l_c 0.4 m; the median of the cone's zones 50 N
     check(list(breaking) == [0.2] and abs(breaking[0.2][0] - 500 / 19.6) < 1e-9 and abs(breaking[0.2][1] - 0.75)
-          < 1e-12 and breaking[0.2][2] == 50.0, f"the sheet's breaks a metre, crack over l_c, the zone's force: {breaking}")
+          < 1e-12 and breaking[0.2][2] == 50.0,
+          f"the sheet's breaks a metre, crack over l_c, the zone's force: {breaking}")
     lines = level_ice_report.why_below_iso(iso, lattice, [("crushing", {(0.2, "mean"): 0.45, (0.2, "max"): 1.2})],
                                            {"crushing": breaking})
     text = " ".join(lines)

@@ -156,8 +156,8 @@ def why_below_iso(iso, lattice, sheets, breaking):
                 "the broken ice up the slope and turning it. It is the peak of a breaking cycle; a tow's mean is over "
                 "the cycles, the load falling back after each break, so the means lie far below it in both models "
                 f"(over ISO: the lattice's runs {span('mean')}, the cut sheet's {sheet_text('mean')}) and the maxima "
-                f"are what compare with it (the lattice's {span('max')}, the cut sheet's {sheet_text('max')}; low-passed "
-                f"at 5 Hz {span('max 5 Hz')} and {sheet_text('max 5 Hz')}; the rigid cut sheet's are the steps of "
+                f"are what compare with it (the lattice's {span('max')}, the cut sheet's {sheet_text('max')}; "
+                f"low-passed at 5 Hz {span('max 5 Hz')} and {sheet_text('max 5 Hz')}; the rigid cut sheet's are the steps of "
                 "pieces locked between the cone and the held sheet, above).")
         for name, by_mu in breaking.items():
             if mu in by_mu:
@@ -167,8 +167,8 @@ def why_below_iso(iso, lattice, sheets, breaking):
                          f"a metre of tow, its cracks {x:.2f} l_c from the edge, each break a zone of the front; the "
                          f"cone's force on the zone that broke had a median of {force:.1f} N (its magnitude, surge "
                          f"and heave together), {force / d['breaking_N']:.2f} of ISO's breaking term"
-                         + (f", and its maximum (the mean of its starts') is {largest * d['total_N'] / force:.1f} times that force"
-                            if largest else "") + ".")
+                         + (f", and its maximum (the mean of its starts') is {largest * d['total_N'] / force:.1f} "
+                            "times that force" if largest else "") + ".")
                 break
         inside = [(label, n) for n, r in mine for label in level_ice_analytic.CRITERIA
                   if r.get((mu, label)) and any(x.get(label) for x in runs)
