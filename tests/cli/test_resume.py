@@ -226,12 +226,16 @@ killed_and_resumed("moored_killed.h5", 25.0, scenario, moored_options, moored_fu
                    "the structure's motions and the mooring's load")
 
 # the crushing contact law at the structure (contact.model = "crushing"): its bounds, hand-overs to Newton and each
-# crushing manifold's crushed depth (dem/world/crushing_contact.hpp; in the checkpoint, though at a step's end it
-# rarely differs from the manifold's overlap, which a world rebuilt without it would take: this run resumes alike
-# either way); killed in the ice after the checkpoint at 25 s, the resumed run ends as the uninterrupted one
+# crushing manifold's crushed depth (dem/world/crushing_contact.hpp), which is in the checkpoint: the run rebuilds its
+# world at each checkpoint, so a build that did not keep it parts from the run without checkpoints (at t = 30 s here);
+# killed in the ice after the checkpoint at 25 s, the resumed run ends as the uninterrupted one
 crushing_options = every + ["--set", 'contact.model="crushing"']
 p = run("run", scenario, "-q", "-o", "crushing_full.h5", *crushing_options)
 crushing_full = contents("crushing_full.h5")
+p = run("run", scenario, "-q", "-o", "crushing_no_checkpoints.h5", "--set", 'contact.model="crushing"',
+        "--set", "output.checkpoint_interval=0")
+check(contents("crushing_no_checkpoints.h5") == crushing_full,
+      "a crushing run with checkpoints is bit for bit one without (the crushed ice kept across each)")
 with h5py.File("crushing_full.h5", "r") as f:
     t = f["load/time"][:]
     check(p.returncode == 0 and (f["load/cone_contacts"][:][(t > 20.0) & (t < 30.0)] > 0).any(),
