@@ -89,13 +89,20 @@ double nominal_area(const btCollisionObject& a, const btCollisionObject& b, cons
   return over_piece(*other.getCollisionShape(), other.getWorldTransform());
 }
 
+// the manifold's deepest point, which stands for it (Bullet's points of one face lie on one plane);
+// the manifold has at least one
+const btManifoldPoint& deepest_point(const btPersistentManifold& manifold) {
+  int deepest = 0;
+  for (int i = 1; i < manifold.getNumContacts(); ++i)
+    if (manifold.getContactPoint(i).getDistance() < manifold.getContactPoint(deepest).getDistance()) deepest = i;
+  return manifold.getContactPoint(deepest);
+}
+
 }  // namespace
 
 double manifold_overlap(const btPersistentManifold& manifold) {
-  double deepest = 0.0;
-  for (int i = 0; i < manifold.getNumContacts(); ++i)
-    deepest = std::max(deepest, -double(manifold.getContactPoint(i).getDistance()));
-  return deepest;
+  if (manifold.getNumContacts() == 0) return 0.0;
+  return std::max(0.0, -double(deepest_point(manifold).getDistance()));
 }
 
 void CrushedIce::next_step() {
@@ -135,11 +142,7 @@ std::optional<double> crushing_cap(const btPersistentManifold& manifold, const C
   const int n = manifold.getNumContacts();
   if (n == 0 || (!is_ice(a) && !is_ice(b))) return std::nullopt;
   if (structure_only && a.getUserIndex() != kStructure && b.getUserIndex() != kStructure) return std::nullopt;
-  // the deepest point stands for the manifold (Bullet's points of one face lie on one plane)
-  int deepest = 0;
-  for (int i = 1; i < n; ++i)
-    if (manifold.getContactPoint(i).getDistance() < manifold.getContactPoint(deepest).getDistance()) deepest = i;
-  const btManifoldPoint& p = manifold.getContactPoint(deepest);
+  const btManifoldPoint& p = deepest_point(manifold);
   // a point not yet touching (within the margins) has no overlap and carries nothing
   const double area = p.getDistance() < 0 ? nominal_area(a, b, p) : 0.0;
   return h * crushing_force(law, area) / n;

@@ -102,21 +102,19 @@ TEST(CrushedIce, DepthGrowsOnlyWhileCrushing) {
     manifold.addManifoldPoint(p);
   };
   CrushedIce ice;
+  // the crushed depth of the step after one that ended `crushing`, the manifold's overlap now `depth`
+  auto after = [&](bool crushing, double depth) {
+    ice.set_crushing(manifold, crushing);
+    ice.next_step();
+    overlap(depth);
+    return ice.depth(manifold);
+  };
   ice.next_step();
   overlap(0.004);
   EXPECT_DOUBLE_EQ(ice.depth(manifold), 0.004) << "at first sight, the overlap";
-  ice.set_crushing(manifold, false);
-  ice.next_step();
-  overlap(0.006);
-  EXPECT_DOUBLE_EQ(ice.depth(manifold), 0.004) << "below the bound it crushed nothing";
-  ice.set_crushing(manifold, true);
-  ice.next_step();
-  overlap(0.008);
-  EXPECT_DOUBLE_EQ(ice.depth(manifold), 0.008) << "at the bound the overlap reached is crushed";
-  ice.set_crushing(manifold, false);
-  ice.next_step();
-  overlap(0.003);
-  EXPECT_DOUBLE_EQ(ice.depth(manifold), 0.003) << "opened: the crushed ice has left the contact";
+  EXPECT_DOUBLE_EQ(after(false, 0.006), 0.004) << "below the bound it crushed nothing";
+  EXPECT_DOUBLE_EQ(after(true, 0.008), 0.008) << "at the bound the overlap reached is crushed";
+  EXPECT_DOUBLE_EQ(after(false, 0.003), 0.003) << "opened: the crushed ice has left the contact";
   ASSERT_NE(ice.remembered(&manifold), nullptr);
   EXPECT_FALSE(ice.remembered(&manifold)->crushing);
 

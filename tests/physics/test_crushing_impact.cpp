@@ -23,6 +23,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "dem/world/contact_solver.hpp"
+#include "dem/world/crushing_contact.hpp"
 #include "dem/world/world.hpp"
 #include "tests/support/box_world.hpp"
 
@@ -101,8 +102,7 @@ Impact impact(double side, double h, double heave_factor, bool crushing, bool ic
     double depth = 0;
     btDispatcher& d = *bench.world().getDispatcher();
     for (int m = 0; m < d.getNumManifolds(); ++m)
-      for (int p = 0; p < d.getManifoldByIndexInternal(m)->getNumContacts(); ++p)
-        depth = std::max(depth, -double(d.getManifoldByIndexInternal(m)->getContactPoint(p).getDistance()));
+      depth = std::max(depth, icedem::manifold_overlap(*d.getManifoldByIndexInternal(m)));
     if (first < 0 && normal > 0) first = (step + 1) * h;
     if (normal > out.peak_force) out.peak_force = normal, out.peak_time = (step + 1) * h - first;
     out.peak_penetration = std::max(out.peak_penetration, depth);

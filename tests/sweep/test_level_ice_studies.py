@@ -144,7 +144,7 @@ with tempfile.TemporaryDirectory() as tmp:
     rec["fracture_events"] += [{"floe": 3, "touching_structure": 1, "structure_force": 900.0},  # a piece's split
                                {"floe": -1, "touching_structure": 0, "structure_force": 0.0}]  # a floe's patch
     la.agg.load_record = lambda run, out: rec
-    breaking = level_ice_report.sheet_breaking(files["crushing"], tmp, lambda run: (iso[0.2], None))
+    breaking = level_ice_report.sheet_breaking(la.configurations(files["crushing"], tmp), lambda run: (iso[0.2], None))
     # 500 breaks over 0.07 m/s x 280 s = 19.6 m; crack 0.3 m over l_c 0.4 m; the median of the cone's zones 50 N
     check(list(breaking) == [0.2] and abs(breaking[0.2][0] - 500 / 19.6) < 1e-9 and abs(breaking[0.2][1] - 0.75)
           < 1e-12 and breaking[0.2][2] == 50.0,

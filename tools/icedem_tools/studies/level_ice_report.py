@@ -54,11 +54,11 @@ def breaking_lengths(record):
     return np.array([e["distance"] for e in record.get("fracture_events", []) if "distance" in e], dtype=float)
 
 
-def sheet_ratios(sweep, out, design):
-    """{(mu, criterion): the analytic tows' mean over their starts over ISO 19906} of `sweep` (runs in `out`),
-    its tows without leave_behind."""
+def sheet_ratios(configs, design):
+    """{(mu, criterion): the analytic tows' mean over their starts over ISO 19906} of the configurations `configs`
+    (level_ice_analytic.configurations of a sweep), its tows without leave_behind."""
     ratios = {}
-    for (scenario, leave), members in sorted(level_ice_analytic.configurations(sweep, out).items()):
+    for (scenario, leave), members in sorted(configs.items()):
         if leave != 0.0:
             continue
         loads, _ = design(next(iter(members.values()))[0])
@@ -104,14 +104,14 @@ def closer_to_iso(lattice, sheets):
                 + ", ".join(f"{m} {k}" for m, k in sorted(wins.items(), key=lambda w: (-w[1], w[0]))) + ".", ""]
 
 
-def sheet_breaking(sweep, out, design):
+def sheet_breaking(configs, design):
     """{mu: (breaks a metre of tow, crack distance over l_c, force on the zone that broke in N)} of the analytic
-    tows of `sweep` (runs in `out`) without leave_behind, each the mean over the starts of the start's own: its
-    sheet's breaks over the distance it was towed, its median crack distance, and the median magnitude of the
-    cone's force on the zone of the edge whose load broke it (the breaks by the cone, /fracture/events
+    tows of `configs` (as sheet_ratios takes) without leave_behind, each the mean over the starts of the start's
+    own: its sheet's breaks over the distance it was towed, its median crack distance, and the median magnitude of
+    the cone's force on the zone of the edge whose load broke it (the breaks by the cone, /fracture/events
     structure_force of the sheet's events, floe -1)."""
     found = {}
-    for (scenario, leave), members in sorted(level_ice_analytic.configurations(sweep, out).items()):
+    for (scenario, leave), members in sorted(configs.items()):
         loads, _ = design(next(iter(members.values()))[0])
         if leave != 0.0 or not loads:
             continue
@@ -157,7 +157,8 @@ def why_below_iso(iso, lattice, sheets, breaking):
                 "the cycles, the load falling back after each break, so the means lie far below it in both models "
                 f"(over ISO: the lattice's runs {span('mean')}, the cut sheet's {sheet_text('mean')}) and the maxima "
                 f"are what compare with it (the lattice's {span('max')}, the cut sheet's {sheet_text('max')}; "
-                f"low-passed at 5 Hz {span('max 5 Hz')} and {sheet_text('max 5 Hz')}; the rigid cut sheet's are the steps of "
+                f"low-passed at 5 Hz {span('max 5 Hz')} and {sheet_text('max 5 Hz')}; the rigid cut sheet's are the "
+                "steps of "
                 "pieces locked between the cone and the held sheet, above).")
         for name, by_mu in breaking.items():
             if mu in by_mu:
@@ -281,12 +282,14 @@ def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thick
             L += level_ice_against.section([(analytic, analytic_out)] + crushing, other, other_out, what, base_of)
         if thickness_speed:
             L += level_ice_thickness_speed.section(thickness_speed, thickness_speed_out, design, figure)
-        sheets = [("rigid", sheet_ratios(analytic, analytic_out, design))]
-        sheets += [("crushing", sheet_ratios(o, o_out, design)) for o, o_out in crushing]
+        # each sweep's records read once for its ratios and its breaks
+        rigid = level_ice_analytic.configurations(analytic, analytic_out)
+        crushed = [level_ice_analytic.configurations(o, o_out) for o, o_out in crushing]
+        sheets = [("rigid", sheet_ratios(rigid, design))] + [("crushing", sheet_ratios(c, design)) for c in crushed]
         L += closer_to_iso(lattice, sheets)
         # the crushing law's breaks first: they are the tows not set by a locked piece
-        breaking = {"crushing": sheet_breaking(o, o_out, design) for o, o_out in crushing[:1]}
-        breaking["rigid"] = sheet_breaking(analytic, analytic_out, design)
+        breaking = {"crushing": sheet_breaking(c, design) for c in crushed[:1]}
+        breaking["rigid"] = sheet_breaking(rigid, design)
         L += why_below_iso(iso_by_mu, lattice, sheets, breaking)
     return L
 
