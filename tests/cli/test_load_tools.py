@@ -74,6 +74,26 @@ from icedem_tools.sweeps import aggregate  # noqa: E402
 kept = aggregate.make_record(run_dir)["window"]["max_lowpass_fx_N"]
 check(abs(kept["5"] - by_icedem) <= 1e-9 * abs(by_icedem),
       f"the record's 5 Hz maximum is icedem's: {kept['5']!r} N against {by_icedem!r} N")
+# its 10 s blocks: the window's whole blocks from its start, each block's mean and maximum as read off the
+# run's load by time (half a sample either side of a block's edge); the record rounds to 6 digits
+import h5py  # noqa: E402
+import numpy as np  # noqa: E402
+blocks = aggregate.make_record(run_dir)["window"]["blocks"]
+with h5py.File(os.path.join(run_dir, "run.h5"), "r") as f:
+    t, x = f["/load/time"][:], f["/load/surge"][:]
+start, end, dt = plain["window_start_s"], plain["window_end_s"], t[1] - t[0]
+whole = int((end - start + dt / 2) // 10.0)
+expect = []
+for k in range(whole):
+    sel = (t >= start + 10.0 * k - dt / 2) & (t < start + 10.0 * (k + 1) - dt / 2)
+    expect.append((x[sel].mean(), x[sel].max()))
+got = list(zip(blocks["mean_fx_N"], blocks["max_fx_N"])) if blocks else []
+check(whole >= 2 and len(got) == whole
+      and all(abs(a - c) <= 1e-5 * abs(c) and abs(b - d) <= 1e-5 * abs(d)
+              for (a, b), (c, d) in zip(got, expect))
+      and max(blocks["max_lowpass_fx_N"]["5"]) <= by_icedem * (1 + 1e-5),
+      f"the record's 10 s blocks are the window's whole blocks by time: {len(got)} of {whole}, "
+      f"means {blocks and blocks['mean_fx_N']} against {[round(m, 3) for m, _ in expect]}")
 records = os.path.join(work, "filtered.json")
 page = os.path.join(work, "tank_maxima_filtered.md")
 p = subprocess.run([os.path.join(src, "scripts", "tank_maxima"), "--filter-runs", os.path.join(work, "sweep"),

@@ -6,7 +6,10 @@
 - the thickness and speed tows (level_ice_thickness_speed.py): a row per run with its loads over ISO's and its
   crack distance and piece size over l_c, and the figure written;
 - which model lies closer to ISO 19906 (level_ice_report.closer_to_iso): the smallest |log ratio| wins,
-  a factor above as far as the same factor below."""
+  a factor above as far as the same factor below;
+- the 10 s blocks (level_ice_blocks.py): pooled over the starts, not paired (a crushing ensemble of two starts
+  against a rigid one of three is the ratio of the pooled means), the halved step against the crushing tows
+  of its own name, never against itself."""
 import math
 import os
 import sys
@@ -17,7 +20,7 @@ from checks import check, finish  # noqa: E402
 from icedem_tools.runs import spec  # noqa: E402
 from icedem_tools.sweeps import execute  # noqa: E402
 from icedem_tools.studies import level_ice_against as against, level_ice_analytic as la  # noqa: E402
-from icedem_tools.studies import level_ice_report, level_ice_thickness_speed as ts  # noqa: E402
+from icedem_tools.studies import level_ice_blocks, level_ice_report, level_ice_thickness_speed as ts  # noqa: E402
 
 BASE = """name = "base"
 seeds = 1
@@ -34,6 +37,15 @@ seeds = 1
 name = "mu02_crushing"
 file = "scenarios/level_ice/level_ice_analytic.toml"
 set = ["contact.model=\\"crushing\\""]
+[grid]
+"structure.start_x" = [5.2, 5.201]
+"""
+STEP = """name = "step"
+seeds = 1
+[[scenario]]
+name = "mu02_crushing"
+file = "scenarios/level_ice/level_ice_analytic.toml"
+set = ["contact.model=\\"crushing\\"", "time.dt=0.01"]
 [grid]
 "structure.start_x" = [5.2, 5.201]
 """
@@ -70,7 +82,7 @@ def design(run):
 
 with tempfile.TemporaryDirectory() as tmp:
     files = {}
-    for name, text in (("base", BASE), ("crushing", CRUSHING), ("ts", THICKNESS_SPEED)):
+    for name, text in (("base", BASE), ("crushing", CRUSHING), ("step", STEP), ("ts", THICKNESS_SPEED)):
         files[name] = os.path.join(tmp, name + ".toml")
         with open(files[name], "w") as f:
             f.write(text)
@@ -117,6 +129,41 @@ with tempfile.TemporaryDirectory() as tmp:
           "the figure is written and shown")
     check("Contact law: crushing (contact.model)." in lines,
           "the runs' contact law is said (none --set: the scenario file's, crushing)")
+
+    # the blocks: every run's the same pattern (lag-1 correlation cos 1.3 = 0.27) scaled by its start's mean, the
+    # crushing tows' by 1.1, the halved step's by 0.8 of that
+    def blocks(mean, n=24):
+        w = [1 + 0.2 * math.sin(1.3 * k) for k in range(n)]
+        return {"block_s": 10.0, "mean_fx_N": [mean * x for x in w], "max_fx_N": [3 * mean * x for x in w],
+                "max_lowpass_fx_N": {"5": [2 * mean * x for x in w]}}
+
+    def load_blocks(run, out):
+        rec = load(run, out)
+        start = float(dict(run.grid).get(la.START, 5.2))
+        halved = "time.dt=0.01" in run.sets
+        factor = (1.1 if run.scenario == "mu02_crushing" else 1.0) * (0.8 if halved else 1.0)
+        rec["window"]["blocks"] = blocks(factor * MEANS[start])
+        rec["summary"]["bullet_step_s"] = 0.01 if halved else 0.02
+        return rec
+    la.agg.load_record = load_blocks
+    configs = {k: la.configurations(files[k], tmp) for k in ("base", "crushing", "step")}
+    lines = level_ice_blocks.section([(files[k], configs[k]) for k in ("base", "crushing", "step")],
+                                     [(files["crushing"], lambda n: n.removesuffix("_crushing")),
+                                      (files["step"], lambda n: n)], design)
+    table = [l for l in lines if l.startswith("| mu02")]
+    # pooled: rigid over starts 20, 22, 24 (mean 22), crushing 1.1 x over 20, 22 (mean 23.1): +5.0 %, not +10 %
+    crushing = [l for l in table if l.startswith("| mu02_crushing | mu02 | block mean |")]
+    check(len(crushing) == 1 and "| +5.0 % (" in crushing[0] and crushing[0].endswith("| 72 / 48 |"),
+          f"the crushing tows' block mean against the rigid ones', pooled over their starts: {crushing}")
+    step = [l for l in table if l.startswith("| mu02_crushing | mu02_crushing |")]
+    check(len(step) == 3 and all(l.endswith("| 48 / 48 |") and "| -20.0 % (" in l for l in step),
+          f"the halved step against the crushing tows of its name, each criterion -20 %: {step}")
+    rows = [l for l in table if ".toml |" in l]
+    w = sum(1 + 0.2 * math.sin(1.3 * k) for k in range(24)) / 24  # the pattern's mean
+    check(len(rows) == 3 and "| step.toml | crushing | 0.01 | 2 | 48 |" in rows[2]
+          and f"| {3 * 22.0 * w:.1f} ± " in rows[0]
+          and f"| 200.0 | {3 * 22.0 * w / 200:.2f} | {2 * 22.0 * w / 200:.2f} |" in rows[0],
+          f"a row an ensemble: its law, step, starts, blocks, the block maxima over ISO's: {rows}")
 
     lattice = [("r12", 0.2, {"mean": 0.5, "max": 0.7}), ("r20", 0.2, {"mean": 0.4, "max": 0.9})]
     lines = level_ice_report.closer_to_iso(lattice, [("rigid", {(0.2, "mean"): 1.9, (0.2, "max"): 3.0}),

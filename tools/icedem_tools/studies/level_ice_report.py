@@ -14,9 +14,10 @@ records), so it can report while the sweep runs. Without --report the page is pr
 the tows of the sheet cut by closed forms over their starts (studies/level_ice_analytic.py), their runs in
 --analytic-out (default sweeps/<its name>); with it, --crushing adds the same tows under the crushing contact
 law and --step the crushing tows at a halved step, each against the tows of its scenario's name
-(studies/level_ice_against.py), and --thickness-speed the tows over ice thickness and speed with their figure,
-written beside --report (studies/level_ice_thickness_speed.py); and the page says which model of level ice, the
-lattice or the sheet cut by closed forms, lies closer to ISO 19906, criterion by criterion."""
+(studies/level_ice_against.py), all of them also in 10 s blocks (studies/level_ice_blocks.py), and
+--thickness-speed the tows over ice thickness and speed with their figure, written beside --report
+(studies/level_ice_thickness_speed.py); and the page says which model of level ice, the lattice or the sheet cut
+by closed forms, lies closer to ISO 19906, criterion by criterion."""
 import os
 import tomllib
 
@@ -24,7 +25,7 @@ import numpy as np
 
 from ..sweeps import aggregate as agg, execute
 from ..runs import pieces, spec
-from . import level_ice_against, level_ice_analytic, level_ice_thickness_speed
+from . import level_ice_against, level_ice_analytic, level_ice_blocks, level_ice_thickness_speed
 from ..reports import report_sweeps
 from ..reports.report_tables import fmt
 
@@ -280,11 +281,19 @@ def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thick
         # each changed ensemble against the tows of its scenario's base name among the analytic and crushing sweeps
         for other, other_out, what, base_of in against:
             L += level_ice_against.section([(analytic, analytic_out)] + crushing, other, other_out, what, base_of)
-        if thickness_speed:
-            L += level_ice_thickness_speed.section(thickness_speed, thickness_speed_out, design, figure)
-        # each sweep's records read once for its ratios and its breaks
+        # each sweep's records read once for its blocks, its ratios and its breaks
         rigid = level_ice_analytic.configurations(analytic, analytic_out)
         crushed = [level_ice_analytic.configurations(o, o_out) for o, o_out in crushing]
+        # the blocks: the rigid tows, the crushing ones, then the others (the halved step) each against its base
+        others = [(o, level_ice_analytic.configurations(o, o_out), base_of) for o, o_out, what, base_of in against
+                  if what != level_ice_against.CRUSHING]
+        crushing_bases = [base_of for _, _, what, base_of in against if what == level_ice_against.CRUSHING]
+        ensembles = ([(analytic, rigid)] + [(o, c) for (o, _), c in zip(crushing, crushed)]
+                     + [(o, c) for o, c, _ in others])
+        comparisons = ([(o, b) for (o, _), b in zip(crushing, crushing_bases)] + [(o, b) for o, _, b in others])
+        L += level_ice_blocks.section(ensembles, comparisons, design)
+        if thickness_speed:
+            L += level_ice_thickness_speed.section(thickness_speed, thickness_speed_out, design, figure)
         sheets = [("rigid", sheet_ratios(rigid, design))] + [("crushing", sheet_ratios(c, design)) for c in crushed]
         L += closer_to_iso(lattice, sheets)
         # the crushing law's breaks first: they are the tows not set by a locked piece

@@ -237,13 +237,44 @@ def largest_steps(run, t, x, inside, count=LARGEST_STEPS):
              "handovers": column("handovers", k), "capped": column("solver_capped", k)} for k in top]
 
 
+# the length of the blocks a record cuts its window into (block_loads): several breaking cycles of level ice
+# (a few seconds each) and of a floe's passage (4-9 s in the paper's fields), short enough for a tow's window to
+# hold some twenty
+BLOCK_S = 10.0
+
+
+def block_loads(t, x, inside, block_s=BLOCK_S):
+    """The window's surge load cut into whole blocks of block_s seconds from its start (a last part block left
+    out): each block's mean, its maximum, and its maximum low-passed at each of LOWPASS_HZ (the whole record
+    filtered first, as lowpass_maxima), in time order. A tow gives some twenty of each: the spread of a run's own
+    blocks, which its one mean and one maximum do not show, is what a change of setting is judged against when
+    the starts are few."""
+    index = np.flatnonzero(inside)
+    if len(index) < 2:
+        return None
+    dt = (t[-1] - t[0]) / (len(t) - 1)
+    per = int(round(block_s / dt))
+    count = len(index) // per
+    if count < 1:
+        return None
+    filtered = {f"{fc:g}": lowpass(x, dt, fc) for fc in LOWPASS_HZ}
+    blocks = [index[k * per:(k + 1) * per] for k in range(count)]
+
+    def r(v):
+        return float(f"{v:.6g}")
+    return {"block_s": block_s, "mean_fx_N": [r(x[b].mean()) for b in blocks],
+            "max_fx_N": [r(x[b].max()) for b in blocks],
+            "max_lowpass_fx_N": {k: [r(y[b].max()) for b in blocks] for k, y in filtered.items()}}
+
+
 def make_record(run_dir):
     """The record of a finished run, from its directory: its summary, the Welch spectrum of its
     surge load over the analysis window (up to RECORD_MAX_HZ), its breaks (every field of
     /fracture/events, mode and mechanism also by name), the sizes of the pieces they broke off
     (pieces.summary; kept since 2026-11-27) and, for level ice cut by closed forms, its breaks' crack
     distances and its pieces (sheet_record; kept since 2026-11-30); and the window's largest loads step by step
-    with what the contact solve did there (largest_steps; kept since 2026-11-30)."""
+    with what the contact solve did there (largest_steps; kept since 2026-11-30) and its 10 s blocks (block_loads;
+    kept since 2026-11-30)."""
     summary = results.load_summary(os.path.join(run_dir, RUN_FILES["summary"]))
     freq, power, events, window = [], [], [], {}
     run = results.load_run(os.path.join(run_dir, RUN_FILES["h5"]))
@@ -258,6 +289,7 @@ def make_record(run_dir):
             window["p99_fx_N"] = float(np.quantile(x[sel], 0.99))
             window["max_lowpass_fx_N"] = lowpass_maxima(t, x, sel)
             window["largest_steps"] = largest_steps(run, t, x, sel)
+            window["blocks"] = block_loads(t, x, sel)  # None for a window shorter than a block
     ev = run.events
     fields = [k for k in (ev.dtype.names or ()) if k not in ("mode_name", "mechanism_name")]
     for row in ev:
@@ -274,6 +306,10 @@ def make_record(run_dir):
     return record
 
 
+# what a kept record's window must hold to stand for its run when the run's directory is there (load_record);
+# an older record is made again from it
+RECORD_WINDOW_KEYS = {"largest_steps", "blocks"}
+
 # what says that a run directory holds the run a kept record was made from (load_record)
 SAME_RUN_KEYS = ("steps", "mean_fx_N", "max_fx_N", "breaks")
 
@@ -281,7 +317,8 @@ SAME_RUN_KEYS = ("steps", "mean_fx_N", "max_fx_N", "breaks")
 def load_record(run, out):
     """The record of a finished run: the kept file when the sweep keeps records and it is at
     least as new as the run's summary (and has the window's quantiles and filtered maxima, kept since
-    2026-11-26, and its largest steps, kept since 2026-11-30); else made from the run's directory (reading
+    2026-11-26, its largest steps, kept since 2026-11-30, and its blocks, kept since 2026-11-30); else made from
+    the run's directory (reading
     its HDF5 file) and kept. A kept record is never replaced by a run directory holding another run (a
     figure's rerun by another build: its SAME_RUN_KEYS differ): the record stays, and a warning names the
     directory."""
@@ -296,7 +333,7 @@ def load_record(run, out):
     kept = existing if existing is not None and (
         not os.path.isfile(summary) or os.path.getmtime(run.record_file) >= os.path.getmtime(summary)) else None
     finished_here = execute.finished_here(run, out)
-    if finished_here and (kept is None or "largest_steps" not in kept.get("window", {})):
+    if finished_here and (kept is None or not RECORD_WINDOW_KEYS <= set(kept.get("window", {}))):
         if existing is not None:
             here = results.load_summary(summary)
             was = existing["summary"]
