@@ -1,8 +1,9 @@
 """The analytic level tow over ice thickness and tow speed, for docs/model/level_ice.md (scripts/level_ice_report
 --thickness-speed SWEEP): each finished tow of SWEEP (sweeps/studies/level_ice_thickness_speed.toml: frictions as
 scenarios, speeds as variants, ice.thickness as its grid) beside ISO 19906's and Ralston's loads for its own cone,
-ice and friction, a table and a figure of the mean and the 5 Hz low-passed maximum against thickness, one line
-per speed. One start per point: the analytic ensemble says how far one start scatters."""
+ice and friction, a table and a figure of the mean, the 5 Hz low-passed maximum and the mean of the 10 s blocks'
+maxima (with its interval over the tow's blocks, stats/block_change.py) against thickness, one line per speed. One
+start per point: the analytic ensemble says how far one start scatters."""
 import dataclasses
 import os
 
@@ -15,7 +16,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 from ..runs import spec  # noqa: E402
 from ..sweeps import aggregate as agg, execute  # noqa: E402
 from ..reports.report_tables import fmt  # noqa: E402
-from . import level_ice_analytic as la  # noqa: E402
+from ..stats import block_change  # noqa: E402
+from . import level_ice_analytic as la, level_ice_blocks  # noqa: E402
 
 SPEED = "structure.speed"
 
@@ -44,19 +46,33 @@ def points(sweep, out, design_loads):
     return sorted(found, key=lambda t: (t.scenario, t.speed or 0.0, t.thickness or 0.0))
 
 
+def block_max(record):
+    """(mean, 95 % half-width) of the tow's 10 s blocks' maxima (aggregate.block_loads), or None without blocks."""
+    runs = level_ice_blocks.block_runs({0: (None, record)}, "max_fx_N", None)
+    if not runs:
+        return None
+    m, h, _ = block_change.mean_ci(runs)
+    return m, h
+
+
 def figure(found, path):
-    """The mean and the 5 Hz low-passed maximum against thickness, a line per speed, per friction (rows),
-    ISO 19906's and Ralston's loads over the same thicknesses dashed and dotted."""
+    """The mean, the 5 Hz low-passed maximum and the 10 s blocks' mean maximum (its 95 % interval as a bar)
+    against thickness, a line per speed, per friction (rows), ISO 19906's and Ralston's loads over the same
+    thicknesses dashed and dotted."""
     scenarios = sorted({t.scenario for t in found})
-    fig, axes = plt.subplots(len(scenarios), 2, figsize=(10, 3.6 * len(scenarios)), squeeze=False)
+    fig, axes = plt.subplots(len(scenarios), 3, figsize=(14, 3.6 * len(scenarios)), squeeze=False)
+    panels = (("mean", lambda rec: (la._value(rec, "mean_fx_N"), None)),
+              ("max 5 Hz", lambda rec: (la._value(rec, la.LOWPASS), None)),
+              ("10 s blocks' mean max", lambda rec: block_max(rec) or (None, None)))
     for row, scenario in zip(axes, scenarios):
         mine = [t for t in found if t.scenario == scenario]
-        for ax, (label, key) in zip(row, (("mean", "mean_fx_N"), ("max 5 Hz", la.LOWPASS))):
+        for ax, (label, value) in zip(row, panels):
             for speed in sorted({t.speed for t in mine}):
-                line = [(t.thickness, la._value(t.record, key)) for t in mine
-                        if t.speed == speed and la._value(t.record, key)]
+                line = [(t.thickness, *value(t.record)) for t in mine if t.speed == speed and value(t.record)[0]]
                 if line:
-                    ax.plot(*zip(*line), "o-", label=f"{speed:g} m/s")
+                    h, v, e = zip(*line)
+                    bars = None if all(x is None for x in e) else [x if x == x and x is not None else 0 for x in e]
+                    ax.errorbar(h, v, yerr=bars, fmt="o-", capsize=3, label=f"{speed:g} m/s")
             design = sorted({(t.thickness, t.loads["total_N"], t.loads["ralston_total_N"]) for t in mine if t.loads})
             if design:
                 h = [d[0] for d in design]
@@ -83,14 +99,16 @@ def section(sweep, out, design_loads, figure_path=None):
          "start each (the ensemble above says how far one start scatters). Loads in N, surge, over the analysis "
          "window, beside ISO 19906 and Ralston for the run's own ice and friction (neither depends on speed). x*: "
          "the median crack distance; d_w: the pieces' area-weighted diameter; both against the run's "
-         "characteristic length l_c.", ""]
+         "characteristic length l_c. Block max: the mean of the maxima of the tow's 10 s blocks with its 95 % "
+         "interval over them (their correlation taken in; the section above), the peak a tow reaches every 10 s, "
+         "steadier than its one maximum; a faster tow crosses more ice in a block.", ""]
     found = points(sweep, out, design_loads)
     if not found:
         return L + ["No finished run yet.", ""]
     L += [f"Contact law: {', '.join(sorted({t.law for t in found}))} (contact.model).", "",
-          "| run | mu | speed m/s | h m | mean | p99 | max | max 5 Hz | ISO 19906 | Ralston | mean / ISO | "
-          "max 5 Hz / ISO | breaks | l_c m | x* / l_c | d_w / l_c | real time (CPU) |",
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+          "| run | mu | speed m/s | h m | mean | p99 | max | max 5 Hz | block max | ISO 19906 | Ralston | mean / ISO | "
+          "max 5 Hz / ISO | block max / ISO | breaks | l_c m | x* / l_c | d_w / l_c | real time (CPU) |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for t in found:
         scenario, speed, h, rec, loads, why = t.scenario, t.speed, t.thickness, t.record, t.loads, t.why
         s = rec["summary"]
@@ -105,15 +123,20 @@ def section(sweep, out, design_loads, figure_path=None):
             d = sheet["area_weighted_diameter_m"]
         cpu = s.get("cpu_time_s")
         mu = f"{loads['friction']:g}" if loads else "n/a"
+        bm = block_max(rec)
+        bm_text = "n/a" if bm is None else f"{bm[0]:.1f}" + (f" ± {bm[1]:.1f}" if bm[1] == bm[1] else "")
         L.append(f"| {scenario} | {mu} | "
                  f"{fmt(speed, digits=3)} | {fmt(h, digits=3)} | {fmt(mean)} | {fmt(p99)} | {fmt(mx)} | {fmt(m5)} | "
+                 f"{bm_text} | "
                  f"{fmt(iso) if loads else f'n/a ({why})'} | {fmt(loads['ralston_total_N']) if loads else 'n/a'} | "
                  f"{fmt(mean / iso if mean and iso else None, digits=2)} | "
-                 f"{fmt(m5 / iso if m5 and iso else None, digits=2)} | {s.get('breaks', 'n/a')} | "
+                 f"{fmt(m5 / iso if m5 and iso else None, digits=2)} | "
+                 f"{fmt(bm[0] / iso if bm and iso else None, digits=2)} | {s.get('breaks', 'n/a')} | "
                  f"{fmt(lc, digits=3)} | {fmt(x / lc if x and lc else None, digits=2)} | "
                  f"{fmt(d / lc if d and lc else None, digits=2)} | "
                  f"{fmt(s['sim_time_s'] / cpu if cpu else None, digits=2)} |")
     if figure_path:
         figure(found, figure_path)
-        L += ["", f"![mean and 5 Hz maximum against thickness, a line per speed]({os.path.basename(figure_path)})"]
+        L += ["", f"![mean, 5 Hz maximum and 10 s blocks' mean maximum against thickness, a line per speed]"
+              f"({os.path.basename(figure_path)})"]
     return L + [""]
