@@ -1,7 +1,8 @@
 // contact_problems: tools on contact problem files (dem/contact/problem_file.hpp).
 //
-//   contact_problems solve FILE... [--method M ...] [--tolerance T] [--max-iterations N] [--cold]
-//       solve each problem with each method; print iterations, merit and CPU time. A method
+//   contact_problems solve FILE... [--method M ...] [--tolerance T] [--merit K] [--max-iterations N] [--cold]
+//       solve each problem with each method to the tolerance on merit K (siconos, the default, or
+//       impulse, what a run stops on); print iterations, both merits and CPU time. A method
 //       "A+B" is the run's island solve with A for at most --first-iterations (default 1000),
 //       then B from A's answer where A stopped there above the tolerance (iterations printed
 //       as A's+B's)
@@ -82,28 +83,31 @@ SolverAnswer solve_with(const std::string& name, const ContactProblem& p, const 
 }
 
 int solve_command(const std::vector<std::string>& files, std::vector<std::string> methods, double tolerance,
-                  int max_iterations, bool cold, int first_iterations) {
+                  MeritKind merit, int max_iterations, bool cold, int first_iterations) {
   if (methods.empty())  // every method on a problem (the in-run sweeps are not one)
     for (const ContactMethodEntry& e : contact_methods())
       if (e.make) methods.push_back(e.name);
-  std::cout << fmt::format("{:<40} {:>7} {:>6} {:<16} {:>7} {:>10} {:>9}\n", "problem", "contacts", "joints", "method",
-                           "iters", "merit", "cpu ms");
+  std::cout << fmt::format("{:<40} {:>7} {:>6} {:<16} {:>7} {:>10} {:>10} {:>9}\n", "problem", "contacts", "joints",
+                           "method", "iters", "merit", "impulse", "cpu ms");
   for (const std::string& path : files) {
     const ProblemFile file = read_problem_file(path);
     const ContactProblem& p = file.problem;
     const LocalForm local = local_form(p);
+    const Merit impulse(MeritKind::kImpulse, p, local.q, local.mu);
     for (const std::string& name : methods) {
       MethodOptions o;
       o.tolerance = tolerance;
+      o.merit = merit;
       o.max_iterations = max_iterations;
       o.warm_start = !cold;
       const double t0 = cpu_seconds();
       std::string iterations;
       const SolverAnswer a = solve_with(name, p, o, first_iterations, iterations);
       const double cpu = cpu_seconds() - t0;
-      std::cout << fmt::format("{:<40} {:>7} {:>6} {:<16} {:>7} {:>10.3e} {:>9.2f}\n",
+      std::cout << fmt::format("{:<40} {:>7} {:>6} {:<16} {:>7} {:>10.3e} {:>10.3e} {:>9.2f}\n",
                                std::filesystem::path(path).filename().string(), p.contacts.size(), p.joint_rows(), name,
-                               iterations, natural_map_residual(local, a.r), 1e3 * cpu);
+                               iterations, natural_map_residual(local, a.r),
+                               impulse(a.r, local.W * a.r + local.q), 1e3 * cpu);
     }
   }
   return 0;
@@ -236,7 +240,7 @@ bool linear_row(const ProblemJointRow& j) {
 // the tight answer the errors are measured against: newton to 1e-10 (at most 500 steps),
 // else (a lattice island it stalls on) apgd to 1e-9 (at most 20000), whichever ends lower, and
 // if that is still above 1e-8 (a level sheet's islands: 1.4e-6 to 6.3e-6) the interior-point
-// method from it (at most 1000 iterations)
+// method from it (at most 1000 iterations; not on crushing contacts, which it does not take)
 SolverAnswer tight_answer(const ContactProblem& p, const LocalForm& local, double& merit) {
   MethodOptions o;
   o.tolerance = 1e-10;
@@ -252,7 +256,7 @@ SolverAnswer tight_answer(const ContactProblem& p, const LocalForm& local, doubl
     o.max_iterations = 20000;
     keep_lower(make_contact_method("apgd")->solve(p, o));
   }
-  if (merit > 1e-8) {
+  if (merit > 1e-8 && !has_crushing(p)) {  // the interior-point method takes no crushing contacts
     o.max_iterations = 1000;
     keep_lower(make_contact_method("ipm")->solve(started_from(p, best), o));
   }
@@ -278,7 +282,7 @@ int errors_command(const std::vector<std::string>& files, const std::string& met
     // an island that neither touches the structure nor holds a joint reaches no reported load
     if (loaded_only && p.joints.empty() && !touches_structure(p)) continue;
     const LocalForm local = local_form(p);
-    const Merit impulse(MeritKind::kImpulse, local.q, contact_masses(p), local.mu, p.dt);
+    const Merit impulse(MeritKind::kImpulse, p, local.q, local.mu);  // with its crushing caps
     double ref_merit = 0;
     const SolverAnswer ref = tight_answer(p, local, ref_merit);
     const Loads exact = loads_of(p, ref.r);
@@ -366,6 +370,8 @@ int main(int argc, char** argv) {
   solve->add_option("--tolerance", tolerance, "merit to stop at (default 1e-6)");
   solve->add_option("--max-iterations", max_iterations, "iteration cap (default 200)");
   solve->add_flag("--cold", cold, "start from zero, not the warm start");
+  std::string solve_merit = "siconos";
+  solve->add_option("--merit", solve_merit, "the merit the tolerance bounds: siconos (default) or impulse");
   int first_iterations = 1000;
   solve->add_option("--first-iterations", first_iterations, "cap of A in a method A+B (default 1000)");
   CLI::App* reference = app.add_subcommand("reference", "write reference solutions into problem files");
@@ -393,7 +399,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     if (*extract) return extract_command(extract_file, body_id, extract_out);
-    if (*solve) return solve_command(files, methods, tolerance, max_iterations, cold, first_iterations);
+    if (*solve)
+      return solve_command(files, methods, tolerance, merit_kind(solve_merit), max_iterations, cold, first_iterations);
     if (*errors)
       return errors_command(files, method, merit_kind(merit_name), tolerances, max_iterations, first_iterations, csv_path,
                             loaded_only);
