@@ -317,9 +317,8 @@ SAME_RUN_KEYS = ("steps", "mean_fx_N", "max_fx_N", "breaks")
 def load_record(run, out):
     """The record of a finished run: the kept file when the sweep keeps records and it is at
     least as new as the run's summary (and has the window's quantiles and filtered maxima, kept since
-    2026-11-26, its largest steps, kept since 2026-11-30, and its blocks, kept since 2026-11-30); else made from
-    the run's directory (reading
-    its HDF5 file) and kept. A kept record is never replaced by a run directory holding another run (a
+    2026-11-26, its largest steps and its blocks, kept since 2026-11-30); else made from the run's directory
+    (reading its HDF5 file) and kept. A kept record is never replaced by a run directory holding another run (a
     figure's rerun by another build: its SAME_RUN_KEYS differ): the record stays, and a warning names the
     directory."""
     from . import execute
