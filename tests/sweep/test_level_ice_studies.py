@@ -45,7 +45,7 @@ seeds = 1
 [[scenario]]
 name = "mu02_crushing"
 file = "scenarios/level_ice/level_ice_analytic.toml"
-set = ["contact.model=\\"crushing\\"", "time.dt=0.01"]
+set = ["contact.model=\\"crushing\\"", "time.dt=0.01", "solver.merit=\\"impulse\\"", "solver.merit_tolerance=1e-4"]
 [grid]
 "structure.start_x" = [5.2, 5.201]
 """
@@ -107,7 +107,7 @@ with tempfile.TemporaryDirectory() as tmp:
                             lambda n: n.removesuffix("_crushing"))
     rows = [l for l in lines if l.startswith("| mu02_crushing | mu02 | mean |")]
     half = 4.302653 * 2.0 / math.sqrt(3)
-    check(len(rows) == 1 and f"| 0.02 | 22.0 ± {half:.1f} (3) | 0.02 | 23.1 ± " in rows[0]
+    check(len(rows) == 1 and f"| 0.02 | siconos 0.001 | 22.0 ± {half:.1f} (3) | 0.02 | siconos 0.001 | 23.1 ± " in rows[0]
           and "+10.0 %" in rows[0] and "(moves)" in rows[0] and rows[0].endswith("| 2 |"),
           f"each ensemble's mean with its step and starts, the change over the two starts both ran: {rows}")
     check(sum(l.startswith("| mu02_crushing | mu02 |") for l in lines) == 4, "four criteria compared")
@@ -168,6 +168,12 @@ with tempfile.TemporaryDirectory() as tmp:
     step = [l for l in table if l.startswith("| mu02_crushing | mu02_crushing |")]
     check(len(step) == 3 and all(l.endswith("| 48 / 48 |") and "| -20.0 % (" in l for l in step),
           f"the halved step against the crushing tows of its name, each criterion -20 %: {step}")
+    # the step's tows say how they were solved: the sweep's merit and its tolerance
+    lines = against.section([(files["base"], tmp), (files["crushing"], tmp)], files["step"], tmp, against.STEP,
+                            lambda n: n)
+    mean = [l for l in lines if l.startswith("| mu02_crushing | mu02_crushing | mean |")]
+    check(len(mean) == 1 and "| 0.02 | siconos 0.001 | " in mean[0] and "| 0.01 | impulse 0.0001 | " in mean[0],
+          f"each side's step and solve: {mean}")
     rows = [l for l in table if ".toml |" in l]
     w = sum(1 + 0.2 * math.sin(1.3 * k) for k in range(24)) / 24  # the pattern's mean
     check(len(rows) == 3 and "| step.toml | crushing | 0.01 | 2 | 48 |" in rows[2]

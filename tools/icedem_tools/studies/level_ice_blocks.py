@@ -1,6 +1,7 @@
 """The analytic level tows in 10 s blocks, for docs/model/level_ice.md (scripts/level_ice_report --analytic with
---crushing and --step): each ensemble's block means and block maxima pooled over its starts, against ISO 19906,
-and the changes of the crushing law and of the halved step judged on them (stats/block_change.py).
+--crushing, --step and --solve): each ensemble's block means and block maxima pooled over its starts, against
+ISO 19906, and the changes of the crushing law, the halved step and the tighter solve judged on them
+(stats/block_change.py).
 
 A tow's one maximum is one draw, and two or three starts give its change an interval too wide to say anything
 (the sections above: "unresolved" over -90 to +400 %). Its window holds some twenty 10 s blocks, each a few
@@ -105,9 +106,10 @@ def section(ensembles, comparisons, design_loads):
                              f"{verdict.change_text(changes[k][:3])} | {sum(map(len, b))} / {sum(map(len, a))} |")
     if not changes:
         return L + [""]
-    L += ["", "The crushing law against rigid contacts and the halved step against the step, judged on the blocks: "
-          "the ratio of the two block means with its 95 % interval (the log ratio's, by the delta method, Welch's "
-          "degrees of freedom on each side's effective number of blocks), and its verdict (docs/model/estimators.md).",
+    L += ["", "Each changed ensemble against the one it changes (the crushing law against rigid contacts, the halved "
+          "step and the tighter solve against the crushing tows), judged on the blocks: the ratio of the two block "
+          "means with its 95 % interval (the log ratio's, by the delta method, Welch's degrees of freedom on each "
+          "side's effective number of blocks), and its verdict (docs/model/estimators.md).",
           "", "| run | against | criterion | against's | these | change | blocks, against / these |",
           "|---|---|---|---|---|---|---|"] + lines
     return L + ["", verdict.family_text(changes, lambda k: names[k]), ""]

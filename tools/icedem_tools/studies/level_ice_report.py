@@ -7,14 +7,15 @@ are upper references (ISO's over-predicted 50 field events by a factor of about 
     scripts/level_ice_report SWEEP.toml [--out DIR] [--icedem PATH] [--report PAGE.md]
                              [--analytic SWEEP.toml [--analytic-out DIR]
                               [--step SWEEP.toml [--step-out DIR]] [--crushing SWEEP.toml [--crushing-out DIR]]
+                              [--solve SWEEP.toml [--solve-out DIR]]
                               [--thickness-speed SWEEP.toml [--thickness-speed-out DIR]]]
 
 --out is the sweep's run directory (default sweeps/<name>); finished runs count (or their kept
 records), so it can report while the sweep runs. Without --report the page is printed. --analytic adds
 the tows of the sheet cut by closed forms over their starts (studies/level_ice_analytic.py), their runs in
 --analytic-out (default sweeps/<its name>); with it, --crushing adds the same tows under the crushing contact
-law and --step the crushing tows at a halved step, each against the tows of its scenario's name
-(studies/level_ice_against.py), all of them also in 10 s blocks (studies/level_ice_blocks.py), and
+law, --step the crushing tows at a halved step and --solve them solved tighter, each against the tows of its
+scenario's name (studies/level_ice_against.py), all of them also in 10 s blocks (studies/level_ice_blocks.py), and
 --thickness-speed the tows over ice thickness and speed with their figure, written beside --report
 (studies/level_ice_thickness_speed.py); and the page says which model of level ice, the lattice or the sheet cut
 by closed forms, lies closer to ISO 19906, criterion by criterion."""
@@ -317,6 +318,9 @@ def main(argv=None):
                         "contact law, its scenarios named <analytic scenario>_crushing "
                         "(sweeps/studies/level_ice_analytic_crushing.toml)")
         ap.add_argument("--crushing-out", help="its run directory (default: sweeps/<its name>)")
+        ap.add_argument("--solve", help="with --analytic: a sweep file of the crushing tows solved to a tighter merit, "
+                        "its scenarios named as the crushing tows (sweeps/studies/level_ice_analytic_solve.toml)")
+        ap.add_argument("--solve-out", help="its run directory (default: sweeps/<its name>)")
         ap.add_argument("--thickness-speed", help="with --analytic: a sweep file of analytic tows over thickness and "
                         "speed (sweeps/studies/level_ice_thickness_speed.toml); its figure is written beside --report")
         ap.add_argument("--thickness-speed-out", help="its run directory (default: sweeps/<its name>)")
@@ -328,17 +332,20 @@ def main(argv=None):
         return os.path.abspath(given) if given else os.path.join(spec.ROOT, "sweeps", spec.load(sweep_file)[0])
 
     def make(sweep, out, args):
-        analytic, step, crushing, ts = (os.path.abspath(f) if f else None
-                                        for f in (args.analytic, args.step, args.crushing, args.thickness_speed))
-        if not analytic and (step or crushing or ts):
-            raise SystemExit("--step, --crushing and --thickness-speed compare with the analytic tows: give "
+        analytic, step, crushing, solve, ts = (os.path.abspath(f) if f else None for f in (
+            args.analytic, args.step, args.crushing, args.solve, args.thickness_speed))
+        if not analytic and (step or crushing or solve or ts):
+            raise SystemExit("--step, --crushing, --solve and --thickness-speed compare with the analytic tows: give "
                              "--analytic too")
+        # the crushing tows first: the halved step and the tighter solve are theirs, changed
         against = []
-        if step:
-            against.append((step, run_dir(step, args.step_out), level_ice_against.STEP, lambda name: name))
         if crushing:
             against.append((crushing, run_dir(crushing, args.crushing_out), level_ice_against.CRUSHING,
                             lambda name: name.removesuffix("_crushing")))
+        if step:
+            against.append((step, run_dir(step, args.step_out), level_ice_against.STEP, lambda name: name))
+        if solve:
+            against.append((solve, run_dir(solve, args.solve_out), level_ice_against.SOLVE, lambda name: name))
         figure = (os.path.join(os.path.dirname(os.path.abspath(args.report)), "level_ice_thickness_speed.png")
                   if ts and args.report else None)
         return page(sweep, out, args.icedem, analytic, run_dir(analytic, args.analytic_out), against, ts,
