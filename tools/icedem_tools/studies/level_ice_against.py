@@ -53,9 +53,9 @@ CRUSHING = ("### The crushing contact law",
             "and a piece locked between the cone and the held sheet then took in one step whatever stopped it.")
 SOLVE = ("### Tightening the solve", "the same tows with their contacts solved to a tighter merit (each against the "
          "tows above of its scenario's name)",
-         "A looser solve lowers these tows' loads: it stops short of carrying the jam's push through the channel's "
-         "island, and the split impulse's position pass, which no load reads, does the rest. The default's loads are "
-         "converged only where a tighter solve leaves them.")
+         "A looser solve lowered these tows' loads (a tow solved to the impulse merit's 1e-3, not kept: why is not "
+         "measured; a solve stopped short leaves part of the jam's push to the split impulse's position pass, "
+         "which no load reads). The default's loads are converged only where a tighter solve leaves them.")
 
 
 def section(bases, other, other_out, what, base_of=lambda scenario: scenario):
