@@ -3,7 +3,9 @@
 on records made here: a configuration's loads are the mean over its starts with Student's interval (mean, p99, max
 and the 5 Hz low-passed max, the largest of each over ISO 19906), and how many starts' largest load fell at a step
 whose solve reached its cap; leaving the channel behind is judged start by
-start against the tow without it (a uniform +10 % moves, by +10.0 %); no finished run says so."""
+start against the tow without it (a uniform +10 % moves, by +10.0 %); no finished run says so. A sheet's record
+counts the breaks whose zone bore more than twice its breaking load and those of them that broke off no piece
+(aggregate.sheet_record), and the sheet table shows them over the starts."""
 import math
 import os
 import sys
@@ -11,7 +13,8 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # checks, beside this file
 from checks import check, finish  # noqa: E402
-from icedem_tools.sweeps import execute  # noqa: E402
+import numpy as np  # noqa: E402
+from icedem_tools.sweeps import aggregate, execute  # noqa: E402
 from icedem_tools.studies import level_ice_analytic as la  # noqa: E402
 
 SWEEP = """name = "analytic_test"
@@ -65,4 +68,22 @@ with tempfile.TemporaryDirectory() as tmp:
     check(len(change) == 1 and "+10.0 %" in change[0] and "(moves)" in change[0] and change[0].endswith("| 3 |"),
           f"leaving behind judged start by start, the 5 Hz maximum among the criteria: {change}")
     check(sum(l.startswith("| mu02 | 3 |") for l in lines) == 4, "four criteria judged")
+# the overloads of a sheet's breaks: load over breaking load 1.0, 2.5 (2 pieces), 30 (no piece), 1.9
+breaks = np.zeros(4, dtype=[("crack_distance", "f8"), ("broken_area", "f8"), ("crushed_area", "f8"), ("load", "f8"),
+                            ("breaking_load", "f8"), ("pieces", "i4")])
+breaks["load"], breaks["breaking_load"] = [26.0, 65.0, 780.0, 49.4], 26.0
+breaks["pieces"] = [2, 2, 0, 3]
+run = {"/sheet/breaks": breaks, "/bodies/parent": np.array([-1, -1])}
+aggregate.pieces.body_areas = lambda run: [0.01, 0.02]
+sheet = aggregate.sheet_record(run)
+check(sheet["overloaded"] == 2 and sheet["overloaded_no_piece"] == 1 and abs(sheet["largest_overload"] - 30.0) < 1e-9,
+      f"a sheet's overloaded breaks: 2 past twice their breaking load, 1 of them with no piece, the largest 30 x: "
+      f"{ {k: sheet[k] for k in ('overloaded', 'overloaded_no_piece', 'largest_overload')} }")
+record = {"summary": {}, "sheet": dict(sheet, quantiles=[0.25, 0.5, 0.75], crack_distance_m=[0.1, 0.2, 0.3],
+                                       piece_diameter_m=[0.1, 0.2, 0.3], area_weighted_diameter_m=0.5)}
+other = dict(record, sheet=dict(record["sheet"], overloaded=4, overloaded_no_piece=0, largest_overload=3.0))
+rows = [l for l in la.sheet_table({("mu02", 0.0): {5.2: (None, record), 5.201: (None, other)}}, (0.4, 0.033))
+        if l.startswith("| mu02 |")]
+check(len(rows) == 1 and rows[0].endswith("| 3.0 (0.5) | 30.0 |"),
+      f"the sheet table: overloaded breaks a tow (no piece) over the starts, the largest ratio of them: {rows}")
 finish()

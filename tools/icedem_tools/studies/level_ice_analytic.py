@@ -84,9 +84,22 @@ def lc_h(configs, design_loads):
     return (loads["characteristic_length_m"] if loads else None), thickness(run)
 
 
-def sheet_table(configs, lengths):
+def overload_text(sheets):
+    """Of a configuration's starts' sheet records: the breaks a tow whose zone bore more than aggregate.OVERLOAD times
+    its breaking load, those of them that broke off no piece in brackets, and the largest ratio over the starts;
+    "n/a" for records made before they were kept."""
+    if not sheets or any("overloaded" not in s for s in sheets):
+        return "n/a | n/a"
+    ratios = [s["largest_overload"] for s in sheets if s.get("largest_overload") is not None]
+    over = np.mean([s["overloaded"] for s in sheets])
+    no_piece = np.mean([s["overloaded_no_piece"] for s in sheets])
+    return f"{over:.1f} ({no_piece:.1f}) | {fmt(max(ratios) if ratios else None, digits=1)}"
+
+
+def sheet_table(configs, lengths, intro=True):
     """Where the sheet broke and what it broke into, per configuration: each start's median (its record's
-    sheet block, aggregate.sheet_record), averaged over the starts."""
+    sheet block, aggregate.sheet_record), averaged over the starts, and its overloaded breaks (overload_text);
+    `intro`: the paragraph that says so first."""
     lc, h = lengths
     L = ["", "Where the sheet broke and what it broke into (each start's median, averaged over its starts): the "
          "crack distance x* of the closed forms (docs/model/breakage.md), against the characteristic length "
@@ -95,10 +108,15 @@ def sheet_table(configs, lengths):
          "Shkhinek and Kärnä), of ice whose l_c / h differs from the model ice's. The pieces at the tow's end "
          "(the rigid floes broken off, each split floe counted as its two pieces; pieces smaller than h^2 or "
          "narrower than h are crushed ice and not made): their equivalent diameters sqrt(4 A / pi) and the "
-         "area-weighted mean diameter.", "",
-         "| run | leave m | starts | breaks a tow | x* median m | x* / l_c | x* / h | pieces a tow | "
-         "diameter median m (quartiles) | area-weighted diameter m | its / l_c |",
-         "|---|---|---|---|---|---|---|---|---|---|---|"]
+         "area-weighted mean diameter. Overloaded: the breaks a tow whose zone bore more than "
+         f"{agg.OVERLOAD:g} times its breaking load (the check follows the step's solve, so a zone passes its load by "
+         "what one step adds; further where a cut broke off no piece, in brackets, and the sheet stood: "
+         "docs/model/breakage.md, \"Not yet\"), and the largest load over breaking load of the starts.", ""
+         ] if intro else [""]
+    L += ["| run | leave m | starts | breaks a tow | x* median m | x* / l_c | x* / h | pieces a tow | "
+          "diameter median m (quartiles) | area-weighted diameter m | its / l_c | overloaded a tow (no piece) | "
+          "largest load / breaking load |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for (scenario, leave), members in sorted(configs.items()):
         sheets = [rec["sheet"] for _, rec in members.values() if rec.get("sheet")]
         if not sheets:
@@ -110,7 +128,7 @@ def sheet_table(configs, lengths):
         L.append(f"| {scenario} | {leave:g} | {len(sheets)} | {np.mean([s['breaks'] for s in sheets]):.0f} | "
                  f"{x:.3f} | {fmt(x / lc if lc else None, digits=2)} | {fmt(x / h if h else None, digits=1)} | "
                  f"{np.mean([s['pieces'] for s in sheets]):.0f} | {d[1]:.3f} ({d[0]:.3f}-{d[2]:.3f}) | {w:.3f} | "
-                 f"{fmt(w / lc if lc else None, digits=2)} |")
+                 f"{fmt(w / lc if lc else None, digits=2)} | {overload_text(sheets)} |")
     return L
 
 

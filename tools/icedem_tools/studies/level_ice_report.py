@@ -292,6 +292,16 @@ def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thick
         ensembles = ([(analytic, rigid)] + [(o, c) for (o, _), c in zip(crushing, crushed)]
                      + [(o, c) for o, c, _ in others])
         comparisons = ([(o, b) for (o, _), b in zip(crushing, crushing_bases)] + [(o, b) for o, _, b in others])
+        # where the changed tows' sheet broke, a table a sweep (their scenarios share names)
+        changed = [(o, c) for o, c in ensembles[1:] if c]
+        if changed:
+            L += ["### Where the changed tows' sheet broke", "",
+                  "As for the tows above (\"Where the sheet broke and what it broke into\"), for each changed sweep."]
+            lengths = level_ice_analytic.lc_h(rigid, design) if rigid else (None, None)
+            for o, c in changed:
+                L += ["", f"`{os.path.relpath(o, spec.ROOT)}`:"]
+                L += level_ice_analytic.sheet_table(c, lengths, intro=False)
+            L += [""]
         L += level_ice_blocks.section(ensembles, comparisons, design)
         if thickness_speed:
             L += level_ice_thickness_speed.section(thickness_speed, thickness_speed_out, design, figure)

@@ -189,14 +189,19 @@ def lowpass_maxima(t, x, inside):
 
 # the quantiles a record keeps of a level sheet's breaks and pieces (sheet_record)
 SHEET_QUANTILES = (0.1, 0.25, 0.5, 0.75, 0.9)
+# a break whose zone bore more than this times its breaking load: the check comes after the step's solve, so a zone
+# passes its load by what one step adds, and further where its cut broke off no piece and the sheet stood
+# (docs/model/breakage.md, "Not yet")
+OVERLOAD = 2.0
 
 
 def sheet_record(run):
-    """Of a run of level ice cut by closed forms (/sheet/breaks), its breaks' crack distances (x*, m) and the
-    areas they broke off, and the pieces at the run's end (the bodies no split made two of): their count, the
-    quantiles of their areas and of their equivalent diameters sqrt(4 A / pi), and the area-weighted mean
-    diameter; None for any other run. Quantiles, not lists: a tow makes hundreds of pieces and a record stays
-    a few kB."""
+    """Of a run of level ice cut by closed forms (/sheet/breaks), its breaks' crack distances (x*, m), the
+    areas they broke off, how many bore more than OVERLOAD times their breaking load (and of those, how many broke
+    off no piece) and the largest such ratio, and the pieces at the run's end (the bodies no split made two of):
+    their count, the quantiles of their areas and of their equivalent diameters sqrt(4 A / pi), and the
+    area-weighted mean diameter; None for any other run. Quantiles, not lists: a tow makes hundreds of pieces and
+    a record stays a few kB."""
     if "/sheet/breaks" not in run:
         return None
     b = np.asarray(run["/sheet/breaks"])
@@ -209,7 +214,12 @@ def sheet_record(run):
 
     def q(x):
         return [float(f"{v:.6g}") for v in np.quantile(x, SHEET_QUANTILES)] if len(x) else []
+    ratio = b["load"] / b["breaking_load"] if len(b) else np.zeros(0)
+    over = ratio > OVERLOAD
     return {"breaks": int(len(b)), "crack_distance_m": q(b["crack_distance"]) if len(b) else [],
+            "overloaded": int(over.sum()),
+            "overloaded_no_piece": int((over & (b["pieces"] == 0)).sum()) if len(b) else 0,
+            "largest_overload": float(f"{ratio.max():.6g}") if len(b) else None, "overload": OVERLOAD,
             "broken_area_m2": float(f"{b['broken_area'].sum():.6g}") if len(b) else 0.0,
             "crushed_area_m2": float(f"{b['crushed_area'].sum():.6g}") if len(b) else 0.0,
             "pieces": int(len(a)), "piece_area_m2": q(a), "piece_diameter_m": q(d),
@@ -317,10 +327,10 @@ SAME_RUN_KEYS = ("steps", "mean_fx_N", "max_fx_N", "breaks")
 def load_record(run, out):
     """The record of a finished run: the kept file when the sweep keeps records and it is at
     least as new as the run's summary (and has the window's quantiles and filtered maxima, kept since
-    2026-11-26, its largest steps and its blocks, kept since 2026-11-30); else made from the run's directory
-    (reading its HDF5 file) and kept. A kept record is never replaced by a run directory holding another run (a
-    figure's rerun by another build: its SAME_RUN_KEYS differ): the record stays, and a warning names the
-    directory."""
+    2026-11-26, its largest steps, its blocks and a sheet's overloads, kept since 2026-11-30); else made from the
+    run's directory (reading its HDF5 file) and kept. A kept record is never replaced by a run directory holding
+    another run (a figure's rerun by another build: its SAME_RUN_KEYS differ): the record stays, and a warning names
+    the directory."""
     from . import execute
     run_dir = os.path.join(out, run.path)
     summary = os.path.join(run_dir, RUN_FILES["summary"])
@@ -332,7 +342,8 @@ def load_record(run, out):
     kept = existing if existing is not None and (
         not os.path.isfile(summary) or os.path.getmtime(run.record_file) >= os.path.getmtime(summary)) else None
     finished_here = execute.finished_here(run, out)
-    if finished_here and (kept is None or not RECORD_WINDOW_KEYS <= set(kept.get("window", {}))):
+    if finished_here and (kept is None or not RECORD_WINDOW_KEYS <= set(kept.get("window", {}))
+                          or ("sheet" in kept and "overloaded" not in kept["sheet"])):
         if existing is not None:
             here = results.load_summary(summary)
             was = existing["summary"]
