@@ -69,16 +69,18 @@ with tempfile.TemporaryDirectory() as tmp:
           f"leaving behind judged start by start, the 5 Hz maximum among the criteria: {change}")
     check(sum(l.startswith("| mu02 | 3 |") for l in lines) == 4, "four criteria judged")
 # the overloads of a sheet's breaks: load over breaking load 1.0, 2.5 (2 pieces), 30 (no piece), 1.9
-breaks = np.zeros(4, dtype=[("crack_distance", "f8"), ("broken_area", "f8"), ("crushed_area", "f8"), ("load", "f8"),
-                            ("breaking_load", "f8"), ("pieces", "i4")])
+breaks = np.zeros(4, dtype=[("time", "f8"), ("crack_distance", "f8"), ("broken_area", "f8"), ("crushed_area", "f8"),
+                            ("load", "f8"), ("breaking_load", "f8"), ("pieces", "i4")])
+breaks["time"] = [10.0, 20.0, 30.0, 40.0]
 breaks["load"], breaks["breaking_load"] = [26.0, 65.0, 780.0, 49.4], 26.0
 breaks["pieces"] = [2, 2, 0, 3]
 run = {"/sheet/breaks": breaks, "/bodies/parent": np.array([-1, -1])}
 aggregate.pieces.body_areas = lambda run: [0.01, 0.02]
 sheet = aggregate.sheet_record(run)
-check(sheet["overloaded"] == 2 and sheet["overloaded_no_piece"] == 1 and abs(sheet["largest_overload"] - 30.0) < 1e-9,
+check(sheet["overloaded"] == 2 and sheet["overloaded_no_piece"] == 1 and abs(sheet["largest_overload"] - 30.0) < 1e-9
+      and sheet["overload_times_s"] == [20.0, 30.0],
       f"a sheet's overloaded breaks: 2 past twice their breaking load, 1 of them with no piece, the largest 30 x: "
-      f"{ {k: sheet[k] for k in ('overloaded', 'overloaded_no_piece', 'largest_overload')} }")
+      f"{ {k: sheet[k] for k in ('overloaded', 'overloaded_no_piece', 'largest_overload', 'overload_times_s')} }")
 record = {"summary": {}, "sheet": dict(sheet, quantiles=[0.25, 0.5, 0.75], crack_distance_m=[0.1, 0.2, 0.3],
                                        piece_diameter_m=[0.1, 0.2, 0.3], area_weighted_diameter_m=0.5)}
 other = dict(record, sheet=dict(record["sheet"], overloaded=4, overloaded_no_piece=0, largest_overload=3.0))

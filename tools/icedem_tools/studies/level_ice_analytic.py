@@ -55,6 +55,26 @@ def at_the_cap(records):
     return f"{sum(bool(s.get('handovers')) or bool(s.get('capped')) for s in steps)}/{len(steps)}"
 
 
+# how near an overloaded break (aggregate.sheet_record) a start's largest load must fall to be its: a zone bears its
+# overload at the break's step and the few before, while the sheet stands
+OVERLOAD_WITHIN_S = 0.1
+
+
+def at_an_overload(records):
+    """(k, n): of the n records that describe both their window's largest step and their sheet's overloaded breaks,
+    the k whose largest load fell within OVERLOAD_WITHIN_S of a break whose zone bore more than aggregate.OVERLOAD
+    times its breaking load."""
+    k = n = 0
+    for rec in records:
+        steps = (rec.get("window") or {}).get("largest_steps")
+        times = (rec.get("sheet") or {}).get("overload_times_s")
+        if not steps or times is None:
+            continue
+        n += 1
+        k += any(abs(t - steps[0]["time_s"]) <= OVERLOAD_WITHIN_S + 1e-9 for t in times)
+    return k, n
+
+
 def configurations(sweep, out):
     """{(scenario, leave_behind m): {start_x: (run, record)}} of the sweep's finished runs."""
     _, runs = spec.load(sweep)

@@ -107,7 +107,8 @@ def closer_to_iso(lattice, sheets):
 
 
 def sheet_breaking(configs, design):
-    """{mu: (breaks a metre of tow, crack distance over l_c, force on the zone that broke in N)} of the analytic
+    """{mu: (breaks a metre of tow, crack distance over l_c, force on the zone that broke in N, (k, n) of
+    level_ice_analytic.at_an_overload)} of the analytic
     tows of `configs` (as sheet_ratios takes) without leave_behind, each the mean over the starts of the start's
     own: its sheet's breaks over the distance it was towed, its median crack distance, and the median magnitude of
     the cone's force on the zone of the edge whose load broke it (the breaks by the cone, /fracture/events
@@ -130,7 +131,8 @@ def sheet_breaking(configs, design):
             if f:
                 force.append(float(np.median(f)))
         if per and x and force:
-            found[loads["friction"]] = (float(np.mean(per)), float(np.mean(x)), float(np.mean(force)))
+            found[loads["friction"]] = (float(np.mean(per)), float(np.mean(x)), float(np.mean(force)),
+                                        level_ice_analytic.at_an_overload([rec for _, rec in members.values()]))
     return found
 
 
@@ -164,14 +166,19 @@ def why_below_iso(iso, lattice, sheets, breaking):
                 "pieces locked between the cone and the held sheet, above).")
         for name, by_mu in breaking.items():
             if mu in by_mu:
-                per, x, force = by_mu[mu]
+                per, x, force, (k, n) = by_mu[mu]
                 largest = dict(mine).get(name, {}).get((mu, "max"))
                 text += (f" Neither model fails the front in one crack: the cut sheet ({name}) broke {per:.0f} times "
                          f"a metre of tow, its cracks {x:.2f} l_c from the edge, each break a zone of the front; the "
                          f"cone's force on the zone that broke had a median of {force:.1f} N (its magnitude, surge "
                          f"and heave together), {force / d['breaking_N']:.2f} of ISO's breaking term"
                          + (f", and its maximum (the mean of its starts') is {largest * d['total_N'] / force:.1f} "
-                            "times that force" if largest else "") + ".")
+                            "times that force" if largest else "") + "."
+                         + (f" Of its {n} starts, {k} had their largest load within "
+                            f"{level_ice_analytic.OVERLOAD_WITHIN_S:g} s of a break whose zone bore more than "
+                            f"{agg.OVERLOAD:g} times its breaking load"
+                            + (" (the sheet standing past it: docs/model/breakage.md, \"Not yet\"): those maxima "
+                               "are the cut's, not the ice's." if k else ".") if n else ""))
                 break
         inside = [(label, n) for n, r in mine for label in level_ice_analytic.CRITERIA
                   if r.get((mu, label)) and any(x.get(label) for x in runs)

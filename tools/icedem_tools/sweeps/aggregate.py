@@ -198,8 +198,8 @@ OVERLOAD = 2.0
 def sheet_record(run):
     """Of a run of level ice cut by closed forms (/sheet/breaks), its breaks' crack distances (x*, m), the
     areas they broke off, how many bore more than OVERLOAD times their breaking load (and of those, how many broke
-    off no piece) and the largest such ratio, and the pieces at the run's end (the bodies no split made two of):
-    their count, the quantiles of their areas and of their equivalent diameters sqrt(4 A / pi), and the
+    off no piece), when they were and the largest such ratio, and the pieces at the run's end (the bodies no split
+    made two of): their count, the quantiles of their areas and of their equivalent diameters sqrt(4 A / pi), and the
     area-weighted mean diameter; None for any other run. Quantiles, not lists: a tow makes hundreds of pieces and
     a record stays a few kB."""
     if "/sheet/breaks" not in run:
@@ -220,6 +220,7 @@ def sheet_record(run):
             "overloaded": int(over.sum()),
             "overloaded_no_piece": int((over & (b["pieces"] == 0)).sum()) if len(b) else 0,
             "largest_overload": float(f"{ratio.max():.6g}") if len(b) else None, "overload": OVERLOAD,
+            "overload_times_s": [float(f"{v:.6g}") for v in b["time"][over]] if len(b) else [],
             "broken_area_m2": float(f"{b['broken_area'].sum():.6g}") if len(b) else 0.0,
             "crushed_area_m2": float(f"{b['crushed_area'].sum():.6g}") if len(b) else 0.0,
             "pieces": int(len(a)), "piece_area_m2": q(a), "piece_diameter_m": q(d),
@@ -343,7 +344,7 @@ def load_record(run, out):
         not os.path.isfile(summary) or os.path.getmtime(run.record_file) >= os.path.getmtime(summary)) else None
     finished_here = execute.finished_here(run, out)
     if finished_here and (kept is None or not RECORD_WINDOW_KEYS <= set(kept.get("window", {}))
-                          or ("sheet" in kept and "overloaded" not in kept["sheet"])):
+                          or ("sheet" in kept and "overload_times_s" not in kept["sheet"])):
         if existing is not None:
             here = results.load_summary(summary)
             was = existing["summary"]
