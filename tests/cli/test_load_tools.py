@@ -77,7 +77,6 @@ check(abs(kept["5"] - by_icedem) <= 1e-9 * abs(by_icedem),
 # its 10 s blocks: the window's whole blocks from its start, each block's mean and maximum as read off the
 # run's load by time (half a sample either side of a block's edge); the record rounds to 6 digits
 import h5py  # noqa: E402
-import numpy as np  # noqa: E402
 blocks = aggregate.make_record(run_dir)["window"]["blocks"]
 with h5py.File(os.path.join(run_dir, "run.h5"), "r") as f:
     t, x = f["/load/time"][:], f["/load/surge"][:]

@@ -81,10 +81,10 @@ check(sheet["overloaded"] == 2 and sheet["overloaded_no_piece"] == 1 and abs(she
       and sheet["overload_times_s"] == [20.0, 30.0],
       f"a sheet's overloaded breaks: 2 past twice their breaking load, 1 of them with no piece, the largest 30 x: "
       f"{ {k: sheet[k] for k in ('overloaded', 'overloaded_no_piece', 'largest_overload', 'overload_times_s')} }")
-record = {"summary": {}, "sheet": dict(sheet, quantiles=[0.25, 0.5, 0.75], crack_distance_m=[0.1, 0.2, 0.3],
-                                       piece_diameter_m=[0.1, 0.2, 0.3], area_weighted_diameter_m=0.5)}
-other = dict(record, sheet=dict(record["sheet"], overloaded=4, overloaded_no_piece=0, largest_overload=3.0))
-rows = [l for l in la.sheet_table({("mu02", 0.0): {5.2: (None, record), 5.201: (None, other)}}, (0.4, 0.033))
+with_sheet = {"summary": {}, "sheet": dict(sheet, quantiles=[0.25, 0.5, 0.75], crack_distance_m=[0.1, 0.2, 0.3],
+                                           piece_diameter_m=[0.1, 0.2, 0.3], area_weighted_diameter_m=0.5)}
+other = dict(with_sheet, sheet=dict(with_sheet["sheet"], overloaded=4, overloaded_no_piece=0, largest_overload=3.0))
+rows = [l for l in la.sheet_table({("mu02", 0.0): {5.2: (None, with_sheet), 5.201: (None, other)}}, (0.4, 0.033))
         if l.startswith("| mu02 |")]
 check(len(rows) == 1 and rows[0].endswith("| 3.0 (0.5) | 30.0 |"),
       f"the sheet table: overloaded breaks a tow (no piece) over the starts, the largest ratio of them: {rows}")

@@ -132,7 +132,7 @@ with tempfile.TemporaryDirectory() as tmp:
     iso = 200.0 * 0.041 / 0.033
     lc = 0.3 * (0.041 / 0.033) ** 0.75
     check(len(rows) == 4 and len(fast_thick) == 1
-          and f"| 32.8 | 98.4 | 3280.0 | 328.0 | 65.6 ± " in fast_thick[0]
+          and "| 32.8 | 98.4 | 3280.0 | 328.0 | 65.6 ± " in fast_thick[0]
           and f"| {iso:.1f} | 250.0 | {32.8 / iso:.2f} | {328.0 / iso:.2f} | {65.6 / iso:.2f} | 500 | "
           f"{lc:.3f} | {0.3 / lc:.2f} | {0.6 / lc:.2f} | 0.50 |" in fast_thick[0],
           f"a row per run, its loads (its blocks' mean maximum) over ISO's and its crack and pieces over l_c: "

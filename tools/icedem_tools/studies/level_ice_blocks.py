@@ -14,7 +14,6 @@ import os
 from ..runs import spec
 from ..stats import block_change, verdict
 from ..reports.report_tables import fmt
-from . import level_ice_analytic as la
 
 # the page's block criteria: (label, the window's blocks key, its low-pass cut-off or None)
 CRITERIA = (("block mean", "mean_fx_N", None), ("block max", "max_fx_N", None),

@@ -8,7 +8,6 @@ import dataclasses
 import os
 
 import matplotlib
-import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
