@@ -45,7 +45,9 @@ def _ensemble(values):
 # (heading, what the changed tows are, why they are run or how to read them)
 STEP = ("### Halving the step", "the same tows at half their step (each against the tows above of its scenario's name)",
         "The 5 Hz low-passed maximum is the one maximum a step does not set by construction; the unfiltered "
-        "maximum is a single step's.")
+        "maximum is a single step's. The halved step is solved to the same accuracy of the forces (its solve "
+        "column): Siconos' merit, the default, loosens relative to the forces as the step shrinks, and a looser "
+        "solve lowers these tows' loads (\"Tightening the solve\").")
 CRUSHING = ("### The crushing contact law",
             "the same tows with the ice crushing against the cone (contact.model = \"crushing\", at the structure "
             "only, docs/model/crushing.md) instead of rigid contacts",
