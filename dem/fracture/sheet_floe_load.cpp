@@ -112,7 +112,7 @@ FloePatches floe_patches(const Polygon& sheet, const std::vector<SheetLoadPoint>
       low = std::min(low, p->at.dot(across));
       high = std::max(high, p->at.dot(across));
     }
-    c.half_width = (high - low) / 2;
+    c.half_width = std::max((high - low) / 2, kLeastPatch * thickness / 2);
     c.normal_force = force.norm();
     c.horizontal_force = Eigen::Vector2d(force.x(), force.z()).dot(c.direction);
     c.bending_force = std::abs(force.y());

@@ -12,7 +12,12 @@
 //     apart so that a run says how much of the floes' load that was;
 //   - its centre is the force-weighted mean of its points, taken to the nearest point of the outline;
 //   - the wedge's axis (direction) is the sheet's inward normal there (at a corner, the mean of its two sides');
-//   - its half-width is half its points' spread along the edge;
+//   - its half-width is half its points' spread along the edge, but at least kLeastPatch thicknesses wide: a piece
+//     touching at a corner (one point, no spread) is a point load, under which Nevel's wedge fails at the load
+//     (its crack a few millimetres out), the cut breaks off nothing and the sheet stands while the piece, locked
+//     between it and the cone, bears the cone without bound (the crushing tows' kilonewton steps); a load on a
+//     plate's edge spreads over about the plate's thickness (Saint-Venant: plate theory holds a thickness away from
+//     the load, as kEdgeReach says), and two ice edges touch over theirs;
 //   - its bending force is the magnitude of the vertical force it puts on the sheet (the closed forms are those
 //     of a linear plate on a linear foundation: up or down, the same load breaks it);
 // and it breaks the sheet as a crushed zone does (sheet_breaking.hpp), with nothing crushed.
@@ -32,6 +37,9 @@ namespace icedem {
 /// Loads nearer the outline than this many ice thicknesses are edge loads: plate theory cannot tell a load a
 /// thickness from the edge from one at it.
 constexpr double kEdgeReach = 1.0;
+
+/// A floe's load patch on the edge is at least this many ice thicknesses wide (its half-width at least half that).
+constexpr double kLeastPatch = 1.0;
 
 /// One contact point's force on the sheet.
 struct SheetLoadPoint {

@@ -1,11 +1,13 @@
 // The floes' loads on the analytic sheet's edge as load patches (dem/fracture/sheet_floe_load.hpp): one patch per
 // floe at the outline, its axis the sheet's inward normal, its width its points' spread along the edge, its
-// bending force the vertical force it puts on the sheet; a load farther in than a thickness left out. And the
+// bending force the vertical force it puts on the sheet, a piece's corner a patch a thickness wide that breaks off
+// pieces; a load farther in than a thickness left out. And the
 // forces read from Bullet's contacts: a block at rest on a prism puts its weight on it.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "dem/fracture/sheet_breaking.hpp"
 #include "dem/fracture/sheet_floe_load.hpp"
 #include "tests/support/box_world.hpp"
 
@@ -54,6 +56,24 @@ TEST(SheetFloeLoad, EachFloeIsItsOwnPatchAndInteriorLoadsAreLeftOut) {
   EXPECT_NEAR(out.patches[1].bending_force, 5.0, 1e-12);  // up or down, the magnitude
   EXPECT_NEAR(out.patches[0].bending_force, 0.0, 1e-12);
   EXPECT_NEAR(out.interior_vertical, 1.5, 1e-12);
+}
+
+// A piece touching the straight edge at one point (its corner): the patch is a thickness wide, not a point, and the
+// cut its load makes breaks off ice as a load on a plate's edge does, pieces at least a thickness across, where a
+// point patch's wedge failed at the load (its crack a few millimetres out) and broke off nothing: the sheet stood
+// while the piece, locked against the cone, bore it without bound. The paper's ice (Table 3); 1e-12 exact arithmetic
+TEST(SheetFloeLoad, APieceTouchingAtACornerLoadsAPatchAThicknessWide) {
+  const std::vector<SheetLoadPoint> points = {push(0.0, 0.4, {2.0, -30.0, 0.0}, 5)};
+  const FloePatches out = floe_patches(kSheet, points, kThickness);
+  ASSERT_EQ(out.patches.size(), 1u);
+  const SheetContact& c = out.patches[0];
+  EXPECT_NEAR(c.half_width, kLeastPatch * kThickness / 2, 1e-12);
+  const SheetIce ice{kThickness, 60e6, 0.33, 36.4e3, 1000.0, 9.81};
+  const SheetBreakPlan plan = plan_sheet_break(kSheet, c, ice);
+  EXPECT_GT(plan.crack_distance, kThickness) << "the crack lies farther out than the ice is thick";
+  const SheetCut cut = cut_sheet(kSheet, c, plan, kThickness);
+  ASSERT_FALSE(cut.pieces.empty()) << "the load breaks ice off the sheet";
+  for (const Polygon& piece : cut.pieces) EXPECT_GE(min_width(piece), kThickness) << "a piece, not crushed ice";
 }
 
 // At a corner of the sheet the axis is the corner's bisector, into the ice

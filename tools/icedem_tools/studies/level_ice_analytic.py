@@ -131,7 +131,8 @@ def sheet_table(configs, lengths, intro=True):
          "area-weighted mean diameter. Overloaded: the breaks a tow whose zone bore more than "
          f"{agg.OVERLOAD:g} times its breaking load (the check follows the step's solve, so a zone passes its load by "
          "what one step adds; further where a cut broke off no piece, in brackets, and the sheet stood: "
-         "docs/model/breakage.md, \"Not yet\"), and the largest load over breaking load of the starts.", ""
+         "docs/model/breakage.md, \"A piece's corner on the edge\"), and the largest load over breaking load of the "
+         "starts.", ""
          ] if intro else [""]
     L += ["| run | leave m | starts | breaks a tow | x* median m | x* / l_c | x* / h | pieces a tow | "
           "diameter median m (quartiles) | area-weighted diameter m | its / l_c | overloaded a tow (no piece) | "

@@ -191,7 +191,7 @@ def lowpass_maxima(t, x, inside):
 SHEET_QUANTILES = (0.1, 0.25, 0.5, 0.75, 0.9)
 # a break whose zone bore more than this times its breaking load: the check comes after the step's solve, so a zone
 # passes its load by what one step adds, and further where its cut broke off no piece and the sheet stood
-# (docs/model/breakage.md, "Not yet")
+# (docs/model/breakage.md, "A piece's corner on the edge")
 OVERLOAD = 2.0
 
 
