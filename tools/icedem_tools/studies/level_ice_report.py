@@ -177,8 +177,9 @@ def why_below_iso(iso, lattice, sheets, breaking):
                          + (f" Of its {n} starts, {k} had their largest load within "
                             f"{level_ice_analytic.OVERLOAD_WITHIN_S:g} s of a break whose zone bore more than "
                             f"{agg.OVERLOAD:g} times its breaking load"
-                            + (" (the sheet standing past it: docs/model/breakage.md, \"A piece's corner on the "
-                               "edge\"): those maxima are the cut's, not the ice's." if k else ".") if n else ""))
+                            + (" (a piece's push on the sheet's rigid edge within one step, checked against the "
+                               "edge's breaking load only after it: docs/model/breakage.md, \"A piece's corner on the "
+                               "edge\"): those maxima are the model's, not the ice's." if k else ".") if n else ""))
                 break
         inside = [(label, n) for n, r in mine for label in level_ice_analytic.CRITERIA
                   if r.get((mu, label)) and any(x.get(label) for x in runs)
