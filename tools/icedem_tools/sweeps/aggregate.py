@@ -180,11 +180,17 @@ def lowpass(x, dt, cutoff_hz):
     return y[pad:pad + n]
 
 
-def lowpass_maxima(t, x, inside):
-    """{cut-off Hz as text: the load's maximum over the samples `inside` after that low-pass} for each of
-    LOWPASS_HZ, the whole record filtered first (so the window's edges see no filter start-up)."""
+def lowpassed(t, x):
+    """{cut-off Hz as text: the whole record low-passed at it} for each of LOWPASS_HZ (the whole record, so that a
+    window's edges see no filter start-up)."""
     dt = (t[-1] - t[0]) / (len(t) - 1)
-    return {f"{fc:g}": float(lowpass(x, dt, fc)[inside].max()) for fc in LOWPASS_HZ}
+    return {f"{fc:g}": lowpass(x, dt, fc) for fc in LOWPASS_HZ}
+
+
+def lowpass_maxima(t, x, inside, filtered=None):
+    """{cut-off Hz as text: the load's maximum over the samples `inside` after that low-pass} for each of
+    LOWPASS_HZ; `filtered`: lowpassed(t, x) where the caller has it already."""
+    return {k: float(y[inside].max()) for k, y in (filtered or lowpassed(t, x)).items()}
 
 
 # the quantiles a record keeps of a level sheet's breaks and pieces (sheet_record)
@@ -214,13 +220,13 @@ def sheet_record(run):
 
     def q(x):
         return [float(f"{v:.6g}") for v in np.quantile(x, SHEET_QUANTILES)] if len(x) else []
-    ratio = b["load"] / b["breaking_load"] if len(b) else np.zeros(0)
+    ratio = b["load"] / b["breaking_load"]
     over = ratio > OVERLOAD
     return {"breaks": int(len(b)), "crack_distance_m": q(b["crack_distance"]) if len(b) else [],
             "overloaded": int(over.sum()),
-            "overloaded_no_piece": int((over & (b["pieces"] == 0)).sum()) if len(b) else 0,
+            "overloaded_no_piece": int((over & (b["pieces"] == 0)).sum()),
             "largest_overload": float(f"{ratio.max():.6g}") if len(b) else None, "overload": OVERLOAD,
-            "overload_times_s": [float(f"{v:.6g}") for v in b["time"][over]] if len(b) else [],
+            "overload_times_s": [float(f"{v:.6g}") for v in b["time"][over]],
             "broken_area_m2": float(f"{b['broken_area'].sum():.6g}") if len(b) else 0.0,
             "crushed_area_m2": float(f"{b['crushed_area'].sum():.6g}") if len(b) else 0.0,
             "pieces": int(len(a)), "piece_area_m2": q(a), "piece_diameter_m": q(d),
@@ -254,10 +260,10 @@ def largest_steps(run, t, x, inside, count=LARGEST_STEPS):
 BLOCK_S = 10.0
 
 
-def block_loads(t, x, inside, block_s=BLOCK_S):
+def block_loads(t, x, inside, filtered, block_s=BLOCK_S):
     """The window's surge load cut into whole blocks of block_s seconds from its start (a last part block left
-    out): each block's mean, its maximum, and its maximum low-passed at each of LOWPASS_HZ (the whole record
-    filtered first, as lowpass_maxima), in time order. A tow gives some twenty of each: the spread of a run's own
+    out): each block's mean, its maximum, and its maximum low-passed at each of LOWPASS_HZ (`filtered`:
+    lowpassed(t, x), the whole record filtered), in time order. A tow gives some twenty of each: the spread of a run's own
     blocks, which its one mean and one maximum do not show, is what a change of setting is judged against when
     the starts are few."""
     index = np.flatnonzero(inside)
@@ -268,7 +274,6 @@ def block_loads(t, x, inside, block_s=BLOCK_S):
     count = len(index) // per
     if count < 1:
         return None
-    filtered = {f"{fc:g}": lowpass(x, dt, fc) for fc in LOWPASS_HZ}
     blocks = [index[k * per:(k + 1) * per] for k in range(count)]
 
     def r(v):
@@ -298,9 +303,10 @@ def make_record(run_dir):
         freq, power = f[keep].tolist(), [float(f"{v:.6g}") for v in p[keep]]
         if sel.any():  # the load a run exceeds 1 % of its window, less driven by one event than the max
             window["p99_fx_N"] = float(np.quantile(x[sel], 0.99))
-            window["max_lowpass_fx_N"] = lowpass_maxima(t, x, sel)
+            filtered = lowpassed(t, x)  # once, for the window's filtered maxima and its blocks'
+            window["max_lowpass_fx_N"] = lowpass_maxima(t, x, sel, filtered)
             window["largest_steps"] = largest_steps(run, t, x, sel)
-            window["blocks"] = block_loads(t, x, sel)  # None for a window shorter than a block
+            window["blocks"] = block_loads(t, x, sel, filtered)  # None for a window shorter than a block
     ev = run.events
     fields = [k for k in (ev.dtype.names or ()) if k not in ("mode_name", "mechanism_name")]
     for row in ev:
