@@ -16,12 +16,6 @@ from ..stats import verdict
 from . import level_ice_analytic as la
 
 
-def _step(members):
-    """The Bullet step (s) of an ensemble's records (summary bullet_step_s), None unless they share one."""
-    steps = {rec["summary"].get("bullet_step_s") for _, rec in members.values()}
-    return steps.pop() if len(steps) == 1 and None not in steps else None
-
-
 def solve_text(members):
     """How an ensemble's tows were solved, from what its sweep sets (spec.run_value): the merit and the tolerance an
     island touching the structure is solved to ("siconos 0.001"); "n/a" for none or a scenario that cannot be read."""
@@ -80,7 +74,7 @@ def section(bases, other, other_out, what, base_of=lambda scenario: scenario):
     changes, names = {}, {}
     for scenario in sorted(changed):
         h_members, b_members = changed[scenario], base.get(base_of(scenario), {})
-        dt_b, dt_h = _step(b_members), _step(h_members)
+        dt_b, dt_h = la.ensemble_step(b_members), la.ensemble_step(h_members)
         solve_b, solve_h = solve_text(b_members), solve_text(h_members)
         common = sorted(set(h_members) & set(b_members))
         for label, key in la.CRITERIA.items():

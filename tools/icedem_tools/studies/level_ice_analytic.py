@@ -44,6 +44,12 @@ def mean_text(values):
     return f"{m:.1f}" + (f" ± {h:.1f}" if len(v) > 1 else "")
 
 
+def ensemble_step(members):
+    """The Bullet step (s) of an ensemble's records (summary bullet_step_s), None unless they share one."""
+    steps = {rec["summary"].get("bullet_step_s") for _, rec in members.values()}
+    return steps.pop() if len(steps) == 1 and None not in steps else None
+
+
 def at_the_cap(records):
     """"k/n": of the n records that describe their window's largest steps (aggregate.largest_steps), the k whose
     largest load fell at a step whose solve reached its cap (an island handed over there, or left capped); "n/a"

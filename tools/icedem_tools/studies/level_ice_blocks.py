@@ -14,25 +14,23 @@ import os
 from ..runs import spec
 from ..stats import block_change, verdict
 from ..reports.report_tables import fmt
+from . import level_ice_analytic as la
 
 # the page's block criteria: (label, the window's blocks key, its low-pass cut-off or None)
 CRITERIA = (("block mean", "mean_fx_N", None), ("block max", "max_fx_N", None),
             ("block max 5 Hz", "max_lowpass_fx_N", "5"))
 
 
+def record_blocks(record, key, cutoff):
+    """A record's blocks of one criterion (aggregate.block_loads: `key`, at the low-pass `cutoff` or None), in time
+    order; None for a record without them."""
+    v = ((record.get("window") or {}).get("blocks") or {}).get(key)
+    return (v.get(cutoff) if cutoff is not None and v is not None else v) or None
+
+
 def block_runs(members, key, cutoff):
-    """The blocks of each start's record (aggregate.block_loads), a list per start; starts without blocks left
-    out."""
-    runs = []
-    for _, rec in members.values():
-        blocks = (rec.get("window") or {}).get("blocks")
-        if not blocks:
-            continue
-        v = blocks.get(key)
-        v = v.get(cutoff) if cutoff is not None and v is not None else v
-        if v:
-            runs.append(v)
-    return runs
+    """The blocks of each start's record (record_blocks), a list per start; starts without blocks left out."""
+    return [v for v in (record_blocks(rec, key, cutoff) for _, rec in members.values()) if v]
 
 
 def _text(runs):
@@ -76,8 +74,7 @@ def section(ensembles, comparisons, design_loads):
         run = next(iter(members.values()))[0]
         loads, _ = design_loads(run)
         iso = loads["total_N"] if loads else None
-        steps = {rec["summary"].get("bullet_step_s") for _, rec in members.values()}
-        step = steps.pop() if len(steps) == 1 else None
+        step = la.ensemble_step(members)
         m_max = block_change.mean_ci(runs["block max"])[0]
         m_5 = block_change.mean_ci(runs["block max 5 Hz"])[0] if runs["block max 5 Hz"] else None
         L.append(f"| {sc} | {os.path.basename(sweep)} | {_law(members)} | {'n/a' if step is None else f'{step:g}'} | "

@@ -47,10 +47,10 @@ def points(sweep, out, design_loads):
 
 def block_max(record):
     """(mean, 95 % half-width) of the tow's 10 s blocks' maxima (aggregate.block_loads), or None without blocks."""
-    runs = level_ice_blocks.block_runs({0: (None, record)}, "max_fx_N", None)
-    if not runs:
+    blocks = level_ice_blocks.record_blocks(record, "max_fx_N", None)
+    if not blocks:
         return None
-    m, h, _ = block_change.mean_ci(runs)
+    m, h, _ = block_change.mean_ci([blocks])
     return m, h
 
 
