@@ -50,13 +50,13 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(sweep, "w") as f:
         f.write(SWEEP)
     execute.status = lambda run, out: execute.Status(run, "pending")
-    text = "\n".join(la.section(sweep, tmp, design))
+    text = "\n".join(la.section(sweep, la.configurations(sweep, tmp), design))
     check("No finished run yet" in text, "no finished run: the section says so")
 
     execute.status = lambda run, out: execute.Status(run, "done")
     la.agg.load_record = lambda run, out: record(MEANS[float(dict(run.grid)[la.START])],
                                                  1.1 if float(dict(run.grid)[la.LEAVE]) == 3.0 else 1.0)
-    lines = la.section(sweep, tmp, design)
+    lines = la.section(sweep, la.configurations(sweep, tmp), design)
     rows = {tuple(c.strip() for c in l.split("|")[1:4]): l for l in lines if l.startswith("| mu02 | 0.2 |")}
     base = rows.get(("mu02", "0.2", "0"))
     # the mean over 20, 22, 24: 22 +- t(0.975, 2) * 2 / sqrt(3) = 4.97

@@ -89,7 +89,8 @@ with tempfile.TemporaryDirectory() as tmp:
         with open(files[name], "w") as f:
             f.write(text)
     execute.status = lambda run, out: execute.Status(run, "pending")
-    text = "\n".join(against.section([(files["base"], tmp)], files["crushing"], tmp, against.CRUSHING,
+    text = "\n".join(against.section([la.configurations(files["base"], tmp)], files["crushing"],
+                                     la.configurations(files["crushing"], tmp), against.CRUSHING,
                                      lambda n: n.removesuffix("_crushing")))
     check("No finished run yet" in text, "no finished run: the comparison says so")
 
@@ -105,7 +106,8 @@ with tempfile.TemporaryDirectory() as tmp:
     la.agg.load_record = load
     ts.agg.load_record = load
 
-    lines = against.section([(files["base"], tmp)], files["crushing"], tmp, against.CRUSHING,
+    lines = against.section([la.configurations(files["base"], tmp)], files["crushing"],
+                            la.configurations(files["crushing"], tmp), against.CRUSHING,
                             lambda n: n.removesuffix("_crushing"))
     rows = [l for l in lines if l.startswith("| mu02_crushing | mu02 | mean |")]
     half = 4.302653 * 2.0 / math.sqrt(3)
@@ -171,7 +173,7 @@ with tempfile.TemporaryDirectory() as tmp:
     check(len(step) == 3 and all(l.endswith("| 48 / 48 |") and "| -20.0 % (" in l for l in step),
           f"the halved step against the crushing tows of its name, each criterion -20 %: {step}")
     # the step's tows say how they were solved: the sweep's merit and its tolerance
-    lines = against.section([(files["base"], tmp), (files["crushing"], tmp)], files["step"], tmp, against.STEP,
+    lines = against.section([configs["base"], configs["crushing"]], files["step"], configs["step"], against.STEP,
                             lambda n: n)
     mean = [l for l in lines if l.startswith("| mu02_crushing | mu02_crushing | mean |")]
     check(len(mean) == 1 and "| 0.02 | siconos 0.001 | " in mean[0] and "| 0.01 | impulse 0.0001 | " in mean[0],

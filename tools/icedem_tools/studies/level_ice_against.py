@@ -54,18 +54,19 @@ SOLVE = ("### Tightening the solve", "the same tows with their contacts solved t
          "which no load reads). The default's loads are converged only where a tighter solve leaves them.")
 
 
-def section(bases, other, other_out, what, base_of=lambda scenario: scenario):
-    """The page's lines: each scenario's tows of `other` (runs in `other_out`) against the tows without
-    leave_behind of scenario `base_of(name)` in the sweeps `bases` ([(sweep file, run directory)], their scenarios'
-    names distinct); `what` is STEP or CRUSHING."""
+def section(bases, other, other_configs, what, base_of=lambda scenario: scenario):
+    """The page's lines: each scenario's tows of the sweep file `other` (its configurations `other_configs`,
+    level_ice_analytic.configurations) against the tows without leave_behind of scenario `base_of(name)` among the
+    configurations `bases` (a list, one a sweep, their scenarios' names distinct); `what` is CRUSHING, STEP or
+    SOLVE."""
     heading, text, why = what
     L = [heading, "",
          f"The tows above without leave_behind against {text} (`{os.path.relpath(other, spec.ROOT)}`). {why} The "
          "tow is chaotic, so a start of these tows is another draw, not the same path: each ensemble's mean over "
          "its starts (their number in brackets) with Student's 95 % interval, and the change over the starts both "
          "ran (the log ratio's 95 % interval and verdict, docs/model/estimators.md; wide over few starts).", ""]
-    base = {sc: m for sweep, out in bases for (sc, leave), m in la.configurations(sweep, out).items() if leave == 0.0}
-    changed = {sc: m for (sc, _), m in la.configurations(other, other_out).items()}
+    base = {sc: m for configs in bases for (sc, leave), m in configs.items() if leave == 0.0}
+    changed = {sc: m for (sc, _), m in other_configs.items()}
     if not changed:
         return L + ["No finished run yet.", ""]
     L += ["| run | against | criterion | step s | solve | against's | step s | solve | these | "

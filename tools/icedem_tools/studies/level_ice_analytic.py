@@ -159,9 +159,9 @@ def sheet_table(configs, lengths, intro=True):
     return L
 
 
-def section(sweep, out, design_loads):
-    """The page's lines on the analytic tows of `sweep` (runs in `out`); design_loads(run) is
-    (`icedem cone-load` of the run, None) or (None, why not)."""
+def section(sweep, configs, design_loads):
+    """The page's lines on the analytic tows of `sweep`, its configurations `configs` (configurations of the sweep);
+    design_loads(run) is (`icedem cone-load` of the run, None) or (None, why not)."""
     L = ["## Level ice cut by closed forms", "",
          f"Runs of `{os.path.relpath(sweep, spec.ROOT)}` finished so far: the sheet as one held body cut by closed "
          "forms (docs/model/breakage.md, \"Level ice cut by closed forms\"), its pieces rigid floes, rigid contacts. "
@@ -169,7 +169,6 @@ def section(sweep, out, design_loads):
          "started a millimetre apart (structure.start_x); its loads are the mean over its starts with Student's "
          "95 % interval (none for one start). leave m: `activation.leave_behind`, the pieces farther than it behind "
          "the cone's axis out of the run (0: none leaves).", ""]
-    configs = configurations(sweep, out)
     if not configs:
         return L + ["No finished run yet.", ""]
     L += ["Loads in N, surge, over the analysis window; max 5 Hz: the largest of the load low-passed at 5 Hz (a "

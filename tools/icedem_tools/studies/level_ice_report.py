@@ -200,7 +200,7 @@ def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thick
          thickness_speed_out=None, figure=None):
     """The page's Markdown lines for the sweep file `sweep` with its runs in `out`, and, with `analytic`
     (a sweep file of analytic tows, runs in `analytic_out`), their section, the same tows changed in one thing
-    (`against`: [(sweep file, run directory, what, base_of)] as level_ice_against.section takes, each against the
+    (`against`: [(sweep file, run directory, what, base_of)], the crushing tows first, each against the
     analytic tows and the crushing ones), the tows over thickness and speed (`thickness_speed`, runs in
     `thickness_speed_out`, their figure written to `figure`), and which model lies closer to ISO 19906."""
     name, runs = spec.load(sweep)
@@ -285,21 +285,17 @@ def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thick
             if key not in known:
                 known[key] = design_loads(icedem, run)
             return known[key]
-        L += level_ice_analytic.section(analytic, analytic_out, design)
-        crushing = [(o, o_out) for o, o_out, what, _ in against if what == level_ice_against.CRUSHING]
-        # each changed ensemble against the tows of its scenario's base name among the analytic and crushing sweeps
-        for other, other_out, what, base_of in against:
-            L += level_ice_against.section([(analytic, analytic_out)] + crushing, other, other_out, what, base_of)
-        # each sweep's records read once for its blocks, its ratios and its breaks
+        # each sweep's records read once, for every section that shows them
         rigid = level_ice_analytic.configurations(analytic, analytic_out)
-        crushed = [level_ice_analytic.configurations(o, o_out) for o, o_out in crushing]
-        # the blocks: the rigid tows, the crushing ones, then the others (the halved step) each against its base
-        others = [(o, level_ice_analytic.configurations(o, o_out), base_of) for o, o_out, what, base_of in against
-                  if what != level_ice_against.CRUSHING]
-        crushing_bases = [base_of for _, _, what, base_of in against if what == level_ice_against.CRUSHING]
-        ensembles = ([(analytic, rigid)] + [(o, c) for (o, _), c in zip(crushing, crushed)]
-                     + [(o, c) for o, c, _ in others])
-        comparisons = ([(o, b) for (o, _), b in zip(crushing, crushing_bases)] + [(o, b) for o, _, b in others])
+        read = [(o, level_ice_analytic.configurations(o, o_out), what, base_of) for o, o_out, what, base_of in against]
+        crushed = [c for _, c, what, _ in read if what == level_ice_against.CRUSHING]
+        L += level_ice_analytic.section(analytic, rigid, design)
+        # each changed ensemble against the tows of its scenario's base name among the analytic and crushing sweeps
+        for other, changed_configs, what, base_of in read:
+            L += level_ice_against.section([rigid] + crushed, other, changed_configs, what, base_of)
+        # the blocks: the rigid tows, then the changed ones in `against`'s order, each against its base
+        ensembles = [(analytic, rigid)] + [(o, c) for o, c, _, _ in read]
+        comparisons = [(o, base_of) for o, _, _, base_of in read]
         # where the changed tows' sheet broke, a table a sweep (their scenarios share names)
         changed = [(o, c) for o, c in ensembles[1:] if c]
         if changed:
