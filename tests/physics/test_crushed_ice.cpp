@@ -28,14 +28,6 @@ constexpr double kThickness = 0.033;   // m
 constexpr double kStrength = 145.6e3;  // Pa, the paper's compressive strength
 constexpr double kSpeed = 0.07;        // m/s along the face's normal
 
-double deepest_overlap(btDiscreteDynamicsWorld& world) {
-  double depth = 0;
-  btDispatcher& d = *world.getDispatcher();
-  for (int m = 0; m < d.getNumManifolds(); ++m)
-    depth = std::max(depth, icedem::manifold_overlap(*d.getManifoldByIndexInternal(m)));
-  return depth;
-}
-
 }  // namespace
 
 // A 0.3 m floe's corner driven at 0.07 m/s into a fixed 45-degree face of the structure crushes

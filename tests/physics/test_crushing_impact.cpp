@@ -23,7 +23,6 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "dem/world/contact_solver.hpp"
-#include "dem/world/crushing_contact.hpp"
 #include "dem/world/world.hpp"
 #include "tests/support/box_world.hpp"
 
@@ -99,10 +98,7 @@ Impact impact(double side, double h, double heave_factor, bool crushing, bool ic
     bench.world().stepSimulation(h, 0);
     const btVector3 force = contact_force_on(bench.world(), face) * (kDt / h);  // the helper divides by kDt
     const double normal = -force.dot(n);  // the floe pushes the face along -n
-    double depth = 0;
-    btDispatcher& d = *bench.world().getDispatcher();
-    for (int m = 0; m < d.getNumManifolds(); ++m)
-      depth = std::max(depth, icedem::manifold_overlap(*d.getManifoldByIndexInternal(m)));
+    const double depth = deepest_overlap(bench.world());
     if (first < 0 && normal > 0) first = (step + 1) * h;
     if (normal > out.peak_force) out.peak_force = normal, out.peak_time = (step + 1) * h - first;
     out.peak_penetration = std::max(out.peak_penetration, depth);

@@ -2,12 +2,14 @@
 // a kinematic plate, with Bullet's solver or icedem's (dem/world/contact_solver.hpp).
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
 #include <btBulletDynamicsCommon.h>
 
 #include "dem/contact/solver_settings.hpp"
+#include "dem/world/crushing_contact.hpp"
 #include "dem/input/solver_profile.hpp"
 
 namespace icedem::testing {
@@ -110,6 +112,15 @@ inline btVector3 contact_force_on(btDiscreteDynamicsWorld& world, const btCollis
     }
   }
   return impulse / kDt;
+}
+
+// the deepest overlap of any contact manifold in the world, m (crushing_contact.hpp's manifold_overlap of each)
+inline double deepest_overlap(btDiscreteDynamicsWorld& world) {
+  double depth = 0;
+  btDispatcher& d = *world.getDispatcher();
+  for (int m = 0; m < d.getNumManifolds(); ++m)
+    depth = std::max(depth, manifold_overlap(*d.getManifoldByIndexInternal(m)));
+  return depth;
 }
 
 }  // namespace icedem::testing
