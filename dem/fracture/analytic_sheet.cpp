@@ -64,7 +64,8 @@ AnalyticSheet::AnalyticSheet(const Scene& scene, World& world, const Polygon& ou
       thickness_(scene.ice.thickness),
       friction_(scene.friction.ice_ice),
       next_floe_id_(first_floe_id),
-      sleeping_(scene.activation.sleeping) {
+      sleeping_(scene.activation.sleeping),
+      edge_bound_(sheet_ice(scene)) {
   // the ice around holds the sheet at every edge but the one the structure comes in from (its nearest)
   const Eigen::Vector2d start(scene.structure.start_x, scene.structure.start_z);
   std::size_t way_in = 0;
@@ -83,6 +84,8 @@ AnalyticSheet::AnalyticSheet(const Scene& scene, World& world, const Polygon& ou
                                  {x, std::min(z + kTileSize, b.high.y())}}));
       tile_cell(world, static_cast<int>(cells_.size()) - 1, intersect(outline_, cells_.back()));
     }
+  edge_bound_.set_sheet(outline_, prism_bodies(world));
+  world.contact_solver().set_contact_bound(&edge_bound_);
 }
 
 std::vector<Polygon> AnalyticSheet::prisms() const {
@@ -115,6 +118,8 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> AnalyticSheet::step(const Scene& sce
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero(), angular = Eigen::Vector3d::Zero();
   // the floes' pushes on the sheet over the step just solved
   std::vector<SheetLoadPoint> pushes = floe_loads_on_prisms(*world.dynamics().getDispatcher(), prism_bodies(world), h);
+  // the floes whose push the edge's bound held in the solve: the edge gave way under them (sheet_edge_bound.hpp)
+  const std::vector<int> gave_way = edge_bound_.floes_at_bound();
   // a break changes the outline, and with it the zones and patches: find them again until none breaks (a cut
   // takes the zone it breaks, and a patch that broke is spent, so each pass makes progress); the last pass's
   // zones are those that bear load
@@ -134,7 +139,9 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> AnalyticSheet::step(const Scene& sce
       const bool by_floe = k >= hull_zones;
       const SheetContact& c = by_floe ? floes.patches[k - hull_zones] : zones[k];
       const SheetBreakPlan plan = plan_sheet_break(outline_, c, ice);
-      if (c.bending_force < plan.breaking_load) continue;
+      const bool bounded =
+          by_floe && std::binary_search(gave_way.begin(), gave_way.end(), floes.floes[k - hull_zones]);
+      if (c.bending_force < plan.breaking_load && !bounded) continue;
       SheetBreakRecord r = break_record(c, plan, time, world);
       r.by_floe = by_floe ? 1 : 0;
       if (!by_floe) r.hull_x = hull.axis.x(), r.hull_z = hull.axis.y(), r.hull_radius = hull.larger();
@@ -224,6 +231,7 @@ bool AnalyticSheet::cut(World& world, SheetBreakRecord record) {
   }
   tiles_ = std::move(kept);
   for (std::size_t k = 0; k < changed.size(); ++k) tile_cell(world, changed[k], changed_sheet[k]);
+  edge_bound_.set_sheet(outline_, prism_bodies(world));
 
   // the pieces: under a hull's zone less the crushed ice, all that lies short of the line across the load that
   // touches the hull's larger section (straight, where the hull's circle would leave a concave face of many

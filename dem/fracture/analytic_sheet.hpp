@@ -8,8 +8,10 @@
 //   1. the hull's crushed zones at the sheet's edge and their loads (sheet_contact.hpp); the crushing force
 //      is an impulse on the structure that no Bullet contact carries, added to the load cell;
 //   2. the floes' loads on the sheet's edge over the step, each floe's a patch (sheet_floe_load.hpp): the rubble
-//      the hull pushes against the sheet bends it too;
-//   3. a zone or patch whose load normal to the sheet reaches its breaking load (sheet_breaking.hpp) cuts the sheet:
+//      the hull pushes against the sheet bends it too. Each point of a floe's push was bounded inside the solve by
+//      its patch's breaking load (sheet_edge_bound.hpp), so that a piece cannot lock between the hull and the sheet;
+//   3. a zone or patch whose load normal to the sheet reaches its breaking load (sheet_breaking.hpp), or a floe's
+//      patch one of whose points the bound held, cuts the sheet:
 //      the broken ice, less the crushed ice under a zone (all short of the line across the load that touches the hull's
 //      larger section: the hull's overlap and the slivers beside it), leaves as rigid floes at
 //      rest at the sheet's draft, a non-convex piece as its convex parts (convex_partition.hpp), a piece
@@ -28,6 +30,7 @@
 #include "dem/fracture/sheet_break_record.hpp"
 #include "dem/fracture/sheet_breaking.hpp"
 #include "dem/fracture/sheet_contact.hpp"
+#include "dem/fracture/sheet_edge_bound.hpp"
 #include "dem/fracture/sheet_floe_load.hpp"
 #include "dem/input/scene.hpp"
 #include "dem/layout/polygon.hpp"
@@ -46,8 +49,11 @@ constexpr double kSmallestPiece = 1.0;
 class AnalyticSheet {
  public:
   /// The sheet of `outline` (m, tank frame (x, z)) as fixed prisms in `world`; its pieces' floe ids start at
-  /// `first_floe_id`.
+  /// `first_floe_id`. Bounds the floes' pushes on its edge in `world`'s contact solve (sheet_edge_bound.hpp): the
+  /// world's solver holds this object, which must outlive its steps and not move.
   AnalyticSheet(const Scene& scene, World& world, const Polygon& outline, int first_floe_id);
+  AnalyticSheet(const AnalyticSheet&) = delete;
+  AnalyticSheet& operator=(const AnalyticSheet&) = delete;
 
   /// The Bullet step of `h` that ended at `time` with the structure's reference point at `structure` (its
   /// axis at the waterline): the crushing impulse on the structure (N s) and its moment about `structure`
@@ -107,6 +113,7 @@ class AnalyticSheet {
   double friction_ = 0;   // ice against ice
   int next_floe_id_ = 0;
   bool sleeping_ = false;  // activation.sleeping: the pieces are made awake either way
+  SheetEdgeBound edge_bound_;  // the floes' pushes on the edge, bounded in the solve; installed in the world's solver
 };
 
 /// The hull where the sheet meets it, for the structure's reference point at `structure`.

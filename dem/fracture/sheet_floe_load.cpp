@@ -49,35 +49,42 @@ OnOutline nearest_on_outline(const Polygon& sheet, const Eigen::Vector2d& p) {
 
 }  // namespace
 
-std::vector<SheetLoadPoint> floe_loads_on_prisms(const btDispatcher& dispatcher,
-                                                 const std::vector<const btCollisionObject*>& prisms, double h) {
-  auto& d = const_cast<btDispatcher&>(dispatcher);
+bool at_edge(const Polygon& sheet, const Eigen::Vector2d& at, double thickness) {
+  return nearest_on_outline(sheet, at).distance <= kEdgeReach * thickness;
+}
+
+PrismContact prism_contact(const btPersistentManifold& manifold, const std::vector<const btCollisionObject*>& prisms) {
+  if (manifold.getNumContacts() == 0) return {};
   const auto is_prism = [&](const btCollisionObject* o) {
     return std::binary_search(prisms.begin(), prisms.end(), o);
   };
-  std::vector<const btPersistentManifold*> touching;
+  const bool prism0 = is_prism(manifold.getBody0()), prism1 = is_prism(manifold.getBody1());
+  const btCollisionObject* other = prism0 ? manifold.getBody1() : manifold.getBody0();
+  if (prism0 == prism1 || other->getUserIndex2() < 0) return {};  // two prisms or none, or a prism and a fixed body
+  return PrismContact{other->getUserIndex2(), prism0};
+}
+
+std::vector<SheetLoadPoint> floe_loads_on_prisms(const btDispatcher& dispatcher,
+                                                 const std::vector<const btCollisionObject*>& prisms, double h) {
+  auto& d = const_cast<btDispatcher&>(dispatcher);
+  std::vector<std::pair<const btPersistentManifold*, PrismContact>> touching;
   for (int i = 0; i < d.getNumManifolds(); ++i) {
     const btPersistentManifold* m = d.getManifoldByIndexInternal(i);
-    if (m->getNumContacts() == 0) continue;
-    const bool prism0 = is_prism(m->getBody0()), prism1 = is_prism(m->getBody1());
-    const btCollisionObject* other = prism0 ? m->getBody1() : m->getBody0();
-    if (prism0 == prism1 || other->getUserIndex2() < 0) continue;  // two prisms, or a prism and a fixed body
-    touching.push_back(m);
+    const PrismContact c = prism_contact(*m, prisms);
+    if (c.floe >= 0) touching.emplace_back(m, c);
   }
   // the canonical order, so that the sums do not depend on the order of Bullet's arrays
-  std::sort(touching.begin(), touching.end(), [](const btPersistentManifold* a, const btPersistentManifold* b) {
-    return ContactSolver::canonical(a) < ContactSolver::canonical(b);
+  std::sort(touching.begin(), touching.end(), [](const auto& a, const auto& b) {
+    return ContactSolver::canonical(a.first) < ContactSolver::canonical(b.first);
   });
   std::vector<SheetLoadPoint> out;
-  for (const btPersistentManifold* m : touching) {
-    const bool prism0 = is_prism(m->getBody0());
-    const int floe = (prism0 ? m->getBody1() : m->getBody0())->getUserIndex2();
+  for (const auto& [m, c] : touching) {
     for (int k = 0; k < m->getNumContacts(); ++k) {
       const btManifoldPoint& p = m->getContactPoint(k);
       // the impulse acts on body 0, its opposite on body 1
       const Eigen::Vector3d on0 = to_eigen(contact_impulse(p)) / h;
-      const Eigen::Vector3d at = to_eigen(prism0 ? p.getPositionWorldOnA() : p.getPositionWorldOnB());
-      out.push_back(SheetLoadPoint{Eigen::Vector2d(at.x(), at.z()), prism0 ? on0 : Eigen::Vector3d(-on0), floe});
+      const Eigen::Vector3d at = to_eigen(c.prism_first ? p.getPositionWorldOnA() : p.getPositionWorldOnB());
+      out.push_back(SheetLoadPoint{Eigen::Vector2d(at.x(), at.z()), c.prism_first ? on0 : Eigen::Vector3d(-on0), c.floe});
     }
   }
   return out;
@@ -87,7 +94,7 @@ FloePatches floe_patches(const Polygon& sheet, const std::vector<SheetLoadPoint>
   FloePatches out;
   std::map<int, std::vector<const SheetLoadPoint*>> by_floe;  // ordered by floe: the patches in a fixed order
   for (const SheetLoadPoint& p : points) {
-    if (nearest_on_outline(sheet, p.at).distance <= kEdgeReach * thickness)
+    if (at_edge(sheet, p.at, thickness))
       by_floe[p.floe].push_back(&p);
     else
       out.interior_vertical += std::abs(p.force.y());

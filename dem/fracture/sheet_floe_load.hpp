@@ -31,6 +31,7 @@
 
 class btCollisionObject;
 class btDispatcher;
+class btPersistentManifold;
 
 namespace icedem {
 
@@ -41,12 +42,25 @@ constexpr double kEdgeReach = 1.0;
 /// A floe's load patch on the edge is at least this many ice thicknesses wide (its half-width at least half that).
 constexpr double kLeastPatch = 1.0;
 
+/// Whether a load at `at` (m, (x, z)) is on the edge of the sheet `sheet` (m, ccw) of ice `thickness` (m): within
+/// kEdgeReach thicknesses of its outline.
+bool at_edge(const Polygon& sheet, const Eigen::Vector2d& at, double thickness);
+
 /// One contact point's force on the sheet.
 struct SheetLoadPoint {
   Eigen::Vector2d at = Eigen::Vector2d::Zero();     // m, (x, z) of the point on the sheet
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  // N, on the sheet, over the step
   int floe = -1;                                     // the ice body that pushes (its place in World::floes())
 };
+
+/// A manifold between an ice body and one of the sheet's prisms: the floe (its place in World::floes()) and whether
+/// the prism is the manifold's body 0; floe -1 for any other manifold (two prisms, a prism and another fixed body,
+/// no prism, no points).
+struct PrismContact {
+  int floe = -1;
+  bool prism_first = false;
+};
+PrismContact prism_contact(const btPersistentManifold& manifold, const std::vector<const btCollisionObject*>& prisms);
 
 /// The forces the ice bodies gave the fixed bodies `prisms` (sorted) over the Bullet step of `h` (s) just
 /// solved, in the solver's canonical order of manifolds.

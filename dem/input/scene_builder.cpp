@@ -187,6 +187,13 @@ void check_level_ice(const Scenario& sc, const Scene& s) {
                fmt::format("a sloping hull where the ice meets it with {}and fracture.mode = \"analytic\": its radius "
                            "changes by {:.4f} m across the ice's thickness, a wall that crushes the ice and does not bend it",
                            why, flare));
+    // the floes' pushes on the sheet's edge are bounded by its breaking load inside the solve
+    // (dem/fracture/sheet_edge_bound.hpp), as the crushing law bounds a contact's
+    if (!takes_crushing(s.solver.method))
+      fail_key(sc, blamed(sc, {"solver.method", "fracture.mode"}),
+               "a contact method that takes a bound on a contact's normal force (\"apgd\", \"newton\" or "
+               "\"pgs_cone\") with " + why + "and fracture.mode = \"analytic\": the floes' pushes on the sheet's edge "
+               "are bounded by its breaking load; solver.method = \"" + s.solver.method + "\" does not take it");
     return;  // the rest is the lattice's
   }
   if (s.water.added_mass)

@@ -11,6 +11,7 @@
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
+#include "dem/contact/registry.hpp"
 #include "dem/world/crushing_contact.hpp"
 #include "dem/world/joint_springs.hpp"
 
@@ -79,8 +80,16 @@ btScalar ContactSolver::solveGroup(btCollisionObject** bodies, int numBodies, bt
                                                          numConstraints, info, debug, dispatcher);
 }
 
+void ContactSolver::set_contact_bound(ContactBound* bound) {
+  if (bound && !takes_crushing(settings_.method))
+    throw std::invalid_argument("a bound on contact rows needs a contact method that takes it (solver.method = "
+                                "\"apgd\", \"newton\" or \"pgs_cone\"): the sweeps over Bullet's rows do not");
+  bound_ = bound;
+}
+
 void ContactSolver::prepareSolve(int numBodies, int numManifolds) {
   btSequentialImpulseConstraintSolver::prepareSolve(numBodies, numManifolds);
+  if (bound_) bound_->begin_step();
   std::swap(friction_previous_, friction_current_);
   friction_current_.clear();
   friction_current_.reserve(friction_previous_.size());
@@ -97,6 +106,7 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
   if (settings_.order != SweepOrder::kBullet)
     std::sort(sorted_manifolds_.begin(), sorted_manifolds_.end(),
               [](const btPersistentManifold* a, const btPersistentManifold* b) { return canonical(a) < canonical(b); });
+  if (bound_) bound_->prepare(sorted_manifolds_.data(), static_cast<int>(sorted_manifolds_.size()), info.m_timeStep);
   for (btPersistentManifold* m : sorted_manifolds_) {
     btPersistentManifold& manifold = *m;
     const int first = m_tmpSolverContactConstraintPool.size();
@@ -120,6 +130,14 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
           push_beyond(m_tmpSolverContactConstraintPool[r], crushed, info);
         }
         crushing_manifolds_.push_back({&manifold, first, end});
+      }
+    }
+    // a stage's bound on its rows (contact_bound.hpp): the lower of it and the law's
+    if (bound_ && end > first) {
+      normal_caps_.resize(end, kUnbounded);
+      for (int r = first; r < end; ++r) {
+        const auto* point = static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[r].m_originalContactPoint);
+        normal_caps_[r] = std::min(normal_caps_[r], bound_->cap(*point));
       }
     }
     if (on_structure) {

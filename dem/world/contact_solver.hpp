@@ -27,6 +27,8 @@
 //    most the force its overlap bears (dem/world/crushing_contact.hpp), and the
 //    overlap it reached while crushing, the crushed ice, is not pushed out by the
 //    position pass (only the overlap beyond it is);
+//  - optionally bounds the normal impulses of rows a stage owns (dem/world/contact_bound.hpp: the
+//    analytic level sheet's edge bears at most its breaking load);
 //  - reports per step the sweeps used, the final residual and whether the cap
 //    stopped an island before it converged.
 // With warm_start 0.85 (Bullet's), no friction warm start, Bullet's row order
@@ -69,6 +71,7 @@
 #include "dem/contact/island_solve.hpp"
 #include "dem/contact/problem.hpp"
 #include "dem/contact/solver_settings.hpp"
+#include "dem/world/contact_bound.hpp"
 #include "dem/world/crushing_contact.hpp"
 #include "dem/world/static_friction.hpp"
 
@@ -103,6 +106,8 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
  public:
   /// Impulse below which an impulse counts as zero in the residual, N s.
   static constexpr double kImpulseFloor = 1e-6;
+  /// How close to its cap a row's normal impulse is at its cap (relative): the merit's tolerance.
+  static constexpr double kAtBound = 1e-3;
   /// Largest convergence rate per sweep the residual assumes (contact_solver.cpp).
   static constexpr double kMaxRate = 0.99;
 
@@ -121,6 +126,11 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   /// What decides whether an island is solved again to breaking_merit_tolerance (empty: never;
   /// dem/contact/island_solve.hpp).
   void set_joint_ratio(IslandSolve::JointRatio ratio) { island_.set_joint_ratio(std::move(ratio)); }
+
+  /// Let `bound` (not owned; null: none) bound the normal impulses of the rows it holds. Throws
+  /// std::invalid_argument for a contact method that takes no bound (the registry's takes_crushing: not the sweeps,
+  /// nor the interior-point method).
+  void set_contact_bound(ContactBound* bound);
 
   /// Let `observer` (not owned; null: none) see the problems of the steps it wants.
   void set_observer(ProblemObserver* observer) { observer_ = observer; }
@@ -203,8 +213,6 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
     const btPersistentManifold* manifold;
     int first, end;
   };
-  // how close to its bound a row's impulse is at its bound: the merit's relative tolerance
-  static constexpr double kAtBound = 1e-3;
 
   // per solver body of the group: its mass and radius, and its velocity change so far
   struct BodyScale {
@@ -240,11 +248,12 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   const btCollisionObject* structure_ = nullptr;
   IslandSolve island_;              // solves an island's problem with a method other than the sweeps
   ProblemObserver* observer_ = nullptr;
+  ContactBound* bound_ = nullptr;
   SolverReport report_;
   std::vector<StructureRow> structure_rows_;  // of the current group
   bool two_directions_ = false;               // two friction rows per contact (else one), set per group
   std::vector<int> order_;                    // contact rows of the current group, sweep order
-  std::vector<double> normal_caps_;           // each contact row's largest normal impulse (law_.crushing), N s
+  std::vector<double> normal_caps_;           // each contact row's largest normal impulse (law_.crushing, bound_), N s
   std::vector<CrushingRows> crushing_manifolds_;  // of the current group
   CrushedIce crushed_;
   std::vector<BodyScale> bodies_;             // solver bodies of the current group

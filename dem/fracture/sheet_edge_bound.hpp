@@ -1,0 +1,60 @@
+// The analytic level sheet's edge bears at most its breaking load, inside the contact solve (ice.cover = "level",
+// fracture.mode = "analytic": docs/model/breakage.md, "Level ice cut by closed forms").
+//
+// The floes' pushes on the sheet's edge break it when a floe's patch bears its breaking load (sheet_floe_load.hpp,
+// sheet_breaking.hpp), but that is read after the step: within the step the held sheet is rigid. A piece the structure
+// presses down on the edge is then locked between them and bears whatever the structure's contact can put on it: the
+// crushing tows' largest loads (1.0 to 1.3 kN on the cone at single steps, against a mean of 32 N) were such steps,
+// the piece pushing the edge at 380 to 830 N against a breaking load of 26 to 28 N. Ice does not bear more than it
+// breaks at, so before each island's solve, each floe's points on the edge (within kEdgeReach thicknesses of the
+// outline) make its patch as they will after the step (one patch per floe, its width their spread), the plan gives
+// its breaking load P, and each point's normal impulse is bounded so that its push normal to the sheet is at most
+// P over the step:
+//   r_N |n_y| <= h P,   i.e. cap = h P / |n_y|    (n the contact normal, y up; none where n_y = 0)
+// A point pressing the edge's face sideways (n_y = 0) bends nothing: the held sheet takes an in-plane push rigidly,
+// as before. Each point is bounded alone, not the patch's sum (the solve takes a bound per row, not on a sum of
+// rows): a patch of k points can bear up to k P in the step, where it breaks the sheet after it as before; one point
+// cannot lock a piece. A floe whose point reached its bound breaks the sheet at its patch after the step
+// (floes_at_bound), even where the patch the forces make (its centre their resultant's) plans a higher load than
+// the one the points made before the solve (at a corner, whose opening angle depends on the centre): the edge gave
+// way, so it broke.
+#pragma once
+
+#include <unordered_map>
+#include <vector>
+
+#include "dem/fracture/sheet_breaking.hpp"
+#include "dem/layout/polygon.hpp"
+#include "dem/world/contact_bound.hpp"
+
+class btCollisionObject;
+
+namespace icedem {
+
+class SheetEdgeBound : public ContactBound {
+ public:
+  explicit SheetEdgeBound(const SheetIce& ice) : ice_(ice) {}
+
+  /// The sheet as it stands: its outline (m, ccw) and its prisms' bodies (sorted by address).
+  void set_sheet(const Polygon& outline, std::vector<const btCollisionObject*> prisms);
+
+  void begin_step() override { caps_.clear(); }
+  void prepare(btPersistentManifold* const* manifolds, int count, double h) override;
+  double cap(const btManifoldPoint& point) const override;
+
+  /// The floes (their place in World::floes()) a point of whose push on the edge reached its bound in the step just
+  /// solved, in increasing order. Call before the world changes (a cut removes prisms, and their contact points).
+  std::vector<int> floes_at_bound() const;
+
+ private:
+  struct Bound {
+    double cap = kUnbounded;  // N s
+    int floe = -1;
+  };
+  SheetIce ice_;
+  Polygon outline_;
+  std::vector<const btCollisionObject*> prisms_;
+  std::unordered_map<const btManifoldPoint*, Bound> caps_;  // this step's bounded points
+};
+
+}  // namespace icedem

@@ -1,0 +1,167 @@
+// The analytic level sheet's edge bears at most its breaking load inside the contact solve
+// (dem/fracture/sheet_edge_bound.hpp): a floe pressing down on the edge is held by each of its points on the edge up to
+// the breaking load of its patch, and no further, where the held sheet would otherwise carry whatever it is given;
+// a floe pressing on the edge's face sideways bends nothing and is not bounded.
+//
+// The sheet: a fixed prism of the paper's ice (0.033 m) over x in [0, 1] m, its edge along z at x = 0; the solve the
+// accelerated projected gradient to a merit of 1e-9 (the bound is a projection: a bounded point's impulse is at most
+// its cap to round-off).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "dem/core/errors.hpp"
+#include "dem/fracture/analytic_sheet.hpp"
+#include "dem/fracture/sheet_breaking.hpp"
+#include "dem/fracture/sheet_edge_bound.hpp"
+#include "dem/fracture/sheet_floe_load.hpp"
+#include "dem/world/contact_solver.hpp"
+#include "dem/world/world.hpp"
+#include "tests/support/box_world.hpp"
+#include "tests/support/scenes.hpp"
+
+using namespace icedem;
+using namespace icedem::testing;
+
+namespace {
+
+const SheetIce& paper_ice() {
+  static const SheetIce ice = sheet_ice(scene_from(""));
+  return ice;
+}
+
+const Polygon& sheet_outline() {
+  static const Polygon outline = make_ccw({{0.0, -0.5}, {1.0, -0.5}, {1.0, 0.5}, {0.0, 0.5}});
+  return outline;
+}
+
+// A bench whose solver is icedem's (rigid contacts, the gradient method to 1e-9), the sheet's prism in it, and the
+// edge's bound installed when `bounded`
+struct SheetBench {
+  explicit SheetBench(bool bounded) : bound(paper_ice()) {
+    SolverSettings s = test_solver_settings();
+    s.method = "apgd";
+    s.merit_tolerance = s.joint_merit_tolerance = s.structure_merit_tolerance = 1e-9;
+    s.method_iterations = 20000;
+    auto owned = std::make_unique<ContactSolver>(s);
+    solver = owned.get();
+    bench = std::make_unique<Bench>(std::move(owned));
+    const double h = paper_ice().thickness;
+    prism = bench->box({0.5, h / 2, 0.5}, at(0.5, -h / 2, 0.0), 0.0, 0.5, kBoundary);
+    bound.set_sheet(sheet_outline(), {prism});
+    if (bounded) solver->set_contact_bound(&bound);
+  }
+  // the block's contact points with the prism
+  std::vector<const btManifoldPoint*> points_of(const btRigidBody* block) {
+    std::vector<const btManifoldPoint*> out;
+    btDispatcher& d = *bench->world().getDispatcher();
+    for (int i = 0; i < d.getNumManifolds(); ++i) {
+      const btPersistentManifold* m = d.getManifoldByIndexInternal(i);
+      if ((m->getBody0() == block && m->getBody1() == prism) || (m->getBody1() == block && m->getBody0() == prism))
+        for (int k = 0; k < m->getNumContacts(); ++k) out.push_back(&m->getContactPoint(k));
+    }
+    return out;
+  }
+
+  SheetEdgeBound bound;
+  ContactSolver* solver = nullptr;
+  std::unique_ptr<Bench> bench;
+  const btRigidBody* prism = nullptr;
+};
+
+// a 0.2 m x 0.2 m block of the ice's thickness, `mass` kg, resting with its near side on the edge: its bottom face
+// over x in [-0.05, 0.15] m, in contact with the sheet over [0, 0.15]
+btRigidBody* block_on_edge(SheetBench& b, double mass) {
+  const double h = paper_ice().thickness;
+  btRigidBody* block = b.bench->box({0.1, h / 2, 0.1}, at(0.05, h / 2 - 1e-4, 0.0), mass, 0.5, kIce);
+  block->setUserIndex2(0);  // floe 0
+  return block;
+}
+
+// the breaking load of the block's patch on the edge (its two points there, 0.2 m apart along it), N
+double edge_breaking_load() {
+  SheetContact patch;
+  patch.centre = Eigen::Vector2d(0.0, 0.0);
+  patch.direction = Eigen::Vector2d(1.0, 0.0);
+  patch.half_width = 0.1;
+  return plan_sheet_break(sheet_outline(), patch, paper_ice()).breaking_load;
+}
+
+}  // namespace
+
+// A 100 kg block resting on the edge, its centre of mass 5 cm in: its points on the edge would carry two thirds of its
+// weight (moments about the block's centre: 654 N), some 20 times the edge's breaking load. With the bound each of
+// its points on the edge carries at most the breaking load over the step (to 1e-9 of it: the solve's projection), the
+// step's bound is reached, and the floe is reported as at its bound; without it the edge carries the two thirds (to
+// 1 %: the solve's merit and Bullet's points' spread over its margin), so the bound is what holds it
+TEST(SheetEdgeBound, AFloePressingDownOnTheEdgeIsHeldAtMostAtTheBreakingLoad) {
+  const double mass = 100.0, load = edge_breaking_load();
+  ASSERT_GT(2.0 / 3.0 * mass * kGravity, 10 * load) << "the weight on the edge is well above its breaking load";
+  const double h = paper_ice().thickness;
+  const auto edge_force = [&](bool bounded, std::vector<int>* at_bound) {
+    SheetBench b(bounded);
+    btRigidBody* block = block_on_edge(b, mass);
+    b.bench->world().stepSimulation(kDt, 1, kDt);
+    double on_edge = 0;  // N, the vertical force of the block's points on the edge
+    int edge_points = 0;
+    for (const btManifoldPoint* p : b.points_of(block)) {
+      const btVector3 at = p->getPositionWorldOnA();
+      if (!at_edge(sheet_outline(), Eigen::Vector2d(at.x(), at.z()), h)) continue;
+      ++edge_points;
+      const double vertical = std::abs(p->m_appliedImpulse * p->m_normalWorldOnB.y()) / kDt;
+      on_edge += vertical;
+      if (bounded) {
+        EXPECT_LE(vertical, load * (1 + 1e-9)) << "a point on the edge";
+      }
+    }
+    EXPECT_EQ(edge_points, 2) << "the block's near corners";
+    if (at_bound) *at_bound = b.bound.floes_at_bound();
+    return on_edge;
+  };
+  std::vector<int> at_bound;
+  const double bounded = edge_force(true, &at_bound);
+  EXPECT_NEAR(bounded, 2 * load, 1e-3 * load) << "both points at their bound (the solve's tolerance of a bound)";
+  EXPECT_EQ(at_bound, std::vector<int>{0});
+  EXPECT_NEAR(edge_force(false, nullptr), 2.0 / 3.0 * mass * kGravity, 0.01 * mass * kGravity);
+}
+
+// A block pushed sideways into the edge's face (no gravity, 500 N along +x): its contact's normal is horizontal,
+// it bends nothing, and the face carries the whole push over the step (to 1e-6: the solve's merit), far above the
+// breaking load: the held sheet takes an in-plane push rigidly, bound or not. No floe at its bound
+TEST(SheetEdgeBound, APushOnTheEdgesFaceIsNotBounded) {
+  SheetBench b(true);
+  const double h = paper_ice().thickness;
+  btRigidBody* block = b.bench->box({0.1, h / 2, 0.1}, at(-0.1 + 1e-4, -h / 2, 0.0), 2.0, 0.0, kIce);
+  block->setUserIndex2(0);
+  block->setGravity(btVector3(0, 0, 0));
+  const double push = 500.0;  // N
+  ASSERT_GT(push, 10 * edge_breaking_load());
+  block->applyCentralForce(btVector3(push, 0, 0));
+  b.bench->world().stepSimulation(kDt, 1, kDt);
+  double carried = 0;  // N, along x on the block
+  for (const btManifoldPoint* p : b.points_of(block)) {
+    EXPECT_GE(b.bound.cap(*p), 1e6 * push * kDt) << "a point on the face: unbounded";
+    carried += std::abs(p->m_appliedImpulse * p->m_normalWorldOnB.x()) / kDt;
+  }
+  EXPECT_NEAR(carried, push, 1e-6 * push);
+  EXPECT_TRUE(b.bound.floes_at_bound().empty());
+}
+
+// A contact method that cannot take the bound is refused at the key, naming those that can
+TEST(SheetEdgeBound, AMethodThatCannotBoundTheEdgeIsRefused) {
+  for (const char* method : {"pgs", "ipm"}) {
+    try {
+      scene_from("", {"ice.cover=\"level\"", "fracture.mode=\"analytic\"", "channel.start_x=1.0", "channel.length=3.0",
+                      "channel.width=1.2", "structure.start_x=0.3", std::string("solver.method=\"") + method + "\""});
+      ADD_FAILURE() << method << ": accepted";
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find("solver.method"), std::string::npos) << msg;
+      EXPECT_NE(msg.find("apgd"), std::string::npos) << msg;
+    }
+  }
+}
