@@ -211,12 +211,15 @@ with tempfile.TemporaryDirectory() as tmp:
     rec["fracture_events"] += [{"floe": 3, "touching_structure": 1, "structure_force": 900.0},  # a piece's split
                                {"floe": -1, "touching_structure": 0, "structure_force": 0.0}]  # a floe's patch
     # the start 5.2's largest load 0.08 s after a break that bore past twice its breaking load, 5.201's 0.5 s after
-    late = dict(rec, window=dict(rec["window"], largest_steps=[{"time_s": 50.0}]),
+    # and 5.2's largest step ran to the solve's cap
+    late = dict(rec, window=dict(rec["window"], largest_steps=[{"time_s": 50.0, "capped": 1}]),
                 sheet=dict(rec["sheet"], overload_times_s=[49.92]))
-    early = dict(late, sheet=dict(rec["sheet"], overload_times_s=[49.5]))
+    early = dict(late, window=dict(rec["window"], largest_steps=[{"time_s": 50.0}]),
+                 sheet=dict(rec["sheet"], overload_times_s=[49.5]))
     la.agg.load_record = lambda run, out: late if float(dict(run.grid)[la.START]) == 5.2 else early
     breaking = level_ice_report.sheet_breaking(la.configurations(files["crushing"], tmp), lambda run: (iso[0.2], None))
     check(breaking[0.2][3] == (1, 2), f"1 of 2 starts' largest load within 0.1 s of an overloaded break: {breaking}")
+    check(breaking[0.2][4] == (1, 2), f"1 of 2 starts' largest load at a step capped: {breaking}")
     # 500 breaks over 0.07 m/s x 280 s = 19.6 m; crack 0.3 m over l_c 0.4 m; the median of the cone's zones 50 N
     check(list(breaking) == [0.2] and abs(breaking[0.2][0] - 500 / 19.6) < 1e-9 and abs(breaking[0.2][1] - 0.75)
           < 1e-12 and breaking[0.2][2] == 50.0,
@@ -228,8 +231,14 @@ with tempfile.TemporaryDirectory() as tmp:
           and "broke 26 times a metre of tow, its cracks 0.75 l_c" in text and "median of 50.0 N" in text
           and "0.33 of ISO's breaking term" in text and "is 4.8 times that force" in text
           and "Of its 2 starts, 1 had their largest load within 0.1 s of a break whose zone bore more than 2 times "
-              "its breaking load (a piece's push on the sheet's rigid edge within one step" in text,
+              "its breaking load (a floe's push on the sheet's edge within one step" in text
+          and "1 of the crushing cut sheet's 2 starts had their largest load at a step whose solve ran to its cap" in text,
           f"ISO's terms and the sheet's breaks told from the records: {text}")
+    uncapped = {0.2: breaking[0.2][:4] + ((0, 2),)}
+    quiet = " ".join(level_ice_report.why_below_iso(iso, lattice, [("crushing", {(0.2, "mean"): 0.45,
+                                                                                (0.2, "max"): 1.2})],
+                                                    {"crushing": uncapped}))
+    check("ran to its cap" not in quiet, f"no locked starts, no word of them: {quiet}")
     # mean 0.45 lies in the lattice's 0.40-0.50, max 1.2 above its 0.70-0.90
     check("Of the 2 ratios of the cut sheet's ensembles compared, 1 lie within the range" in text
           and ": crushing mean;" in text, f"the ratios within the lattice's spread counted: {text}")

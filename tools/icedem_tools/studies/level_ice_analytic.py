@@ -50,15 +50,18 @@ def ensemble_step(members):
     return steps.pop() if len(steps) == 1 and None not in steps else None
 
 
-def at_the_cap(records):
-    """"k/n": of the n records that describe their window's largest steps (aggregate.largest_steps), the k whose
-    largest load fell at a step whose solve reached its cap (an island handed over there, or left capped); "n/a"
-    when none describes them."""
+def cap_counts(records):
+    """(k, n): of the n records that describe their window's largest steps (aggregate.largest_steps), the k whose
+    largest load fell at a step whose solve reached its cap (an island handed over there, or left capped)."""
     steps = [rec.get("window", {}).get("largest_steps") for rec in records]
     steps = [s[0] for s in steps if s]
-    if not steps:
-        return "n/a"
-    return f"{sum(bool(s.get('handovers')) or bool(s.get('capped')) for s in steps)}/{len(steps)}"
+    return sum(bool(s.get("handovers")) or bool(s.get("capped")) for s in steps), len(steps)
+
+
+def at_the_cap(records):
+    """cap_counts as "k/n"; "n/a" when no record describes its largest steps."""
+    k, n = cap_counts(records)
+    return f"{k}/{n}" if n else "n/a"
 
 
 # how near an overloaded break (aggregate.sheet_record) a start's largest load must fall to be its: a zone bears its
@@ -172,7 +175,7 @@ def section(sweep, configs, design_loads):
     if not configs:
         return L + ["No finished run yet.", ""]
     L += ["Loads in N, surge, over the analysis window; max 5 Hz: the largest of the load low-passed at 5 Hz (a "
-          "rigid contact's largest loads are single steps of the pieces locked between the cone and the held sheet: "
+          "rigid contact's largest loads can be single steps of a piece locked between the cone and the held sheet: "
           "the step sets them, not the ice). Max at the cap: of the starts whose records describe their largest "
           "steps, those whose largest load fell at a step whose solve reached its iteration cap (handed over there, "
           "or left capped): a piece locked between the moving cone and the held sheet has no rigid answer, and "

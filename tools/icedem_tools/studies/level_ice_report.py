@@ -108,7 +108,7 @@ def closer_to_iso(lattice, sheets):
 
 def sheet_breaking(configs, design):
     """{mu: (breaks a metre of tow, crack distance over l_c, force on the zone that broke in N, (k, n) of
-    level_ice_analytic.at_an_overload)} of the analytic
+    level_ice_analytic.at_an_overload, (k, n) of level_ice_analytic.cap_counts)} of the analytic
     tows of `configs` (as sheet_ratios takes) without leave_behind, each the mean over the starts of the start's
     own: its sheet's breaks over the distance it was towed, its median crack distance, and the median magnitude of
     the cone's force on the zone of the edge whose load broke it (the breaks by the cone, /fracture/events
@@ -131,8 +131,9 @@ def sheet_breaking(configs, design):
             if f:
                 force.append(float(np.median(f)))
         if per and x and force:
+            recs = [rec for _, rec in members.values()]
             found[loads["friction"]] = (float(np.mean(per)), float(np.mean(x)), float(np.mean(force)),
-                                        level_ice_analytic.at_an_overload([rec for _, rec in members.values()]))
+                                        level_ice_analytic.at_an_overload(recs), level_ice_analytic.cap_counts(recs))
     return found
 
 
@@ -154,6 +155,9 @@ def why_below_iso(iso, lattice, sheets, breaking):
 
         def sheet_text(label):
             return ", ".join(f"{n} {r[(mu, label)]:.2f}" for n, r in mine if r.get((mu, label)))
+
+        # the cut sheets whose starts had their largest load at a step the solve ran to its cap on
+        locked = [(name, by_mu[mu][4]) for name, by_mu in breaking.items() if mu in by_mu and by_mu[mu][4][0]]
         text = (f"At mu {mu:g}, ISO's load is {d['total_N']:.1f} N: {d['breaking_N']:.1f} N the breaking term, the "
                 f"sheet in front of the cone failing in bending at once along one circumferential crack w = D + "
                 f"pi^2 l_c / 4 = {d['crack_width_m']:.2f} m wide, and {d['total_N'] - d['breaking_N']:.1f} N pushing "
@@ -161,12 +165,13 @@ def why_below_iso(iso, lattice, sheets, breaking):
                 "the cycles, the load falling back after each break, so the means lie far below it in both models "
                 f"(over ISO: the lattice's runs {span('mean')}, the cut sheet's {sheet_text('mean')}) and the maxima "
                 f"are what compare with it (the lattice's {span('max')}, the cut sheet's {sheet_text('max')}; "
-                f"low-passed at 5 Hz {span('max 5 Hz')} and {sheet_text('max 5 Hz')}; the rigid cut sheet's are the "
-                "steps of "
-                "pieces locked between the cone and the held sheet, above).")
+                f"low-passed at 5 Hz {span('max 5 Hz')} and {sheet_text('max 5 Hz')}"
+                + "".join(f"; {k} of the {name} cut sheet's {n} starts had their largest load at a step whose solve "
+                          "ran to its cap (a piece locked between the cone and the held sheet, above)"
+                          for name, (k, n) in locked) + ").")
         for name, by_mu in breaking.items():
             if mu in by_mu:
-                per, x, force, (k, n) = by_mu[mu]
+                per, x, force, (k, n), _ = by_mu[mu]
                 largest = dict(mine).get(name, {}).get((mu, "max"))
                 text += (f" Neither model fails the front in one crack: the cut sheet ({name}) broke {per:.0f} times "
                          f"a metre of tow, its cracks {x:.2f} l_c from the edge, each break a zone of the front; the "
@@ -177,9 +182,10 @@ def why_below_iso(iso, lattice, sheets, breaking):
                          + (f" Of its {n} starts, {k} had their largest load within "
                             f"{level_ice_analytic.OVERLOAD_WITHIN_S:g} s of a break whose zone bore more than "
                             f"{agg.OVERLOAD:g} times its breaking load"
-                            + (" (a piece's push on the sheet's rigid edge within one step, checked against the "
-                               "edge's breaking load only after it: docs/model/breakage.md, \"A piece's corner on the "
-                               "edge\"): those maxima are the model's, not the ice's." if k else ".") if n else ""))
+                            + (" (a floe's push on the sheet's edge within one step; what a build bounds of it: "
+                               "docs/model/breakage.md, \"A piece's corner on the edge\" and \"The edge's bound in "
+                               "the solve\"): those maxima are the model's, not the ice's." if k else ".")
+                            if n else ""))
                 break
         inside = [(label, n) for n, r in mine for label in level_ice_analytic.CRITERIA
                   if r.get((mu, label)) and any(x.get(label) for x in runs)
