@@ -88,7 +88,8 @@ std::vector<KeySpec> make_keys() {
                      "\"newton\", the primal Newton method on the island's whole problem, joints included; "
                      "\"apgd\", accelerated projected gradient on the same problem; \"ipm\", the primal-dual "
                      "interior-point method on it; these four to solver.merit_tolerance (docs/model/"
-                     "contact_problems.md)"));
+                     "contact_problems.md). A bounded normal force (contact.model = \"crushing\"; the edge of "
+                     "level ice with fracture.mode = \"analytic\") needs \"apgd\", \"newton\" or \"pgs_cone\""));
   k.push_back(real("solver.merit_tolerance", "-", 1e-3, 1e-14, 1.0,
                    "solver.method other than \"pgs\": an island is solved when its natural-map residual, the "
                    "merit every contact method is judged by (docs/model/contact_problems.md), is below this"));
