@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 
 #include <btBulletDynamicsCommon.h>
@@ -43,8 +44,28 @@ void SheetEdgeBound::prepare(btPersistentManifold* const* manifolds, int count, 
     const auto it = load.find(points[i].floe);
     // a floe's points farther in than the edge are not in its patch: an interior load, left out as after the step
     if (it == load.end() || vertical <= 0 || !at_edge(outline_, points[i].at, ice_.thickness)) continue;
-    caps_[point] = Bound{h * it->second / vertical, points[i].floe};
+    caps_[point] = Bound{h * it->second / vertical, points[i].floe, vertical, h * it->second};
   }
+}
+
+bool SheetEdgeBound::tighten(const std::vector<std::pair<const btManifoldPoint*, double>>& impulses) {
+  std::map<int, double> sum;  // N s, each floe's sum of r_N |n_y| over its bounded points
+  for (const auto& [point, impulse] : impulses) {
+    const auto it = caps_.find(point);
+    if (it != caps_.end()) sum[it->second.floe] += impulse * it->second.vertical;
+  }
+  bool lowered = false;
+  for (const auto& [point, impulse] : impulses) {
+    const auto it = caps_.find(point);
+    if (it == caps_.end()) continue;
+    Bound& b = it->second;
+    const double total = sum[b.floe];
+    if (total <= (1.0 + ContactSolver::kAtBound) * b.patch_bound) continue;
+    // its share of the patch's bound: the sum of the shares is the bound
+    b.cap = std::min(b.cap, impulse * b.patch_bound / total);
+    lowered = true;
+  }
+  return lowered;
 }
 
 double SheetEdgeBound::cap(const btManifoldPoint& point) const {

@@ -460,9 +460,30 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
 void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   ContactProblem problem = capture_problem(info);
   problem.island = report_.islands;
-  const SolverAnswer answer = island_.solve(problem, report_);
+  SolverAnswer answer = island_.solve(problem, report_);
   apply_impulses(answer);
+  // a stage's bound on sums of rows (contact_bound.hpp): their caps lowered to the rows' shares, the island solved
+  // again from the answer (each pass holds the sums it lowered, so a few passes end it; kBoundPasses in all)
+  for (int pass = 1; bound_ && pass < kBoundPasses && bound_->tighten(bounded_impulses()); ++pass) {
+    for (int r = 0; r < m_tmpSolverContactConstraintPool.size() && r < static_cast<int>(normal_caps_.size()); ++r)
+      normal_caps_[r] = std::min(normal_caps_[r], bound_->cap(*static_cast<const btManifoldPoint*>(
+                                                      m_tmpSolverContactConstraintPool[r].m_originalContactPoint)));
+    problem = capture_problem(info);
+    problem.island = report_.islands;
+    answer = island_.solve(problem, report_);
+    apply_impulses(answer);
+  }
   if (observer_ && observer_->wants_problems()) observer_->solved(problem, answer);
+}
+
+std::vector<std::pair<const btManifoldPoint*, double>> ContactSolver::bounded_impulses() const {
+  std::vector<std::pair<const btManifoldPoint*, double>> out;
+  for (int r = 0; r < m_tmpSolverContactConstraintPool.size(); ++r) {
+    const btSolverConstraint& row = m_tmpSolverContactConstraintPool[r];
+    const auto* point = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
+    if (bound_->cap(*point) < kUnbounded) out.emplace_back(point, row.m_appliedImpulse);
+  }
+  return out;
 }
 
 void ContactSolver::apply_impulses(const SolverAnswer& answer) {

@@ -239,6 +239,10 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   // the island solved by the island solve (settings_.method) instead of the sweeps; its
   // impulses written to the rows
   void solve_with_method(const btContactSolverInfo& info);
+  // the rows a ContactBound holds: each one's point and its normal impulse now
+  std::vector<std::pair<const btManifoldPoint*, double>> bounded_impulses() const;
+  // most solves of an island under a ContactBound's sums (contact_bound.hpp)
+  static constexpr int kBoundPasses = 4;
   // set the rows' impulses to `answer`'s (rows in capture_problem's order), the bodies'
   // velocity changes with them
   void apply_impulses(const SolverAnswer& answer);

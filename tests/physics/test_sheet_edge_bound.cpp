@@ -93,11 +93,12 @@ double edge_breaking_load() {
 
 }  // namespace
 
-// A 100 kg block resting on the edge, its centre of mass 5 cm in: its points on the edge would carry two thirds of its
-// weight (moments about the block's centre: 654 N), some 20 times the edge's breaking load. With the bound each of
-// its points on the edge carries at most the breaking load over the step (to 1e-9 of it: the solve's projection), the
-// step's bound is reached, and the floe is reported as at its bound; without it the edge carries the two thirds (to
-// 1 %: the solve's merit and Bullet's points' spread over its margin), so the bound is what holds it
+// A 100 kg block resting on the edge, its centre of mass 5 cm in: its two points on the edge would carry two thirds of
+// its weight (moments about the block's centre: 654 N), some 20 times the edge's breaking load. With the bound the
+// two points together carry the breaking load over the step, no more (to 1e-3 of it: a bound counts as reached within
+// the merit's relative tolerance; each bounded alone by the whole would let them carry twice it), and the floe is
+// reported as at its bound; without it the edge carries the two thirds (to 1 %: the solve's merit and Bullet's
+// points' spread over its margin), so the bound is what holds it
 TEST(SheetEdgeBound, AFloePressingDownOnTheEdgeIsHeldAtMostAtTheBreakingLoad) {
   const double mass = 100.0, load = edge_breaking_load();
   ASSERT_GT(2.0 / 3.0 * mass * kGravity, 10 * load) << "the weight on the edge is well above its breaking load";
@@ -124,7 +125,7 @@ TEST(SheetEdgeBound, AFloePressingDownOnTheEdgeIsHeldAtMostAtTheBreakingLoad) {
   };
   std::vector<int> at_bound;
   const double bounded = edge_force(true, &at_bound);
-  EXPECT_NEAR(bounded, 2 * load, 1e-3 * load) << "both points at their bound (the solve's tolerance of a bound)";
+  EXPECT_NEAR(bounded, load, 1e-3 * load) << "the patch at its breaking load, shared by its points";
   EXPECT_EQ(at_bound, std::vector<int>{0});
   EXPECT_NEAR(edge_force(false, nullptr), 2.0 / 3.0 * mass * kGravity, 0.01 * mass * kGravity);
 }
