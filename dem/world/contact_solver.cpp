@@ -34,7 +34,8 @@ ContactSolver::ContactSolver(const SolverSettings& settings, const ContactLaw& l
     : settings_(settings), law_(law), island_(settings) {
   if (law_.crushing && !island_.solves())
     throw std::invalid_argument("the crushing contact law needs a contact method that takes it (solver.method = "
-                                "\"apgd\", \"newton\" or \"pgs_cone\"): the sweeps over Bullet's rows do not");
+                                "\"apgd\", \"newton\" or \"pgs_cone\"): neither the sweeps over Bullet's rows nor the "
+                                "interior-point method takes it");
 }
 
 // A manifold's place in the canonical order: the pair of bodies it joins (their user index 2:
@@ -83,7 +84,8 @@ btScalar ContactSolver::solveGroup(btCollisionObject** bodies, int numBodies, bt
 void ContactSolver::set_contact_bound(ContactBound* bound) {
   if (bound && !takes_crushing(settings_.method))
     throw std::invalid_argument("a bound on contact rows needs a contact method that takes it (solver.method = "
-                                "\"apgd\", \"newton\" or \"pgs_cone\"): the sweeps over Bullet's rows do not");
+                                "\"apgd\", \"newton\" or \"pgs_cone\"): neither the sweeps over Bullet's rows nor the "
+                                "interior-point method takes it");
   bound_ = bound;
 }
 
