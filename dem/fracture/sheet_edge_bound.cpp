@@ -19,8 +19,9 @@ void SheetEdgeBound::set_sheet(const Polygon& outline, std::vector<const btColli
 }
 
 void SheetEdgeBound::prepare(btPersistentManifold* const* manifolds, int count, double h) {
-  // the island's points on the sheet, each of unit weight: floe_patches then makes each floe's patch from where its
-  // points are (their mean, their spread), as it will from where the forces act after the step
+  // the island's points on the sheet's edge, each of unit weight: floe_patches then makes each floe's patch from where
+  // its points are (their mean, their spread), as it will from where the forces act after the step. A floe's points
+  // farther in are an interior load, in no patch after the step: left out here, and not bounded
   std::vector<SheetLoadPoint> points;
   std::vector<std::pair<const btManifoldPoint*, double>> normals;  // each point's |n_y|, in the order of points
   for (int i = 0; i < count; ++i) {
@@ -30,7 +31,9 @@ void SheetEdgeBound::prepare(btPersistentManifold* const* manifolds, int count, 
     for (int k = 0; k < m.getNumContacts(); ++k) {
       const btManifoldPoint& p = m.getContactPoint(k);
       const btVector3 at = c.prism_first ? p.getPositionWorldOnA() : p.getPositionWorldOnB();
-      points.push_back(SheetLoadPoint{Eigen::Vector2d(at.x(), at.z()), Eigen::Vector3d::UnitY(), c.floe});
+      const Eigen::Vector2d plan(at.x(), at.z());
+      if (!at_edge(outline_, plan, ice_.thickness)) continue;
+      points.push_back(SheetLoadPoint{plan, Eigen::Vector3d::UnitY(), c.floe});
       normals.emplace_back(&p, std::abs(double(p.m_normalWorldOnB.y())));
     }
   }
@@ -41,10 +44,9 @@ void SheetEdgeBound::prepare(btPersistentManifold* const* manifolds, int count, 
     load[patches.floes[k]] = plan_sheet_break(outline_, patches.patches[k], ice_).breaking_load;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& [point, vertical] = normals[i];
-    const auto it = load.find(points[i].floe);
-    // a floe's points farther in than the edge are not in its patch: an interior load, left out as after the step
-    if (it == load.end() || vertical <= 0 || !at_edge(outline_, points[i].at, ice_.thickness)) continue;
-    caps_[point] = Bound{h * it->second / vertical, points[i].floe, vertical, h * it->second};
+    if (vertical <= 0) continue;  // a push on the edge's face bends nothing
+    const double p = load.at(points[i].floe);
+    caps_[point] = Bound{h * p / vertical, points[i].floe, vertical, h * p};
   }
 }
 

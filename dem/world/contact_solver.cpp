@@ -34,8 +34,7 @@ ContactSolver::ContactSolver(const SolverSettings& settings, const ContactLaw& l
     : settings_(settings), law_(law), island_(settings) {
   if (law_.crushing && !island_.solves())
     throw std::invalid_argument("the crushing contact law needs a contact method that takes it (solver.method = "
-                                "\"apgd\", \"newton\" or \"pgs_cone\"): neither the sweeps over Bullet's rows nor the "
-                                "interior-point method takes it");
+                                "\"apgd\", \"newton\" or \"pgs_cone\"): the sweeps over Bullet's rows do not");
 }
 
 // A manifold's place in the canonical order: the pair of bodies it joins (their user index 2:
@@ -102,6 +101,7 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
                                     const btContactSolverInfo& info) {
   structure_rows_.clear();
   normal_caps_.clear();
+  bound_rows_.clear();
   crushing_manifolds_.clear();
   two_directions_ = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
   sorted_manifolds_.assign(manifolds, manifolds + numManifolds);
@@ -138,8 +138,10 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
     if (bound_ && end > first) {
       normal_caps_.resize(end, kUnbounded);
       for (int r = first; r < end; ++r) {
-        const auto* point = static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[r].m_originalContactPoint);
-        normal_caps_[r] = std::min(normal_caps_[r], bound_->cap(*point));
+        const double cap = bound_->cap(*bound_point(r));
+        if (cap == kUnbounded) continue;
+        normal_caps_[r] = std::min(normal_caps_[r], cap);
+        bound_rows_.push_back(r);
       }
     }
     if (on_structure) {
@@ -466,10 +468,8 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   apply_impulses(answer);
   // a stage's bound on sums of rows (contact_bound.hpp): their caps lowered to the rows' shares, the island solved
   // again from the answer (each pass holds the sums it lowered, so a few passes end it; kBoundPasses in all)
-  for (int pass = 1; bound_ && pass < kBoundPasses && bound_->tighten(bounded_impulses()); ++pass) {
-    for (int r = 0; r < m_tmpSolverContactConstraintPool.size() && r < static_cast<int>(normal_caps_.size()); ++r)
-      normal_caps_[r] = std::min(normal_caps_[r], bound_->cap(*static_cast<const btManifoldPoint*>(
-                                                      m_tmpSolverContactConstraintPool[r].m_originalContactPoint)));
+  for (int pass = 1; !bound_rows_.empty() && pass < kBoundPasses && bound_->tighten(bounded_impulses()); ++pass) {
+    for (int r : bound_rows_) normal_caps_[r] = std::min(normal_caps_[r], bound_->cap(*bound_point(r)));
     problem = capture_problem(info);
     problem.island = report_.islands;
     answer = island_.solve(problem, report_);
@@ -478,13 +478,13 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   if (observer_ && observer_->wants_problems()) observer_->solved(problem, answer);
 }
 
+const btManifoldPoint* ContactSolver::bound_point(int row) const {
+  return static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[row].m_originalContactPoint);
+}
+
 std::vector<std::pair<const btManifoldPoint*, double>> ContactSolver::bounded_impulses() const {
   std::vector<std::pair<const btManifoldPoint*, double>> out;
-  for (int r = 0; r < m_tmpSolverContactConstraintPool.size(); ++r) {
-    const btSolverConstraint& row = m_tmpSolverContactConstraintPool[r];
-    const auto* point = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
-    if (bound_->cap(*point) < kUnbounded) out.emplace_back(point, row.m_appliedImpulse);
-  }
+  for (int r : bound_rows_) out.emplace_back(bound_point(r), m_tmpSolverContactConstraintPool[r].m_appliedImpulse);
   return out;
 }
 

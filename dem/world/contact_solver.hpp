@@ -239,6 +239,8 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   // the island solved by the island solve (settings_.method) instead of the sweeps; its
   // impulses written to the rows
   void solve_with_method(const btContactSolverInfo& info);
+  // the manifold point of a contact row of the group
+  const btManifoldPoint* bound_point(int row) const;
   // the rows a ContactBound holds: each one's point and its normal impulse now
   std::vector<std::pair<const btManifoldPoint*, double>> bounded_impulses() const;
   // most solves of an island under a ContactBound's sums (contact_bound.hpp)
@@ -258,6 +260,7 @@ class ContactSolver : public btSequentialImpulseConstraintSolver {
   bool two_directions_ = false;               // two friction rows per contact (else one), set per group
   std::vector<int> order_;                    // contact rows of the current group, sweep order
   std::vector<double> normal_caps_;           // each contact row's largest normal impulse (law_.crushing, bound_), N s
+  std::vector<int> bound_rows_;               // of the current group, the contact rows bound_ holds
   std::vector<CrushingRows> crushing_manifolds_;  // of the current group
   CrushedIce crushed_;
   std::vector<BodyScale> bodies_;             // solver bodies of the current group
