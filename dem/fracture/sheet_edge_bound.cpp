@@ -23,7 +23,12 @@ void SheetEdgeBound::prepare(btPersistentManifold* const* manifolds, int count, 
   // its points are (their mean, their spread), as it will from where the forces act after the step. A floe's points
   // farther in are an interior load, in no patch after the step: left out here, and not bounded
   std::vector<SheetLoadPoint> points;
-  std::vector<std::pair<const btManifoldPoint*, double>> normals;  // each point's |n_y|, in the order of points
+  // each point's |n_y| and the sign that makes its impulse on body 0 the sheet's, in the order of points
+  struct Normal {
+    const btManifoldPoint* point;
+    double vertical, sign;
+  };
+  std::vector<Normal> normals;
   for (int i = 0; i < count; ++i) {
     const btPersistentManifold& m = *manifolds[i];
     const PrismContact c = prism_contact(m, prisms_);
@@ -34,7 +39,7 @@ void SheetEdgeBound::prepare(btPersistentManifold* const* manifolds, int count, 
       const Eigen::Vector2d plan(at.x(), at.z());
       if (!at_edge(outline_, plan, ice_.thickness)) continue;
       points.push_back(SheetLoadPoint{plan, Eigen::Vector3d::UnitY(), c.floe});
-      normals.emplace_back(&p, std::abs(double(p.m_normalWorldOnB.y())));
+      normals.push_back({&p, std::abs(double(p.m_normalWorldOnB.y())), c.prism_first ? 1.0 : -1.0});
     }
   }
   if (points.empty()) return;
@@ -43,36 +48,43 @@ void SheetEdgeBound::prepare(btPersistentManifold* const* manifolds, int count, 
   for (std::size_t k = 0; k < patches.patches.size(); ++k)
     load[patches.floes[k]] = plan_sheet_break(outline_, patches.patches[k], ice_).breaking_load;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto& [point, vertical] = normals[i];
-    if (vertical <= 0) continue;  // a push on the edge's face bends nothing
+    const Normal& n = normals[i];
     const double p = load.at(points[i].floe);
-    caps_[point] = Bound{h * p / vertical, points[i].floe, vertical, h * p};
+    // a point pushing on the edge's face (n_y = 0) has no cap of its own: only its friction bends the edge, and the
+    // patch's sum (tighten) holds that
+    caps_[n.point] = Bound{n.vertical > 0 ? h * p / n.vertical : kUnbounded, points[i].floe, h * p, n.sign};
   }
 }
 
-bool SheetEdgeBound::tighten(const std::vector<std::pair<const btManifoldPoint*, double>>& impulses) {
-  std::map<int, double> sum;  // N s, each floe's sum of r_N |n_y| over its bounded points
-  for (const auto& [point, impulse] : impulses) {
-    const auto it = caps_.find(point);
-    if (it != caps_.end()) sum[it->second.floe] += impulse * it->second.vertical;
+bool SheetEdgeBound::tighten(const std::vector<BoundedImpulse>& impulses) {
+  // N s, each floe's push normal to the sheet over its held points: the vertical part of their impulses on the sheet,
+  // the normals' and the friction's, summed with their signs, as the sheet's load read after the step sums them
+  // (floe_patches): friction lifting a piece at one point and its normal pressing it down at another bend the edge
+  // by what is left
+  std::map<int, double> sum;
+  for (const BoundedImpulse& i : impulses) {
+    const auto it = caps_.find(i.point);
+    if (it != caps_.end()) sum[it->second.floe] += it->second.sign * double(i.impulse.y());
   }
   bool lowered = false;
-  for (const auto& [point, impulse] : impulses) {
-    const auto it = caps_.find(point);
+  for (const BoundedImpulse& i : impulses) {
+    const auto it = caps_.find(i.point);
     if (it == caps_.end()) continue;
     Bound& b = it->second;
-    const double total = sum[b.floe];
+    const double total = std::abs(sum[b.floe]);
     if (total <= (1.0 + ContactSolver::kAtBound) * b.patch_bound) continue;
-    // its share of the patch's bound: the sum of the shares is the bound
-    b.cap = std::min(b.cap, impulse * b.patch_bound / total);
+    // its share of the patch's bound, on its normal impulse, which also bounds its friction: the shares sum to the
+    // bound where the push is all normal; friction above its share lowers it again at the next pass
+    b.cap = std::min(b.cap, i.normal * b.patch_bound / total);
     lowered = true;
   }
   return lowered;
 }
 
-double SheetEdgeBound::cap(const btManifoldPoint& point) const {
+std::optional<double> SheetEdgeBound::cap(const btManifoldPoint& point) const {
   const auto it = caps_.find(&point);
-  return it == caps_.end() ? kUnbounded : it->second.cap;
+  if (it == caps_.end()) return std::nullopt;
+  return it->second.cap;
 }
 
 std::vector<int> SheetEdgeBound::floes_at_bound() const {

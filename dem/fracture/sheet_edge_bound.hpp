@@ -8,18 +8,20 @@
 // the piece pushing the edge at 380 to 830 N against a breaking load of 26 to 28 N. Ice does not bear more than it
 // breaks at, so before each island's solve, each floe's points on the edge (within kEdgeReach thicknesses of the
 // outline) make its patch as they will after the step (one patch per floe, its width their spread), the plan gives
-// its breaking load P, and each point's normal impulse is bounded so that its push normal to the sheet is at most
-// P over the step:
-//   sum over the floe's points of r_N |n_y| <= h P    (n the contact normal, y up)
-// The solve takes a bound per row, not on a sum of rows, so each point is first bounded by the whole,
-// r_N |n_y| <= h P (none where n_y = 0: a point pressing the edge's face sideways bends nothing, and the held sheet
-// takes an in-plane push rigidly); where the solve's answer puts more than h P on a floe's patch (a floe pressing
-// along the edge at many points: a single step of 414 N on the cone, a patch at 5.7 times its breaking load, before
-// this was done), each of its points is bounded by its share of h P (its impulse times h P over the sum, tighten)
-// and the island is solved again from that answer (dem/world/contact_bound.hpp). A floe whose point reached its
-// bound breaks the sheet at its patch after the step (floes_at_bound), even where the patch the forces make (its
-// centre their resultant's) plans a higher load than the one the points made before the solve (at a corner, whose
-// opening angle depends on the centre): the edge gave way, so it broke.
+// its breaking load P, and each point's normal impulse is bounded so that the patch's push normal to the sheet is at
+// most P over the step:
+//   |sum over the floe's points of J_y| <= h P    (J a point's impulse on the sheet, normal and friction; y up)
+// The solve takes a bound per row, not on a sum of rows, so each point is first bounded by the whole on its normal's
+// part, r_N |n_y| <= h P (none where n_y = 0: a point pressing the edge's face sideways bends nothing by its normal,
+// and the held sheet takes an in-plane push rigidly); where the solve's answer puts more than h P on a floe's patch
+// (a floe pressing along the edge at many points: a single step of 414 N on the cone, a patch at 5.7 times its
+// breaking load; with the normals alone bounded, a step of 501 N on the cone at a patch 2.9 times its breaking load,
+// the friction's part of its push not held), each of its points' normal impulses is bounded by its share of h P (its
+// impulse times h P over the sum, tighten), which bounds its friction too, and the island is solved again from that
+// answer (dem/world/contact_bound.hpp). A floe whose point reached its bound breaks the sheet at its patch after the step
+// (floes_at_bound), even where the patch the forces make (its centre their resultant's) plans a higher load than the
+// one the points made before the solve (at a corner, whose opening angle depends on the centre): the edge gave way,
+// so it broke.
 #pragma once
 
 #include <unordered_map>
@@ -42,8 +44,8 @@ class SheetEdgeBound : public ContactBound {
 
   void begin_step() override { caps_.clear(); }
   void prepare(btPersistentManifold* const* manifolds, int count, double h) override;
-  double cap(const btManifoldPoint& point) const override;
-  bool tighten(const std::vector<std::pair<const btManifoldPoint*, double>>& impulses) override;
+  std::optional<double> cap(const btManifoldPoint& point) const override;
+  bool tighten(const std::vector<BoundedImpulse>& impulses) override;
 
   /// The floes (their place in World::floes()) a point of whose push on the edge reached its bound in the step just
   /// solved, in increasing order. Call before the world changes (a cut removes prisms, and their contact points).
@@ -53,8 +55,8 @@ class SheetEdgeBound : public ContactBound {
   struct Bound {
     double cap = kUnbounded;  // N s, on the point's normal impulse
     int floe = -1;
-    double vertical = 0;      // |n_y| of its normal
-    double patch_bound = 0;   // N s, h P of its floe's patch: on the sum over the patch of r_N |n_y|
+    double patch_bound = 0;   // N s, h P of its floe's patch: on |the sum over the patch of J_y|
+    double sign = 1;          // +1 where the sheet's prism is body 0 of the point's manifold, -1 where body 1
   };
   SheetIce ice_;
   Polygon outline_;

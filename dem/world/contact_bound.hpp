@@ -9,17 +9,28 @@
 // its cap gives way), and reads after the step which rows reached their bound. A bound on a sum of rows (a patch's
 // load, shared by its points) is not a row's: the stage bounds each row by the whole, and after the solve lowers
 // the caps of a sum found over its bound to the rows' shares of it (tighten), and the island is solved again from
-// that answer, until no sum is over.
+// that answer, until no sum is over. The sum may hold what a cap cannot: the friction a point's normal impulse
+// allows (a push on the sheet's face holding a piece up by friction bends the edge), so tighten is given each held
+// point's whole impulse, and a point may be held by the sum alone, with no cap of its own until one is over.
 #pragma once
 
 #include <limits>
-#include <utility>
+#include <optional>
 #include <vector>
+
+#include <LinearMath/btVector3.h>
 
 class btManifoldPoint;
 class btPersistentManifold;
 
 namespace icedem {
+
+/// A point a ContactBound holds and what the island's last solve gave it.
+struct BoundedImpulse {
+  const btManifoldPoint* point = nullptr;
+  double normal = 0;                  // N s, its normal impulse
+  btVector3 impulse{0, 0, 0};         // N s, on body 0 of its manifold: the normal's and the friction's together
+};
 
 class ContactBound {
  public:
@@ -28,14 +39,15 @@ class ContactBound {
   virtual void begin_step() = 0;
   /// The manifolds of one island, about to be made rows for the step of `h` (s).
   virtual void prepare(btPersistentManifold* const* manifolds, int count, double h) = 0;
-  /// The largest normal impulse (N s) `point` may carry this step, infinity where this bound does not hold it.
-  virtual double cap(const btManifoldPoint& point) const = 0;
-  /// The island's bounded points and the normal impulses (N s) its solve gave them: lower caps where a sum of them is
-  /// over its bound; whether any cap changed (the island is then solved again).
-  virtual bool tighten(const std::vector<std::pair<const btManifoldPoint*, double>>& impulses) = 0;
+  /// Whether this bound holds `point` this step (none: not), and the largest normal impulse (N s) it may carry:
+  /// kUnbounded where only a sum holds it.
+  virtual std::optional<double> cap(const btManifoldPoint& point) const = 0;
+  /// The island's held points and what its solve gave them: lower caps where a sum of them is over its bound; whether
+  /// any cap changed (the island is then solved again).
+  virtual bool tighten(const std::vector<BoundedImpulse>& impulses) = 0;
 };
 
-/// No bound: a row's cap where a ContactBound does not hold it.
+/// No cap: a row's where neither the contact law nor a ContactBound caps it.
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 }  // namespace icedem

@@ -138,9 +138,9 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
     if (bound_ && end > first) {
       normal_caps_.resize(end, kUnbounded);
       for (int r = first; r < end; ++r) {
-        const double cap = bound_->cap(*bound_point(r));
-        if (cap == kUnbounded) continue;
-        normal_caps_[r] = std::min(normal_caps_[r], cap);
+        const std::optional<double> cap = bound_->cap(*bound_point(r));
+        if (!cap) continue;
+        normal_caps_[r] = std::min(normal_caps_[r], *cap);
         bound_rows_.push_back(r);
       }
     }
@@ -276,15 +276,7 @@ void ContactSolver::build_order(bool from_structure) {
 
 btVector3 ContactSolver::structure_impulse() const {
   btVector3 p(0, 0, 0);
-  for (const StructureRow& s : structure_rows_) {
-    const btSolverConstraint& c = m_tmpSolverContactConstraintPool[s.row];
-    const auto* point = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
-    btVector3 row = point->m_normalWorldOnB * c.m_appliedImpulse;
-    row += point->m_lateralFrictionDir1 * m_tmpSolverContactFrictionConstraintPool[c.m_frictionIndex].m_appliedImpulse;
-    if (two_directions_)
-      row += point->m_lateralFrictionDir2 * m_tmpSolverContactFrictionConstraintPool[c.m_frictionIndex + 1].m_appliedImpulse;
-    p += row * s.sign;
-  }
+  for (const StructureRow& s : structure_rows_) p += row_impulse(s.row) * s.sign;
   return p;
 }
 
@@ -467,9 +459,9 @@ void ContactSolver::solve_with_method(const btContactSolverInfo& info) {
   SolverAnswer answer = island_.solve(problem, report_);
   apply_impulses(answer);
   // a stage's bound on sums of rows (contact_bound.hpp): their caps lowered to the rows' shares, the island solved
-  // again from the answer (each pass holds the sums it lowered, so a few passes end it; kBoundPasses in all)
+  // again from the answer (each pass holds the sums it lowered; kBoundPasses solves in all)
   for (int pass = 1; !bound_rows_.empty() && pass < kBoundPasses && bound_->tighten(bounded_impulses()); ++pass) {
-    for (int r : bound_rows_) normal_caps_[r] = std::min(normal_caps_[r], bound_->cap(*bound_point(r)));
+    for (int r : bound_rows_) normal_caps_[r] = std::min(normal_caps_[r], *bound_->cap(*bound_point(r)));
     problem = capture_problem(info);
     problem.island = report_.islands;
     answer = island_.solve(problem, report_);
@@ -482,10 +474,33 @@ const btManifoldPoint* ContactSolver::bound_point(int row) const {
   return static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[row].m_originalContactPoint);
 }
 
-std::vector<std::pair<const btManifoldPoint*, double>> ContactSolver::bounded_impulses() const {
-  std::vector<std::pair<const btManifoldPoint*, double>> out;
-  for (int r : bound_rows_) out.emplace_back(bound_point(r), m_tmpSolverContactConstraintPool[r].m_appliedImpulse);
+std::vector<BoundedImpulse> ContactSolver::bounded_impulses() const {
+  std::vector<BoundedImpulse> out;
+  out.reserve(bound_rows_.size());
+  for (int r : bound_rows_)
+    out.push_back({bound_point(r), m_tmpSolverContactConstraintPool[r].m_appliedImpulse, row_impulse(r)});
   return out;
+}
+
+// the normal's impulse, then each friction direction's added to it: the order the structure's load has always been
+// summed in, so that it stays the same to the last bit
+btVector3 ContactSolver::row_impulse(int r) const {
+  const btSolverConstraint& c = m_tmpSolverContactConstraintPool[r];
+  const auto* point = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
+  const auto& friction = m_tmpSolverContactFrictionConstraintPool;
+  btVector3 sum = point->m_normalWorldOnB * c.m_appliedImpulse;
+  sum += point->m_lateralFrictionDir1 * friction[c.m_frictionIndex].m_appliedImpulse;
+  if (two_directions_) sum += point->m_lateralFrictionDir2 * friction[c.m_frictionIndex + 1].m_appliedImpulse;
+  return sum;
+}
+
+btVector3 ContactSolver::friction_impulse(int r) const {
+  const btSolverConstraint& c = m_tmpSolverContactConstraintPool[r];
+  const auto* point = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
+  const auto& friction = m_tmpSolverContactFrictionConstraintPool;
+  btVector3 t = point->m_lateralFrictionDir1 * friction[c.m_frictionIndex].m_appliedImpulse;
+  if (two_directions_) t += point->m_lateralFrictionDir2 * friction[c.m_frictionIndex + 1].m_appliedImpulse;
+  return t;
 }
 
 void ContactSolver::apply_impulses(const SolverAnswer& answer) {
@@ -553,9 +568,7 @@ btScalar ContactSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies
     for (int r = 0; r < m_tmpSolverContactConstraintPool.size(); ++r) {
       const btSolverConstraint& c = m_tmpSolverContactConstraintPool[r];
       const auto* point = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
-      btVector3 t = point->m_lateralFrictionDir1 * m_tmpSolverContactFrictionConstraintPool[c.m_frictionIndex].m_appliedImpulse;
-      if (two_directions_) t += point->m_lateralFrictionDir2 * m_tmpSolverContactFrictionConstraintPool[c.m_frictionIndex + 1].m_appliedImpulse;
-      friction_current_[point] = FrictionMemory{c.m_appliedImpulse, t};
+      friction_current_[point] = FrictionMemory{c.m_appliedImpulse, friction_impulse(r)};
     }
   }
   return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, numBodies, info);
