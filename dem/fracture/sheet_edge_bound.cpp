@@ -8,6 +8,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "dem/fracture/sheet_floe_load.hpp"
+#include "dem/world/bullet_eigen.hpp"
 #include "dem/world/contact_solver.hpp"
 
 namespace icedem {
@@ -76,7 +77,7 @@ bool SheetEdgeBound::tighten(const std::vector<BoundedImpulse>& impulses) {
     // its share of the patch's bound, on its normal impulse, which also bounds its friction: the shares sum to the
     // bound where the push is all normal; friction above its share lowers it again at the next pass
     b.cap = std::min(b.cap, i.normal * b.patch_bound / total);
-    lowered = true;
+    b.lowered = lowered = true;
   }
   return lowered;
 }
@@ -88,9 +89,23 @@ std::optional<double> SheetEdgeBound::cap(const btManifoldPoint& point) const {
 }
 
 std::vector<int> SheetEdgeBound::floes_at_bound() const {
+  // a floe gave way where its patch bore its bound in the solve: where tighten held the patch's sum (a point's cap
+  // lowered to its share, and the point at it: the passes leave the sum at the bound to a few tenths of a percent, from
+  // either side, as the friction shifts), or where the sum of the answer kept is at the bound. Not where a point is
+  // at its first cap (the whole h P on its normal) while the patch's sum is below: a piece pressing the edge down at
+  // one point and lifting it at another bends it by the difference (in the crushing tows, a floe whose one point was at
+  // its first cap broke the sheet at 0.28 of its patch's load)
+  std::map<int, std::pair<double, double>> push;  // floe -> (sum of sign J_y, h P), N s
   std::vector<int> out;
-  for (const auto& [point, bound] : caps_)
-    if (point->m_appliedImpulse >= (1.0 - ContactSolver::kAtBound) * bound.cap) out.push_back(bound.floe);
+  for (const auto& [point, bound] : caps_) {
+    auto& [sum, patch_bound] = push[bound.floe];
+    sum += bound.sign * double(contact_impulse(*point).y());
+    patch_bound = bound.patch_bound;
+    if (bound.lowered && point->m_appliedImpulse >= (1.0 - ContactSolver::kAtBound) * bound.cap)
+      out.push_back(bound.floe);
+  }
+  for (const auto& [floe, p] : push)
+    if (std::abs(p.first) >= (1.0 - ContactSolver::kAtBound) * p.second) out.push_back(floe);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;

@@ -18,10 +18,10 @@
 // breaking load; with the normals alone bounded, a step of 501 N on the cone at a patch 2.9 times its breaking load,
 // the friction's part of its push not held), each of its points' normal impulses is bounded by its share of h P (its
 // impulse times h P over the sum, tighten), which bounds its friction too, and the island is solved again from that
-// answer (dem/world/contact_bound.hpp). A floe whose point reached its bound breaks the sheet at its patch after the step
-// (floes_at_bound), even where the patch the forces make (its centre their resultant's) plans a higher load than the
-// one the points made before the solve (at a corner, whose opening angle depends on the centre): the edge gave way,
-// so it broke.
+// answer (dem/world/contact_bound.hpp). A floe whose patch's push reached its bound breaks the sheet at its patch after
+// the step (floes_at_bound; not a floe whose point is at its first cap while the patch's sum is below), even where the
+// patch the forces make (its centre their resultant's) plans a higher load than the one the points made before the
+// solve (at a corner, whose opening angle depends on the centre): the edge gave way, so it broke.
 #pragma once
 
 #include <unordered_map>
@@ -47,8 +47,9 @@ class SheetEdgeBound : public ContactBound {
   std::optional<double> cap(const btManifoldPoint& point) const override;
   bool tighten(const std::vector<BoundedImpulse>& impulses) override;
 
-  /// The floes (their place in World::floes()) a point of whose push on the edge reached its bound in the step just
-  /// solved, in increasing order. Call before the world changes (a cut removes prisms, and their contact points).
+  /// The floes (their place in World::floes()) whose patch's push on the edge reached its bound in the step just
+  /// solved (held there by tighten, or its |sum of J_y| at h P), in increasing order. Call before the world changes (a
+  /// cut removes prisms, and their contact points).
   std::vector<int> floes_at_bound() const;
 
  private:
@@ -57,6 +58,7 @@ class SheetEdgeBound : public ContactBound {
     int floe = -1;
     double patch_bound = 0;   // N s, h P of its floe's patch: on |the sum over the patch of J_y|
     double sign = 1;          // +1 where the sheet's prism is body 0 of the point's manifold, -1 where body 1
+    bool lowered = false;     // its cap lowered to its share of the patch's bound (tighten)
   };
   SheetIce ice_;
   Polygon outline_;

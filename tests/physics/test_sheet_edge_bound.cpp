@@ -181,6 +181,40 @@ TEST(SheetEdgeBound, FrictionOnTheEdgesFaceIsHeldAtMostAtTheBreakingLoad) {
   EXPECT_EQ(at_bound, std::vector<int>{0});
 }
 
+// A floe is at its bound where its patch's push is, not where one of its points is: a piece at the edge pressing it
+// down at one point and lifting it at another (its manifold made by hand, the solve's answer set on it) has its first
+// point at that point's own cap (h P, the whole on its normal), but the edge bears the difference. Lifting by 0.7 of
+// it, the patch bears 0.3 h P and the edge did not give way; lifting by nothing, the patch bears h P and did (the sum
+// is the impulses' vertical part with their signs, as the load read after the step sums it)
+TEST(SheetEdgeBound, AFloeIsAtItsBoundWhereItsPatchsPushIs) {
+  const double h = kDt;
+  btCollisionObject prism, floe;
+  floe.setUserIndex2(0);  // floe 0
+  SheetEdgeBound bound(paper_ice());
+  bound.set_sheet(sheet_outline(), {&prism});
+  const auto at_bound_lifted_by = [&](double lift) {
+    btPersistentManifold m(&prism, &floe, 0, 0.02, 0.02);
+    // body 0 is the sheet; a point's normal on body 1 points toward body 0, the impulse on the sheet along it
+    const auto add = [&](double z, double normal_y) {
+      btManifoldPoint p(btVector3(0, 0, 0), btVector3(0, 0, 0), btVector3(0, normal_y, 0), -1e-4);
+      p.m_positionWorldOnA = p.m_positionWorldOnB = btVector3(0.0, 0.0, z);  // on the edge, x = 0
+      m.addManifoldPoint(p);
+    };
+    add(-0.05, -1.0);  // the piece on the sheet, pressing it down
+    add(0.05, 1.0);    // the piece under it, lifting it
+    btPersistentManifold* manifolds[] = {&m};
+    bound.begin_step();
+    bound.prepare(manifolds, 1, h);
+    const std::optional<double> cap = bound.cap(m.getContactPoint(0));
+    EXPECT_TRUE(cap.has_value() && *cap > 0 && *cap < kUnbounded) << "the pressing point has a cap of its own";
+    m.getContactPoint(0).m_appliedImpulse = btScalar(*cap);  // at its cap: h P
+    m.getContactPoint(1).m_appliedImpulse = btScalar(lift * *cap);
+    return bound.floes_at_bound();
+  };
+  EXPECT_TRUE(at_bound_lifted_by(0.7).empty()) << "the patch at 0.3 of its bound";
+  EXPECT_EQ(at_bound_lifted_by(0.0), std::vector<int>{0}) << "the patch at its bound";
+}
+
 // A contact method that cannot take the bound is refused at the key, naming those that can
 TEST(SheetEdgeBound, AMethodThatCannotBoundTheEdgeIsRefused) {
   for (const char* method : {"pgs", "ipm"}) {
