@@ -68,12 +68,12 @@ with tempfile.TemporaryDirectory() as tmp:
     check(len(change) == 1 and "+10.0 %" in change[0] and "(moves)" in change[0] and change[0].endswith("| 3 |"),
           f"leaving behind judged start by start, the 5 Hz maximum among the criteria: {change}")
     check(sum(l.startswith("| mu02 | 3 |") for l in lines) == 4, "four criteria judged")
-# the overloads of a sheet's breaks: load over breaking load 1.0, 2.5 (2 pieces), 30 (no piece), 1.9
-breaks = np.zeros(4, dtype=[("time", "f8"), ("crack_distance", "f8"), ("broken_area", "f8"), ("crushed_area", "f8"),
+# the overloads of a sheet's breaks: load over breaking load 1.0, 2.5 (2 pieces), 30 (no piece), 1.9, 0.5
+breaks = np.zeros(5, dtype=[("time", "f8"), ("crack_distance", "f8"), ("broken_area", "f8"), ("crushed_area", "f8"),
                             ("load", "f8"), ("breaking_load", "f8"), ("pieces", "i4")])
-breaks["time"] = [10.0, 20.0, 30.0, 40.0]
-breaks["load"], breaks["breaking_load"] = [26.0, 65.0, 780.0, 49.4], 26.0
-breaks["pieces"] = [2, 2, 0, 3]
+breaks["time"] = [10.0, 20.0, 30.0, 40.0, 50.0]
+breaks["load"], breaks["breaking_load"] = [26.0, 65.0, 780.0, 49.4, 13.0], 26.0
+breaks["pieces"] = [2, 2, 0, 3, 2]
 run = {"/sheet/breaks": breaks, "/bodies/parent": np.array([-1, -1])}
 aggregate.pieces.body_areas = lambda run: [0.01, 0.02]
 sheet = aggregate.sheet_record(run)
@@ -81,11 +81,16 @@ check(sheet["overloaded"] == 2 and sheet["overloaded_no_piece"] == 1 and abs(she
       and sheet["overload_times_s"] == [20.0, 30.0],
       f"a sheet's overloaded breaks: 2 past twice their breaking load, 1 of them with no piece, the largest 30 x: "
       f"{ {k: sheet[k] for k in ('overloaded', 'overloaded_no_piece', 'largest_overload', 'overload_times_s')} }")
+check(sheet["underloaded"] == 1 and abs(sheet["smallest_load_ratio"] - 0.5) < 1e-9,
+      f"a sheet's breaks below 0.99 of their breaking load: 1, at 0.5: "
+      f"{ {k: sheet[k] for k in ('underloaded', 'smallest_load_ratio')} }")
 with_sheet = {"summary": {}, "sheet": dict(sheet, quantiles=[0.25, 0.5, 0.75], crack_distance_m=[0.1, 0.2, 0.3],
                                            piece_diameter_m=[0.1, 0.2, 0.3], area_weighted_diameter_m=0.5)}
-other = dict(with_sheet, sheet=dict(with_sheet["sheet"], overloaded=4, overloaded_no_piece=0, largest_overload=3.0))
+other = dict(with_sheet, sheet=dict(with_sheet["sheet"], overloaded=4, overloaded_no_piece=0, largest_overload=3.0,
+                                    underloaded=0, smallest_load_ratio=0.995))
 rows = [l for l in la.sheet_table({("mu02", 0.0): {5.2: (None, with_sheet), 5.201: (None, other)}}, (0.4, 0.033))
         if l.startswith("| mu02 |")]
-check(len(rows) == 1 and rows[0].endswith("| 3.0 (0.5) | 30.0 |"),
-      f"the sheet table: overloaded breaks a tow (no piece) over the starts, the largest ratio of them: {rows}")
+check(len(rows) == 1 and rows[0].endswith("| 3.0 (0.5) | 30.0 | 0.5 (0.50) |"),
+      f"the sheet table: overloaded breaks a tow (no piece) over the starts, the largest ratio of them; those below "
+      f"their load, the smallest ratio: {rows}")
 finish()

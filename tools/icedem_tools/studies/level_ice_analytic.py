@@ -125,9 +125,18 @@ def overload_text(sheets):
     return f"{over:.1f} ({no_piece:.1f}) | {fmt(max(ratios) if ratios else None, digits=1)}"
 
 
+def underload_text(sheets):
+    """Of a configuration's starts' sheet records: the breaks a tow below aggregate.UNDERLOAD times their breaking
+    load and the smallest ratio over the starts; "n/a" for records made before they were kept."""
+    if not sheets or any("underloaded" not in s for s in sheets):
+        return "n/a"
+    ratios = [s["smallest_load_ratio"] for s in sheets if s.get("smallest_load_ratio") is not None]
+    return f"{np.mean([s['underloaded'] for s in sheets]):.1f} ({fmt(min(ratios) if ratios else None, digits=2)})"
+
+
 def sheet_table(configs, lengths, intro=True):
     """Where the sheet broke and what it broke into, per configuration: each start's median (its record's
-    sheet block, aggregate.sheet_record), averaged over the starts, and its overloaded breaks (overload_text);
+    sheet block, aggregate.sheet_record), averaged over the starts, its overloaded breaks (overload_text) and those below their load (underload_text);
     `intro`: the paragraph that says so first."""
     lc, h = lengths
     L = ["", "Where the sheet broke and what it broke into (each start's median, averaged over its starts): the "
@@ -141,12 +150,15 @@ def sheet_table(configs, lengths, intro=True):
          f"{agg.OVERLOAD:g} times its breaking load (the check follows the step's solve, so a zone passes its load by "
          "what one step adds; further where a cut broke off no piece, in brackets, and the sheet stood: "
          "docs/model/breakage.md, \"A piece's corner on the edge\"), and the largest load over breaking load of the "
-         "starts.", ""
+         f"starts. Below: the breaks a tow at less than {agg.UNDERLOAD:g} of their breaking load, and the smallest "
+         "ratio of the starts (a floe the contact solve held at its patch's bound breaks the sheet after the step, "
+         "where the patch its forces then make can plan a higher load: docs/model/breakage.md, \"The edge's bound "
+         "in the solve\"; n/a: records made before they were kept).", ""
          ] if intro else [""]
     L += ["| run | leave m | starts | breaks a tow | x* median m | x* / l_c | x* / h | pieces a tow | "
           "diameter median m (quartiles) | area-weighted diameter m | its / l_c | overloaded a tow (no piece) | "
-          "largest load / breaking load |",
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+          "largest load / breaking load | below a tow (smallest) |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for (scenario, leave), members in sorted(configs.items()):
         sheets = [rec["sheet"] for _, rec in members.values() if rec.get("sheet")]
         if not sheets:
@@ -158,7 +170,8 @@ def sheet_table(configs, lengths, intro=True):
         L.append(f"| {scenario} | {leave:g} | {len(sheets)} | {np.mean([s['breaks'] for s in sheets]):.0f} | "
                  f"{x:.3f} | {fmt(x / lc if lc else None, digits=2)} | {fmt(x / h if h else None, digits=1)} | "
                  f"{np.mean([s['pieces'] for s in sheets]):.0f} | {d[1]:.3f} ({d[0]:.3f}-{d[2]:.3f}) | {w:.3f} | "
-                 f"{fmt(w / lc if lc else None, digits=2)} | {overload_text(sheets)} |")
+                 f"{fmt(w / lc if lc else None, digits=2)} | {overload_text(sheets)} | "
+                 f"{underload_text(sheets)} |")
     return L
 
 

@@ -199,12 +199,19 @@ SHEET_QUANTILES = (0.1, 0.25, 0.5, 0.75, 0.9)
 # passes its load by what one step adds, and further where its cut broke off no piece and the sheet stood
 # (docs/model/breakage.md, "A piece's corner on the edge")
 OVERLOAD = 2.0
+# a break of the sheet below this times its breaking load: a floe the contact solve held at its patch's bound breaks
+# the sheet after the step, by the patch the forces then make, whose load can be higher (a corner's opening angle
+# depends on the patch's centre); the solve leaves a held patch within a few tenths of a percent of its bound, so a
+# break below 0.99 of its load is the patches' difference, not the solve's (docs/model/breakage.md, "The edge's bound
+# in the solve")
+UNDERLOAD = 0.99
 
 
 def sheet_record(run):
     """Of a run of level ice cut by closed forms (/sheet/breaks), its breaks' crack distances (x*, m), the
     areas they broke off, how many bore more than OVERLOAD times their breaking load (and of those, how many broke
-    off no piece), when they were and the largest such ratio, and the pieces at the run's end (the bodies no split
+    off no piece), when they were and the largest such ratio, how many broke below UNDERLOAD times it and the
+    smallest ratio, and the pieces at the run's end (the bodies no split
     made two of): their count, the quantiles of their areas and of their equivalent diameters sqrt(4 A / pi), and the
     area-weighted mean diameter; None for any other run. Quantiles, not lists: a tow makes hundreds of pieces and
     a record stays a few kB."""
@@ -227,6 +234,8 @@ def sheet_record(run):
             "overloaded_no_piece": int((over & (b["pieces"] == 0)).sum()),
             "largest_overload": float(f"{ratio.max():.6g}") if len(b) else None, "overload": OVERLOAD,
             "overload_times_s": [float(f"{v:.6g}") for v in b["time"][over]],
+            "underloaded": int((ratio < UNDERLOAD).sum()),
+            "smallest_load_ratio": float(f"{ratio.min():.6g}") if len(b) else None, "underload": UNDERLOAD,
             "broken_area_m2": float(f"{b['broken_area'].sum():.6g}") if len(b) else 0.0,
             "crushed_area_m2": float(f"{b['crushed_area'].sum():.6g}") if len(b) else 0.0,
             "pieces": int(len(a)), "piece_area_m2": q(a), "piece_diameter_m": q(d),
@@ -334,7 +343,8 @@ SAME_RUN_KEYS = ("steps", "mean_fx_N", "max_fx_N", "breaks")
 def load_record(run, out):
     """The record of a finished run: the kept file when the sweep keeps records and it is at
     least as new as the run's summary (and has the window's quantiles and filtered maxima, kept since
-    2026-11-26, its largest steps, its blocks and a sheet's overloads, kept since 2026-11-30); else made from the
+    2026-11-26, its largest steps, its blocks and a sheet's overloads, kept since 2026-11-30, and its breaks below
+    their load, since 2026-12-01); else made from the
     run's directory (reading its HDF5 file) and kept. A kept record is never replaced by a run directory holding
     another run (a figure's rerun by another build: its SAME_RUN_KEYS differ): the record stays, and a warning names
     the directory."""
@@ -350,7 +360,7 @@ def load_record(run, out):
         not os.path.isfile(summary) or os.path.getmtime(run.record_file) >= os.path.getmtime(summary)) else None
     finished_here = execute.finished_here(run, out)
     if finished_here and (kept is None or not RECORD_WINDOW_KEYS <= set(kept.get("window", {}))
-                          or ("sheet" in kept and "overload_times_s" not in kept["sheet"])):
+                          or ("sheet" in kept and not {"overload_times_s", "underloaded"} <= set(kept["sheet"]))):
         if existing is not None:
             here = results.load_summary(summary)
             was = existing["summary"]
