@@ -136,8 +136,8 @@ def underload_text(sheets):
 
 def sheet_table(configs, lengths, intro=True):
     """Where the sheet broke and what it broke into, per configuration: each start's median (its record's
-    sheet block, aggregate.sheet_record), averaged over the starts, its overloaded breaks (overload_text) and those below their load (underload_text);
-    `intro`: the paragraph that says so first."""
+    sheet block, aggregate.sheet_record), averaged over the starts, its overloaded breaks (overload_text) and those
+    below their load (underload_text); `intro`: the paragraph that says so first."""
     lc, h = lengths
     L = ["", "Where the sheet broke and what it broke into (each start's median, averaged over its starts): the "
          "crack distance x* of the closed forms (docs/model/breakage.md), against the characteristic length "
