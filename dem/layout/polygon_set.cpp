@@ -85,15 +85,17 @@ std::vector<Polygon> opening(const Polygon& region, double width) {
   bg::buffer(in, shrunk, bg::strategy::buffer::distance_symmetric<double>(-width / 2), side, round, end, point);
   if (shrunk.empty()) return {};
   bg::buffer(shrunk, grown, bg::strategy::buffer::distance_symmetric<double>(width / 2), side, mitre, end, point);
-  // Boost's buffer of a region with edges a round-off apart can answer nothing, more than the region, or parts
-  // grown back into touch around a notch (a hole): then the region stands as it was (nothing is taken away rather
-  // than ice made up)
+  // Boost's buffer of a region with edges a round-off apart can answer nothing, more than the region, less than
+  // the shrunk region it grew (which an opening holds: 3 parts shrunk to 72.9 m^2 grown back to 1e-8 m^2, the
+  // analytic tow at mu 0.2 and dt 0.01 s, 150.21 s, where growing each part alone gave them back), or parts grown
+  // back into touch around a notch (a hole): then the region stands as it was (nothing is taken away rather than
+  // ice made up or lost)
   for (const BgPolygon& p : grown)
     if (!p.inners().empty()) return {region};
   std::vector<Polygon> out = from_bg(grown, "opening");
   double total = 0;
   for (const Polygon& p : out) total += area(p);
-  if (out.empty() || total > area(region) * (1 + 1e-9)) return {region};
+  if (out.empty() || total > area(region) * (1 + 1e-9) || total < bg::area(shrunk) * (1 - 1e-9)) return {region};
   return out;
 }
 

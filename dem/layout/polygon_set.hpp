@@ -24,6 +24,8 @@ std::vector<Polygon> subtract(const Polygon& a, const Polygon& b);
 /// tongue or neck narrower than `width` is gone (but for a stub at its root as deep as a disc of that diameter
 /// reaches into it, whose corners the mitres put back a hair beyond the region: 5e-7 m^2 for a 5 mm tongue opened
 /// at 33 mm). The parts left, each ccw; a neck's two sides become two parts; none if all of it is narrower.
+/// Where Boost's buffer answers what an opening cannot (nothing of a region it shrank to something, more than the
+/// region, less than what it shrank to, a hole), the region as it was.
 std::vector<Polygon> opening(const Polygon& region, double width);
 
 /// The disc of `radius` (m) about `centre` as a polygon of `segments` vertices on the circle, ccw.
