@@ -4,13 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
-#include <string>
 
 #include "dem/layout/convex_partition.hpp"
 #include "dem/layout/polygon_set.hpp"
+#include "tests/support/outline_file.hpp"
 
 namespace icedem {
 namespace {
@@ -98,19 +96,10 @@ TEST(PolygonSet, AnOpeningTakesTheTongueNarrowerThanItsWidth) {
 // A part of the sheet recorded from the level tow at dt 0.01 s (tests/unit/data/sheet_part_150s_dt001.txt): Boost's
 // buffer shrinks it by 16.5 mm to three parts, 72.898 m^2 (less the band along its 76.2 m perimeter; necks narrower
 // than 33 mm part off two small parts at its lower left), and growing the three back together answered 1e-8 m^2: the
-// sheet was cut down to a speck and the run stopped. An opening holds what it shrank to, so the answer has at least that area (to round-off) and no more than
-// the region's (to the mitres' hair, 1e-9 of it); here the region as it was.
+// sheet was cut down to a speck and the run stopped. An opening holds what it shrank to, so the answer has at least
+// that area (to round-off) and no more than the region's (to the mitres' hair, 1e-9 of it); here the region as it was.
 TEST(PolygonSet, AnOpeningKeepsAtLeastWhatItShrankTo) {
-  std::ifstream in(std::string(ICEDEM_SOURCE_DIR) + "/tests/unit/data/sheet_part_150s_dt001.txt");
-  ASSERT_TRUE(in.good());
-  Polygon part;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream row(line);
-    double x = 0, z = 0;
-    row >> x >> z;
-    part.emplace_back(x, z);
-  }
+  const Polygon part = testing::read_outline("sheet_part_150s_dt001.txt");
   ASSERT_EQ(part.size(), 130u);
   ASSERT_TRUE(is_simple(part));
   const std::vector<Polygon> opened = opening(part, 0.033);

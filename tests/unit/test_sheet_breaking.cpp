@@ -5,14 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
-#include <string>
 
 #include "dem/fracture/plate_edge_load.hpp"
 #include "dem/fracture/sheet_breaking.hpp"
 #include "dem/fracture/wedge_bending.hpp"
 #include "dem/layout/polygon_set.hpp"
+#include "tests/support/outline_file.hpp"
 
 namespace icedem {
 namespace {
@@ -154,16 +152,7 @@ TEST(SheetBreaking, ACutAcrossAPatchKeepsTheIcesArea) {
 // step until the memory ran out. The cut takes the region instead (its two slivers of other tongues breaking off
 // with it): the sheet left, the pieces and the slivers are the sheet before to round-off, and the sheet lost ice
 TEST(SheetBreaking, ACutThatBoostCannotTakeKeepsTheArea) {
-  std::ifstream in(std::string(ICEDEM_SOURCE_DIR) + "/tests/unit/data/sheet_outline_215s.txt");
-  ASSERT_TRUE(in.good());
-  Polygon sheet;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream row(line);
-    double x = 0, z = 0;
-    row >> x >> z;
-    sheet.emplace_back(x, z);
-  }
+  const Polygon sheet = testing::read_outline("sheet_outline_215s.txt");
   ASSERT_EQ(sheet.size(), 206u);
   const SheetContact c = load_at({20.918298264036537, -0.034424301703904765},
                                  {0.99842022329635716, -0.05618770072580221}, 0.086008752961129975);
