@@ -4,8 +4,9 @@ on records made here: a configuration's loads are the mean over its starts with 
 and the 5 Hz low-passed max, the largest of each over ISO 19906), and how many starts' largest load fell at a step
 whose solve reached its cap; leaving the channel behind is judged start by
 start against the tow without it (a uniform +10 % moves, by +10.0 %); no finished run says so. A sheet's record
-counts the breaks whose zone bore more than twice its breaking load and those of them that broke off no piece
-(aggregate.sheet_record), and the sheet table shows them over the starts."""
+counts the breaks whose zone bore more than twice its breaking load and those of them that broke off no piece, those
+a floe's push made, the longest time without a break (to the run's end too) and the breaks at a step whose solve
+reached its cap (aggregate.sheet_record), and the sheet table shows them over the starts."""
 import math
 import os
 import sys
@@ -70,11 +71,13 @@ with tempfile.TemporaryDirectory() as tmp:
     check(sum(l.startswith("| mu02 | 3 |") for l in lines) == 4, "four criteria judged")
 # the overloads of a sheet's breaks: load over breaking load 1.0, 2.5 (2 pieces), 30 (no piece), 1.9, 0.5
 breaks = np.zeros(5, dtype=[("time", "f8"), ("crack_distance", "f8"), ("broken_area", "f8"), ("crushed_area", "f8"),
-                            ("load", "f8"), ("breaking_load", "f8"), ("pieces", "i4")])
+                            ("load", "f8"), ("breaking_load", "f8"), ("pieces", "i4"), ("by_floe", "i4")])
 breaks["time"] = [10.0, 20.0, 30.0, 40.0, 50.0]
 breaks["load"], breaks["breaking_load"] = [26.0, 65.0, 780.0, 49.4, 13.0], 26.0
 breaks["pieces"] = [2, 2, 0, 3, 2]
-run = {"/sheet/breaks": breaks, "/bodies/parent": np.array([-1, -1])}
+breaks["by_floe"] = [0, 1, 1, 0, 0]
+# the run goes on 25 s past its last break (at 50 s): longer than any gap between breaks (10 s)
+run = {"/sheet/breaks": breaks, "/bodies/parent": np.array([-1, -1]), "/load/time": np.array([0.0, 75.0])}
 aggregate.pieces.body_areas = lambda run: [0.01, 0.02]
 sheet = aggregate.sheet_record(run)
 check(sheet["overloaded"] == 2 and sheet["overloaded_no_piece"] == 1 and abs(sheet["largest_overload"] - 30.0) < 1e-9
@@ -84,6 +87,21 @@ check(sheet["overloaded"] == 2 and sheet["overloaded_no_piece"] == 1 and abs(she
 check(sheet["underloaded"] == 1 and abs(sheet["smallest_load_ratio"] - 0.5) < 1e-9,
       f"a sheet's breaks below 0.99 of their breaking load: 1, at 0.5: "
       f"{ {k: sheet[k] for k in ('underloaded', 'smallest_load_ratio')} }")
+check(sheet["by_floe"] == 2 and sheet["longest_without_break_s"] == 25.0,
+      f"a sheet's breaks by floes: 2; the longest time without one: from the last to the run's end, 25 s: "
+      f"{ {k: sheet[k] for k in ('by_floe', 'longest_without_break_s')} }")
+run["/load/time"] = np.array([0.0, 55.0])
+check(aggregate.sheet_record(run)["longest_without_break_s"] == 10.0,
+      "the longest time without a break between two breaks (10 s) where the run ends 5 s after its last")
+check(sheet["at_cap"] is None, "no per-step diagnostics, no count of the breaks at the solve's cap")
+# steps every 10 s; the steps of 20 s (a floe's break) and 50 s (the cone's) handed an island over at the cap, the
+# step of 60 s (no break) left one capped: 1 floe's break and 2 breaks at the cap, 3 of 7 steps
+run["/load/time"] = np.arange(7) * 10.0
+run["/diagnostics/handovers"] = np.array([0, 0, 1, 0, 0, 2, 0])
+run["/diagnostics/solver_capped"] = np.array([0, 0, 0, 0, 0, 0, 1])
+cap = aggregate.sheet_record(run)["at_cap"]
+check(cap == {"by_floe": 1, "breaks": 2, "steps": float(f"{3 / 7:.4g}")},
+      f"the breaks at a step whose solve reached its cap: 1 a floe's, 2 of all, 3 of 7 steps: {cap}")
 with_sheet = {"summary": {}, "sheet": dict(sheet, quantiles=[0.25, 0.5, 0.75], crack_distance_m=[0.1, 0.2, 0.3],
                                            piece_diameter_m=[0.1, 0.2, 0.3], area_weighted_diameter_m=0.5)}
 other = dict(with_sheet, sheet=dict(with_sheet["sheet"], overloaded=4, overloaded_no_piece=0, largest_overload=3.0,

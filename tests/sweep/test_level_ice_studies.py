@@ -11,7 +11,10 @@
   many starts' largest load fell at an overloaded break;
 - the 10 s blocks (level_ice_blocks.py): pooled over the starts, not paired (a crushing ensemble of two starts
   against a rigid one of three is the ratio of the pooled means), the halved step against the crushing tows
-  of its own name, never against itself."""
+  of its own name, never against itself;
+- the ladder of solves (level_ice_solve_ladder.py): a row per rung with its step, merit and tolerance, who broke
+  the sheet and the loads, and the tightest solve at the default's step and merit told against the default (not
+  the halved step's, nor another merit's)."""
 import math
 import os
 import sys
@@ -23,6 +26,7 @@ from icedem_tools.runs import spec  # noqa: E402
 from icedem_tools.sweeps import execute  # noqa: E402
 from icedem_tools.studies import level_ice_against as against, level_ice_analytic as la  # noqa: E402
 from icedem_tools.studies import level_ice_blocks, level_ice_report, level_ice_thickness_speed as ts  # noqa: E402
+from icedem_tools.studies import level_ice_solve_ladder as ladder  # noqa: E402
 
 BASE = """name = "base"
 seeds = 1
@@ -62,6 +66,18 @@ fast = ["structure.speed=0.14", "time.duration=140.0"]
 [grid]
 "ice.thickness" = [0.025, 0.041]
 """
+LADDER = """name = "ladder"
+seeds = 1
+[[scenario]]
+name = "mu02_crushing"
+file = "scenarios/level_ice/level_ice_analytic.toml"
+[variants]
+"siconos 1e-3" = []
+"siconos 1e-5" = ["solver.merit_tolerance=1e-5"]
+"impulse 1e-6" = ["solver.merit=\\"impulse\\"", "solver.merit_tolerance=1e-6"]
+"dt 0.01 siconos 1e-6" = ["time.dt=0.01", "solver.merit_tolerance=1e-6"]
+"siconos 1e-6 cap 5000" = ["solver.merit_tolerance=1e-6", "solver.method_iterations=5000"]
+"""
 MEANS = {5.2: 20.0, 5.201: 22.0, 5.202: 24.0}
 
 
@@ -84,7 +100,8 @@ def design(run):
 
 with tempfile.TemporaryDirectory() as tmp:
     files = {}
-    for name, text in (("base", BASE), ("crushing", CRUSHING), ("step", STEP), ("ts", THICKNESS_SPEED)):
+    for name, text in (("base", BASE), ("crushing", CRUSHING), ("step", STEP), ("ts", THICKNESS_SPEED),
+                       ("ladder", LADDER)):
         files[name] = os.path.join(tmp, name + ".toml")
         with open(files[name], "w") as f:
             f.write(text)
@@ -242,4 +259,34 @@ with tempfile.TemporaryDirectory() as tmp:
     # mean 0.45 lies in the lattice's 0.40-0.50, max 1.2 above its 0.70-0.90
     check("Of the 2 ratios of the cut sheet's ensembles compared, 1 lie within the range" in text
           and ": crushing mean;" in text, f"the ratios within the lattice's spread counted: {text}")
+
+    # the ladder: the default breaks by the cone (2 of 100 by floes), each tighter rung by floes more (by the
+    # tolerance's exponent: 1e-5 40, 1e-6 60), its mean 10 % lower and half its window's steps capped
+    def rung(run, out):
+        tol = float(spec.run_value(run, "solver.merit_tolerance"))
+        floes = {1e-3: 2, 1e-5: 40, 1e-6: 60}[tol]
+        rec = record(30.0 if tol == 1e-3 else 27.0, step=float(spec.run_value(run, "time.dt")),
+                     capped=0.01 if tol == 1e-3 else 0.5)
+        rec["summary"]["solver"]["iterations_mean"] = 300.0
+        rec["summary"]["sim_time_s"] = 45.0
+        rec["sheet"].update(breaks=100, by_floe=floes, underloaded=floes // 4, smallest_load_ratio=0.5,
+                            longest_without_break_s=2.0 + floes / 4,
+                            at_cap={"by_floe": floes // 2, "breaks": floes, "steps": 0.01 if tol == 1e-3 else 0.5})
+        return rec
+    ladder.agg.load_record = rung
+    lines = ladder.section(files["ladder"], tmp, design)
+    rows = [l for l in lines if l.startswith("| mu02_crushing |")]
+    check(len(rows) == 5 and rows[0] == "| mu02_crushing | 0.2 | 0.02 | siconos | 0.001 | 1000 | ipm | 100 | 2 (2 %) | "
+          "0 (0.50) | "
+          "2.5 | 30.0 | 90.0 | 300.0 | 1.0 % | 1 of 2 | 300 | 0.08 |"
+          and rows[3].startswith("| mu02_crushing | 0.2 | 0.01 | siconos | 1e-06 | 1000 | ipm | 100 | 60 (60 %) | "
+                                 "15 (0.50) |")
+          and rows[4].startswith("| mu02_crushing | 0.2 | 0.02 | siconos | 1e-06 | 5000 | ipm |"),
+          f"a row per rung: step, merit, tolerance, cap, hand-over, breaks by floes, below their load, the loads: {rows}")
+    told = [l for l in lines if l.startswith("The default solve against the tightest at its step, merit, cap and ")]
+    check(len(told) == 1 and "from siconos 0.001 to siconos 1e-05 at 0.02 s, the breaks by floes go from 2 of 100 "
+          "to 40 of 100" in told[0] and "from 2.5 s to 12.0 s" in told[0] and "(-10.0 %, one start each)" in told[0]
+          and "50 % of the tightest's steps reached the solve's cap, and 20 of its 40 breaks by floes" in told[0],
+          f"the tightest at the default's step, merit and cap (not the halved step's 1e-6, nor the impulse merit's, "
+          f"nor the higher cap's): {told}")
 finish()

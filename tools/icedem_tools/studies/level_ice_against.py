@@ -39,9 +39,11 @@ def _ensemble(values):
 # (heading, what the changed tows are, why they are run or how to read them)
 STEP = ("### Halving the step", "the same tows at half their step (each against the tows above of its scenario's name)",
         "The 5 Hz low-passed maximum is the one maximum a step does not set by construction; the unfiltered "
-        "maximum is a single step's. The halved step is solved to the same accuracy of the forces (its solve "
-        "column): Siconos' merit, the default, loosens relative to the forces as the step shrinks, and a looser "
-        "solve lowers these tows' loads (\"Tightening the solve\").")
+        "maximum is a single step's. The halved step is solved to the impulse merit's 1e-4 (its solve column), "
+        "meant as the same accuracy of the forces: Siconos' merit, the default, loosens relative to the forces as "
+        "the step shrinks, and a looser solve lowers these tows' loads (\"Tightening the solve\"). But the merit "
+        "alone moves who breaks the sheet (\"Who breaks the sheet, solve by solve\"), so these changes are the "
+        "step's and the solve's together.")
 CRUSHING = ("### The crushing contact law",
             "the same tows with the ice crushing against the cone (contact.model = \"crushing\", at the structure "
             "only, docs/model/crushing.md) instead of rigid contacts",

@@ -8,6 +8,7 @@ are upper references (ISO's over-predicted 50 field events by a factor of about 
                              [--analytic SWEEP.toml [--analytic-out DIR]
                               [--step SWEEP.toml [--step-out DIR]] [--crushing SWEEP.toml [--crushing-out DIR]]
                               [--solve SWEEP.toml [--solve-out DIR]]
+                              [--solve-ladder SWEEP.toml [--solve-ladder-out DIR]]
                               [--thickness-speed SWEEP.toml [--thickness-speed-out DIR]]]
 
 --out is the sweep's run directory (default sweeps/<name>); finished runs count (or their kept
@@ -15,9 +16,10 @@ records), so it can report while the sweep runs. Without --report the page is pr
 the tows of the sheet cut by closed forms over their starts (studies/level_ice_analytic.py), their runs in
 --analytic-out (default sweeps/<its name>); with it, --crushing adds the same tows under the crushing contact
 law, --step the crushing tows at a halved step and --solve them solved tighter, each against the tows of its
-scenario's name (studies/level_ice_against.py), all of them also in 10 s blocks (studies/level_ice_blocks.py), and
---thickness-speed the tows over ice thickness and speed with their figure, written beside --report
-(studies/level_ice_thickness_speed.py); and the page says which model of level ice, the lattice or the sheet cut
+scenario's name (studies/level_ice_against.py), all of them also in 10 s blocks (studies/level_ice_blocks.py),
+--solve-ladder the crushing tows' first 45 s over a ladder of solves, who breaks the sheet on each rung
+(studies/level_ice_solve_ladder.py), and --thickness-speed the tows over ice thickness and speed with their
+figure, written beside --report (studies/level_ice_thickness_speed.py); and the page says which model of level ice, the lattice or the sheet cut
 by closed forms, lies closer to ISO 19906, criterion by criterion."""
 import os
 import tomllib
@@ -26,7 +28,7 @@ import numpy as np
 
 from ..sweeps import aggregate as agg, execute
 from ..runs import pieces, spec
-from . import level_ice_against, level_ice_analytic, level_ice_blocks, level_ice_thickness_speed
+from . import level_ice_against, level_ice_analytic, level_ice_blocks, level_ice_solve_ladder, level_ice_thickness_speed
 from ..reports import report_sweeps
 from ..reports.report_tables import fmt
 
@@ -203,12 +205,13 @@ def why_below_iso(iso, lattice, sheets, breaking):
 
 
 def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thickness_speed=None,
-         thickness_speed_out=None, figure=None):
+         thickness_speed_out=None, figure=None, ladder=None, ladder_out=None):
     """The page's Markdown lines for the sweep file `sweep` with its runs in `out`, and, with `analytic`
     (a sweep file of analytic tows, runs in `analytic_out`), their section, the same tows changed in one thing
     (`against`: [(sweep file, run directory, what, base_of)], the crushing tows first, each against the
-    analytic tows and the crushing ones), the tows over thickness and speed (`thickness_speed`, runs in
-    `thickness_speed_out`, their figure written to `figure`), and which model lies closer to ISO 19906."""
+    analytic tows and the crushing ones), the ladder of solves (`ladder`, runs in `ladder_out`), the tows over
+    thickness and speed (`thickness_speed`, runs in `thickness_speed_out`, their figure written to `figure`), and
+    which model lies closer to ISO 19906."""
     name, runs = spec.load(sweep)
     L = [f"# {name}: level ice against ISO 19906 and Ralston", "",
          f"Runs of `{os.path.relpath(sweep, spec.ROOT)}` finished so far (`scripts/level_ice_report`). "
@@ -313,6 +316,8 @@ def page(sweep, out, icedem, analytic=None, analytic_out=None, against=(), thick
                 L += level_ice_analytic.sheet_table(c, lengths, intro=False)
             L += [""]
         L += level_ice_blocks.section(ensembles, comparisons, design)
+        if ladder:
+            L += level_ice_solve_ladder.section(ladder, ladder_out, design)
         if thickness_speed:
             L += level_ice_thickness_speed.section(thickness_speed, thickness_speed_out, design, figure)
         sheets = [("rigid", sheet_ratios(rigid, design))] + [("crushing", sheet_ratios(c, design)) for c in crushed]
@@ -341,6 +346,9 @@ def main(argv=None):
         ap.add_argument("--solve", help="with --analytic: a sweep file of the crushing tows solved to a tighter merit, "
                         "its scenarios named as the crushing tows (sweeps/studies/level_ice_analytic_solve.toml)")
         ap.add_argument("--solve-out", help="its run directory (default: sweeps/<its name>)")
+        ap.add_argument("--solve-ladder", help="with --analytic: a sweep file of the crushing tows' first 45 s over a "
+                        "ladder of solves (sweeps/studies/level_ice_analytic_solve_ladder.toml)")
+        ap.add_argument("--solve-ladder-out", help="its run directory (default: sweeps/<its name>)")
         ap.add_argument("--thickness-speed", help="with --analytic: a sweep file of analytic tows over thickness and "
                         "speed (sweeps/studies/level_ice_thickness_speed.toml); its figure is written beside --report")
         ap.add_argument("--thickness-speed-out", help="its run directory (default: sweeps/<its name>)")
@@ -352,11 +360,11 @@ def main(argv=None):
         return os.path.abspath(given) if given else os.path.join(spec.ROOT, "sweeps", spec.load(sweep_file)[0])
 
     def make(sweep, out, args):
-        analytic, step, crushing, solve, ts = (os.path.abspath(f) if f else None for f in (
-            args.analytic, args.step, args.crushing, args.solve, args.thickness_speed))
-        if not analytic and (step or crushing or solve or ts):
-            raise SystemExit("--step, --crushing, --solve and --thickness-speed compare with the analytic tows: give "
-                             "--analytic too")
+        analytic, step, crushing, solve, ts, ladder = (os.path.abspath(f) if f else None for f in (
+            args.analytic, args.step, args.crushing, args.solve, args.thickness_speed, args.solve_ladder))
+        if not analytic and (step or crushing or solve or ts or ladder):
+            raise SystemExit("--step, --crushing, --solve, --solve-ladder and --thickness-speed compare with the "
+                             "analytic tows: give --analytic too")
         # the crushing tows first: the halved step and the tighter solve are theirs, changed
         against = []
         if crushing:
@@ -369,5 +377,5 @@ def main(argv=None):
         figure = (os.path.join(os.path.dirname(os.path.abspath(args.report)), "level_ice_thickness_speed.png")
                   if ts and args.report else None)
         return page(sweep, out, args.icedem, analytic, run_dir(analytic, args.analytic_out), against, ts,
-                    run_dir(ts, args.thickness_speed_out), figure)
+                    run_dir(ts, args.thickness_speed_out), figure, ladder, run_dir(ladder, args.solve_ladder_out))
     return report_sweeps.page_command(argv, __doc__, "the sweep file of level-ice runs", make, options)

@@ -207,14 +207,44 @@ OVERLOAD = 2.0
 UNDERLOAD = 0.99
 
 
+def longest_without_break(run, breaks):
+    """The longest time (s, to 4 digits) from one of a sheet's `breaks` to the next, or from the last to the run's
+    end (its last /load/time); None without breaks."""
+    if not len(breaks):
+        return None
+    t = np.sort(np.asarray(breaks["time"], dtype=float))
+    end = max(float(np.asarray(run["/load/time"])[-1]), t[-1]) if "/load/time" in run else t[-1]
+    return float(f"{np.diff(np.append(t, end)).max():.4g}")
+
+
+def at_the_cap(run, breaks):
+    """(the breaks a floe made at a step whose solve reached its cap, handed an island over there or left one capped;
+    the breaks of any kind at such a step; the share of all the run's steps that are such), from /diagnostics (per
+    step, as /load/time); None without them. A floe's push that breaks the sheet is the solve's answer: where that
+    stopped short of its tolerance, the break is the cap's as much as the ice's."""
+    if not ("/diagnostics/solver_capped" in run and "/diagnostics/handovers" in run and "/load/time" in run):
+        return None
+    t = np.asarray(run["/load/time"], dtype=float)
+    at_cap = (np.asarray(run["/diagnostics/solver_capped"]) > 0) | (np.asarray(run["/diagnostics/handovers"]) > 0)
+    n = min(len(t), len(at_cap))
+    if not n:
+        return None
+    k = np.clip(np.searchsorted(t[:n], np.asarray(breaks["time"], dtype=float) - 1e-9), 0, n - 1)
+    hit = at_cap[:n][k]
+    floe = (breaks["by_floe"] == 1) if "by_floe" in (breaks.dtype.names or ()) else np.zeros(len(k), dtype=bool)
+    return int((hit & floe).sum()), int(hit.sum()), float(f"{at_cap[:n].mean():.4g}")
+
+
 def sheet_record(run):
     """Of a run of level ice cut by closed forms (/sheet/breaks), its breaks' crack distances (x*, m), the
     areas they broke off, how many bore more than OVERLOAD times their breaking load (and of those, how many broke
     off no piece), when they were and the largest such ratio, how many broke below UNDERLOAD times it and the
-    smallest ratio, and the pieces at the run's end (the bodies no split
-    made two of): their count, the quantiles of their areas and of their equivalent diameters sqrt(4 A / pi), and the
-    area-weighted mean diameter; None for any other run. Quantiles, not lists: a tow makes hundreds of pieces and
-    a record stays a few kB."""
+    smallest ratio, how many a floe's push on the edge made (the rest the cone's crushed zone: by_floe), the longest
+    time from a break to the next or to the run's end (a floe's breaks can clear the sheet ahead of the cone, which
+    then meets none for a while), how many fell at a step whose solve reached its cap (at_the_cap), and the pieces at
+    the run's end (the bodies no split made two of): their count, the quantiles of their areas and of their
+    equivalent diameters sqrt(4 A / pi), and the area-weighted mean diameter; None for any other run. Quantiles, not
+    lists: a tow makes hundreds of pieces and a record stays a few kB."""
     if "/sheet/breaks" not in run:
         return None
     b = np.asarray(run["/sheet/breaks"])
@@ -229,6 +259,7 @@ def sheet_record(run):
         return [float(f"{v:.6g}") for v in np.quantile(x, SHEET_QUANTILES)] if len(x) else []
     ratio = b["load"] / b["breaking_load"]
     over = ratio > OVERLOAD
+    cap = at_the_cap(run, b)
     return {"breaks": int(len(b)), "crack_distance_m": q(b["crack_distance"]) if len(b) else [],
             "overloaded": int(over.sum()),
             "overloaded_no_piece": int((over & (b["pieces"] == 0)).sum()),
@@ -236,6 +267,9 @@ def sheet_record(run):
             "overload_times_s": [float(f"{v:.6g}") for v in b["time"][over]],
             "underloaded": int((ratio < UNDERLOAD).sum()),
             "smallest_load_ratio": float(f"{ratio.min():.6g}") if len(b) else None, "underload": UNDERLOAD,
+            "by_floe": int((b["by_floe"] == 1).sum()) if "by_floe" in (b.dtype.names or ()) else None,
+            "longest_without_break_s": longest_without_break(run, b),
+            "at_cap": dict(zip(("by_floe", "breaks", "steps"), cap)) if cap else None,
             "broken_area_m2": float(f"{b['broken_area'].sum():.6g}") if len(b) else 0.0,
             "crushed_area_m2": float(f"{b['crushed_area'].sum():.6g}") if len(b) else 0.0,
             "pieces": int(len(a)), "piece_area_m2": q(a), "piece_diameter_m": q(d),
