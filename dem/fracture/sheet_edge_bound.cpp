@@ -89,26 +89,30 @@ std::optional<double> SheetEdgeBound::cap(const btManifoldPoint& point) const {
 }
 
 std::vector<int> SheetEdgeBound::floes_at_bound() const {
-  // a floe gave way where its patch bore its bound in the solve: where tighten held the patch's sum (a point's cap
-  // lowered to its share, and the point at it: the passes leave the sum at the bound to a few tenths of a percent, from
-  // either side, as the friction shifts), or where the sum of the answer kept is at the bound. Not where a point is
-  // at its first cap (the whole h P on its normal) while the patch's sum is below: a piece pressing the edge down at
-  // one point and lifting it at another bends it by the difference (in the crushing tows, a floe whose one point was at
-  // its first cap broke the sheet at 0.28 of its patch's load)
-  std::map<int, std::pair<double, double>> push;  // floe -> (sum of sign J_y, h P), N s
-  std::vector<int> out;
+  // a floe gave way where its patch's push in the answer kept is at its bound: to ContactSolver::kAtBound, or where
+  // tighten held the patch (lowered its points' caps to their shares) to kPatchAtBound, the passes' slack. Not where
+  // one of its points sits at a cap while the sum is below. At its first cap (the whole h P on its normal), a piece
+  // pressing the edge down at one point and lifting it at another bends it by the difference (in the crushing tows,
+  // such a floe broke the sheet at 0.28 of its patch's load); at a cap tighten lowered to its share, the next solve may
+  // move the push to the patch's other points or turn its friction against it (a floe pressing the edge's face
+  // sideways broke the sheet at 0.003 of its load, its one point with an impulse at its lowered cap; a cap lowered to
+  // nothing, its point's normal impulse none at the pass, is met by no impulse at all)
+  struct Push {
+    double sum = 0;     // N s, of sign J_y over the patch's points
+    double bound = 0;   // N s, h P
+    bool held = false;  // a point's cap lowered by tighten
+  };
+  std::map<int, Push> push;  // by floe
   for (const auto& [point, bound] : caps_) {
-    auto& [sum, patch_bound] = push[bound.floe];
-    sum += bound.sign * double(contact_impulse(*point).y());
-    patch_bound = bound.patch_bound;
-    if (bound.lowered && point->m_appliedImpulse >= (1.0 - ContactSolver::kAtBound) * bound.cap)
-      out.push_back(bound.floe);
+    Push& p = push[bound.floe];
+    p.sum += bound.sign * double(contact_impulse(*point).y());
+    p.bound = bound.patch_bound;
+    p.held = p.held || bound.lowered;
   }
+  std::vector<int> out;
   for (const auto& [floe, p] : push)
-    if (std::abs(p.first) >= (1.0 - ContactSolver::kAtBound) * p.second) out.push_back(floe);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+    if (std::abs(p.sum) >= (1.0 - (p.held ? kPatchAtBound : ContactSolver::kAtBound)) * p.bound) out.push_back(floe);
+  return out;  // in increasing order: a std::map's keys
 }
 
 }  // namespace icedem

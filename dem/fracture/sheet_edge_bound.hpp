@@ -19,9 +19,10 @@
 // the friction's part of its push not held), each of its points' normal impulses is bounded by its share of h P (its
 // impulse times h P over the sum, tighten), which bounds its friction too, and the island is solved again from that
 // answer (dem/world/contact_bound.hpp). A floe whose patch's push reached its bound breaks the sheet at its patch after
-// the step (floes_at_bound; not a floe whose point is at its first cap while the patch's sum is below), even where the
-// patch the forces make (its centre their resultant's) plans a higher load than the one the points made before the
-// solve (at a corner, whose opening angle depends on the centre): the edge gave way, so it broke.
+// the step (floes_at_bound: its sum at h P, to kPatchAtBound where tighten held it; not a floe one of whose points is
+// at a cap while the patch's sum is below), even where the patch the forces make (its centre their resultant's) plans
+// a higher load than the one the points made before the solve (at a corner, whose opening angle depends on the
+// centre): the edge gave way, so it broke.
 #pragma once
 
 #include <unordered_map>
@@ -34,6 +35,12 @@
 class btCollisionObject;
 
 namespace icedem {
+
+/// How near its bound (relative) the push of a floe's patch that tighten held must be to have given way (one it did not
+/// hold: ContactSolver::kAtBound, the solve's own): the passes that hold a patch leave its sum within about 1 % of the
+/// bound (each cuts the excess about by half where the face's points partly stick and take up what the others shed:
+/// 0.9 % above after the solver's eight solves, tests/physics/test_sheet_edge_bound.cpp).
+constexpr double kPatchAtBound = 0.02;
 
 class SheetEdgeBound : public ContactBound {
  public:
@@ -48,8 +55,8 @@ class SheetEdgeBound : public ContactBound {
   bool tighten(const std::vector<BoundedImpulse>& impulses) override;
 
   /// The floes (their place in World::floes()) whose patch's push on the edge reached its bound in the step just
-  /// solved (held there by tighten, or its |sum of J_y| at h P), in increasing order. Call before the world changes (a
-  /// cut removes prisms, and their contact points).
+  /// solved (its |sum of J_y| at h P; to kPatchAtBound where tighten held it), in increasing order. Call before the
+  /// world changes (a cut removes prisms, and their contact points).
   std::vector<int> floes_at_bound() const;
 
  private:

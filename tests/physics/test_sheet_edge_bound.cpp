@@ -187,7 +187,8 @@ TEST(SheetEdgeBound, FrictionOnTheEdgesFaceIsHeldAtMostAtTheBreakingLoad) {
 // point's own cap (h P, the whole on its normal), but the edge bears the difference: lifted by 0.7 of it, the patch
 // bears 0.3 h P and did not give way; lifted by nothing, it bears h P and did. A piece pressing down at two points,
 // whose caps the passes lowered to their shares, gave way at them though friction leaves the sum 0.5 % below h P
-// (the passes leave a held patch's sum a few tenths of a percent to either side of its bound)
+// (the passes leave a held patch's sum within kPatchAtBound of its bound); but where the next solve leaves the other
+// point nothing, or a point's cap was lowered to nothing, a point at its lowered cap is not the patch at its bound
 TEST(SheetEdgeBound, AFloeIsAtItsBoundWhereItsPatchsPushIs) {
   const double h = kDt;
   btCollisionObject prism, floe;
@@ -233,6 +234,21 @@ TEST(SheetEdgeBound, AFloeIsAtItsBoundWhereItsPatchsPushIs) {
   m.getContactPoint(1).m_lateralFrictionDir1 = btVector3(0, 1, 0);  // friction lifting it by 0.5 % of h P
   m.getContactPoint(1).m_appliedImpulseLateral1 = btScalar(0.005 * bound_impulse);
   EXPECT_EQ(bound.floes_at_bound(), std::vector<int>{0}) << "held at its bound by the passes";
+  // the next solve left the second point nothing: the first at its lowered cap, the patch at half its bound
+  m.getContactPoint(1).m_appliedImpulseLateral1 = 0;
+  m.getContactPoint(1).m_appliedImpulse = 0;
+  EXPECT_TRUE(bound.floes_at_bound().empty()) << "one point at its lowered cap, the patch at half its bound";
+
+  // a point whose normal impulse was none at the pass has its cap lowered to nothing, and no impulse meets it: the
+  // patch bears what its other point does (a floe on the edge's face broke the sheet at 0.003 of its load so)
+  prepare(-1.0);
+  answer = {{&m.getContactPoint(0), 2 * bound_impulse, btVector3(0, btScalar(-2 * bound_impulse), 0)},
+            {&m.getContactPoint(1), 0.0, btVector3(0, 0, 0)}};
+  ASSERT_TRUE(bound.tighten(answer)) << "the patch at twice its bound";
+  ASSERT_EQ(*bound.cap(m.getContactPoint(1)), 0.0) << "the second point's share: nothing";
+  m.getContactPoint(0).m_appliedImpulse = btScalar(0.003 * bound_impulse);
+  m.getContactPoint(1).m_appliedImpulse = 0;
+  EXPECT_TRUE(bound.floes_at_bound().empty()) << "a point at a cap of nothing, the patch at 0.003 of its bound";
 }
 
 // A contact method that cannot take the bound is refused at the key, naming those that can
