@@ -282,7 +282,8 @@ with tempfile.TemporaryDirectory() as tmp:
           and rows[3].startswith("| mu02_crushing | 0.2 | 0.01 | siconos | 1e-06 | 1000 | ipm | 100 | 60 (60 %) | "
                                  "15 (0.50) |")
           and rows[4].startswith("| mu02_crushing | 0.2 | 0.02 | siconos | 1e-06 | 5000 | ipm |"),
-          f"a row per rung: step, merit, tolerance, cap, hand-over, breaks by floes, below their load, the loads: {rows}")
+          f"a row per rung: step, merit, tolerance, cap, hand-over, breaks by floes, below their load, the loads: "
+          f"{rows}")
     told = [l for l in lines if l.startswith("The default solve against the tightest at its step, merit, cap and ")]
     check(len(told) == 1 and "from siconos 0.001 to siconos 1e-05 at 0.02 s, the breaks by floes go from 2 of 100 "
           "to 40 of 100" in told[0] and "from 2.5 s to 12.0 s" in told[0] and "(-10.0 %, one start each)" in told[0]

@@ -19,8 +19,8 @@ law, --step the crushing tows at a halved step and --solve them solved tighter, 
 scenario's name (studies/level_ice_against.py), all of them also in 10 s blocks (studies/level_ice_blocks.py),
 --solve-ladder the crushing tows' first 45 s over a ladder of solves, who breaks the sheet on each rung
 (studies/level_ice_solve_ladder.py), and --thickness-speed the tows over ice thickness and speed with their
-figure, written beside --report (studies/level_ice_thickness_speed.py); and the page says which model of level ice, the lattice or the sheet cut
-by closed forms, lies closer to ISO 19906, criterion by criterion."""
+figure, written beside --report (studies/level_ice_thickness_speed.py); and the page says which model of level ice,
+the lattice or the sheet cut by closed forms, lies closer to ISO 19906, criterion by criterion."""
 import os
 import tomllib
 
