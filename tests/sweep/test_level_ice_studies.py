@@ -274,6 +274,10 @@ with tempfile.TemporaryDirectory() as tmp:
                             at_cap={"by_floe": floes // 2, "breaks": floes, "steps": 0.01 if tol == 1e-3 else 0.5})
         return rec
     ladder.agg.load_record = rung
+    execute.status = lambda run, out: execute.Status(run, "pending")
+    check("No finished run yet." in ladder.section(files["ladder"], tmp, design),
+          "no finished rung: the section says so")
+    execute.status = lambda run, out: execute.Status(run, "done")
     lines = ladder.section(files["ladder"], tmp, design)
     rows = [l for l in lines if l.startswith("| mu02_crushing |")]
     check(len(rows) == 5 and rows[0] == "| mu02_crushing | 0.2 | 0.02 | siconos | 0.001 | 1000 | ipm | 100 | 2 (2 %) | "
