@@ -217,11 +217,12 @@ def longest_without_break(run, breaks):
     return float(f"{np.diff(np.append(t, end)).max():.4g}")
 
 
-def at_the_cap(run, breaks):
-    """(the breaks a floe made at a step whose solve reached its cap, handed an island over there or left one capped;
-    the breaks of any kind at such a step; the share of all the run's steps that are such), from /diagnostics (per
-    step, as /load/time); None without them. A floe's push that breaks the sheet is the solve's answer: where that
-    stopped short of its tolerance, the break is the cap's as much as the ice's."""
+def at_the_cap(run, breaks, by_floe):
+    """(the breaks a floe made (`by_floe`: a mask of `breaks`, or None where the run does not say) at a step whose
+    solve reached its cap, handed an island over there or left one capped; the breaks of any kind at such a step; the
+    share of all the run's steps that are such), from /diagnostics (per step, as /load/time); None without them. A
+    floe's push that breaks the sheet is the solve's answer: where that stopped short of its tolerance, the break is
+    the cap's as much as the ice's."""
     if not ("/diagnostics/solver_capped" in run and "/diagnostics/handovers" in run and "/load/time" in run):
         return None
     t = np.asarray(run["/load/time"], dtype=float)
@@ -231,8 +232,7 @@ def at_the_cap(run, breaks):
         return None
     k = np.clip(np.searchsorted(t[:n], np.asarray(breaks["time"], dtype=float) - 1e-9), 0, n - 1)
     hit = at_cap[:n][k]
-    floe = (breaks["by_floe"] == 1) if "by_floe" in (breaks.dtype.names or ()) else np.zeros(len(k), dtype=bool)
-    return int((hit & floe).sum()), int(hit.sum()), float(f"{at_cap[:n].mean():.4g}")
+    return (int((hit & by_floe).sum()) if by_floe is not None else 0), int(hit.sum()), float(f"{at_cap[:n].mean():.4g}")
 
 
 def sheet_record(run):
@@ -259,7 +259,9 @@ def sheet_record(run):
         return [float(f"{v:.6g}") for v in np.quantile(x, SHEET_QUANTILES)] if len(x) else []
     ratio = b["load"] / b["breaking_load"]
     over = ratio > OVERLOAD
-    cap = at_the_cap(run, b)
+    # the breaks a floe's push made (by_floe 1; 0: the hull's crushed zone), None for a run that does not say
+    by_floe = (b["by_floe"] == 1) if "by_floe" in (b.dtype.names or ()) else None
+    cap = at_the_cap(run, b, by_floe)
     return {"breaks": int(len(b)), "crack_distance_m": q(b["crack_distance"]) if len(b) else [],
             "overloaded": int(over.sum()),
             "overloaded_no_piece": int((over & (b["pieces"] == 0)).sum()),
@@ -267,7 +269,7 @@ def sheet_record(run):
             "overload_times_s": [float(f"{v:.6g}") for v in b["time"][over]],
             "underloaded": int((ratio < UNDERLOAD).sum()),
             "smallest_load_ratio": float(f"{ratio.min():.6g}") if len(b) else None, "underload": UNDERLOAD,
-            "by_floe": int((b["by_floe"] == 1).sum()) if "by_floe" in (b.dtype.names or ()) else None,
+            "by_floe": int(by_floe.sum()) if by_floe is not None else None,
             "longest_without_break_s": longest_without_break(run, b),
             "at_cap": dict(zip(("by_floe", "breaks", "steps"), cap)) if cap else None,
             "broken_area_m2": float(f"{b['broken_area'].sum():.6g}") if len(b) else 0.0,
