@@ -328,10 +328,12 @@ std::vector<KeySpec> make_keys() {
                      "a nominal contact area that grows with the overlap (Daley's pressure-area), so that an "
                      "impact lasts a finite time (dem/contact/crushing.hpp; needs solver.method = \"apgd\", "
                      "\"newton\" or \"pgs_cone\")"));
-  k.push_back(choice("contact.crushing_contacts", "structure", {"structure", "all"},
+  k.push_back(choice("contact.crushing_contacts", "structure", {"structure", "structure_and_sheet", "all"},
                      "contact.model = \"crushing\": which contacts of ice crush: \"structure\", the ice "
-                     "against the structure, those between floes and with the boundaries rigid; \"all\", "
-                     "every contact of ice. In a locked pack the contacts between floes crush on and their "
+                     "against the structure, those between floes and with the boundaries rigid; "
+                     "\"structure_and_sheet\", also a floe against the held level sheet's edge (ice.cover = "
+                     "\"level\", fracture.mode = \"analytic\"; docs/model/crushing.md, \"Against the level "
+                     "sheet\"); \"all\", every contact of ice. In a locked pack the contacts between floes crush on and their "
                      "overlap passes the ice's thickness, where it no longer stands for crushed ice: the "
                      "floes pass through each other (docs/model/crushing.md, \"Between floes\")"));
   k.push_back(real("contact.pressure_area_exponent", "-", 0.0, -0.9, 0.0,

@@ -115,8 +115,9 @@ struct LayoutSettings {
 
 // How the ice's contacts bear load (dem/contact/crushing.hpp)
 enum class ContactModel { kRigid, kCrushing };
-// which contacts of ice crush with ContactModel::kCrushing: those with the structure, or every one
-enum class CrushingContacts { kStructure, kAll };
+// which contacts of ice crush with ContactModel::kCrushing: those with the structure, those with the structure and
+// the held level sheet (ice.cover = "level", fracture.mode = "analytic"), or every one
+enum class CrushingContacts { kStructure, kStructureAndSheet, kAll };
 struct ContactSettings {
   ContactModel model;
   double pressure_area_exponent;  // -, ex in p = sigma_c (A / h^2)^ex

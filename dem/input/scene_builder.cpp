@@ -299,7 +299,10 @@ Scene make_scene(const Scenario& sc) {
                                         {{"rigid", ContactModel::kRigid}, {"crushing", ContactModel::kCrushing}});
   s.contact.pressure_area_exponent = real(sc, "contact.pressure_area_exponent");
   s.contact.crushing_contacts = choice<CrushingContacts>(
-      sc, "contact.crushing_contacts", {{"structure", CrushingContacts::kStructure}, {"all", CrushingContacts::kAll}});
+      sc, "contact.crushing_contacts",
+      {{"structure", CrushingContacts::kStructure},
+       {"structure_and_sheet", CrushingContacts::kStructureAndSheet},
+       {"all", CrushingContacts::kAll}});
   if (s.contact.model == ContactModel::kCrushing && s.ice.contact_crushing)
     fail_key(sc, blamed(sc, {"ice.contact_crushing", "contact.model"}),
              "ice.contact_crushing (a fixed cap) and contact.model = \"crushing\" (the crushing law) are two "
@@ -531,6 +534,18 @@ Scene make_scene(const Scenario& sc) {
   if (s.stats.window_end_travel > 0 && s.stats.window_end_travel <= s.stats.window_start_travel)
     fail_key(sc, "stats.window_end_travel", "must be beyond stats.window_start_travel (or 0 for the end of the run)");
   if (s.ice.cover == IceCover::kLevel) check_level_ice(sc, s);
+  if (s.contact.crushing_contacts == CrushingContacts::kStructureAndSheet) {
+    // what it adds is the held level sheet's edge: elsewhere it would be "structure" under another name
+    if (s.contact.model != ContactModel::kCrushing)
+      fail_key(sc, blamed(sc, {"contact.crushing_contacts", "contact.model"}),
+               "contact.crushing_contacts = \"structure_and_sheet\" says which contacts the crushing law acts on: it "
+               "needs contact.model = \"crushing\"");
+    if (s.ice.cover != IceCover::kLevel || s.fracture.mode != FractureMode::kAnalytic)
+      fail_key(sc, blamed(sc, {"contact.crushing_contacts", "ice.cover", "fracture.mode"}),
+               "contact.crushing_contacts = \"structure_and_sheet\" crushes the floes against the held level sheet "
+               "of ice.cover = \"level\" with fracture.mode = \"analytic\", which this scenario does not have: use "
+               "\"structure\" (or \"all\")");
+  }
   if (s.validation.kind == ValidationKind::kNone) check_structure_in_tank(sc, s);
   check_limits(sc, s);
   return s;

@@ -22,7 +22,10 @@ WorldSettings world_settings(const Scene& scene) {
   if (scene.contact.model == ContactModel::kCrushing)
     s.contact_law.crushing = CrushingLaw{scene.ice.compressive_strength, scene.contact.pressure_area_exponent,
                                          scene.ice.thickness * scene.ice.thickness};
-  s.contact_law.crushing_everywhere = scene.contact.crushing_contacts == CrushingContacts::kAll;
+  s.contact_law.crushing_scope = scene.contact.crushing_contacts == CrushingContacts::kAll ? CrushingScope::kAllIce
+                                 : scene.contact.crushing_contacts == CrushingContacts::kStructureAndSheet
+                                     ? CrushingScope::kStructureAndHeldIce
+                                     : CrushingScope::kStructure;
   // the sweep-and-prune broadphase needs the world's bounds: the tank with a margin
   const ChannelSettings& c = scene.channel;
   const double x0 = std::min(scene.structure.start_x, c.start_x) - 10.0;

@@ -125,7 +125,7 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int numMan
     // ice stays: the position pass pushes out only the overlap beyond it (crushing_contact.hpp)
     if (law_.crushing) {
       normal_caps_.resize(end, std::numeric_limits<double>::infinity());
-      if (const auto cap = crushing_cap(manifold, *law_.crushing, info.m_timeStep, !law_.crushing_everywhere)) {
+      if (const auto cap = crushing_cap(manifold, *law_.crushing, info.m_timeStep, law_.crushing_scope)) {
         const double crushed = crushed_.depth(manifold);
         for (int r = first; r < end; ++r) {
           normal_caps_[r] = *cap;

@@ -96,9 +96,8 @@ class ProblemObserver {
 struct ContactLaw {
   double crushing_force = 0.0;          // N, largest normal force of one contact pair (ice.contact_crushing); 0: none
   std::optional<CrushingLaw> crushing;  // contact.model = "crushing" (dem/contact/crushing.hpp); none: rigid
-  // the crushing law on every contact of ice (contact.crushing_contacts = "all"); else on those
-  // with the structure only, the others rigid
-  bool crushing_everywhere = false;
+  // which contacts the crushing law acts on (contact.crushing_contacts), the others rigid
+  CrushingScope crushing_scope = CrushingScope::kStructure;
   StaticFriction static_friction;       // static coefficients of sticking contacts (none by default)
 };
 

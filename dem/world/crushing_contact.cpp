@@ -136,12 +136,14 @@ const CrushedIce::Memory* CrushedIce::remembered(const btPersistentManifold* man
 void CrushedIce::remember(const btPersistentManifold* manifold, const Memory& memory) { current_[manifold] = memory; }
 
 std::optional<double> crushing_cap(const btPersistentManifold& manifold, const CrushingLaw& law, double h,
-                                   bool structure_only) {
+                                   CrushingScope scope) {
   const btCollisionObject& a = *manifold.getBody0();
   const btCollisionObject& b = *manifold.getBody1();
   const int n = manifold.getNumContacts();
   if (n == 0 || (!is_ice(a) && !is_ice(b))) return std::nullopt;
-  if (structure_only && a.getUserIndex() != kStructure && b.getUserIndex() != kStructure) return std::nullopt;
+  const auto either = [&](Material m) { return a.getUserIndex() == m || b.getUserIndex() == m; };
+  if (scope == CrushingScope::kStructure && !either(kStructure)) return std::nullopt;
+  if (scope == CrushingScope::kStructureAndHeldIce && !either(kStructure) && !either(kHeldIce)) return std::nullopt;
   const btManifoldPoint& p = deepest_point(manifold);
   // a point not yet touching (within the margins) has no overlap and carries nothing
   const double area = p.getDistance() < 0 ? nominal_area(a, b, p) : 0.0;

@@ -68,10 +68,17 @@ class CrushedIce {
   std::unordered_map<const btPersistentManifold*, Memory> previous_, current_;
 };
 
+/// Which contacts of a floe crush (contact.crushing_contacts); the rest are rigid.
+enum class CrushingScope {
+  kStructure,             // with the structure ("structure")
+  kStructureAndHeldIce,   // with the structure and the held level sheet's edge ("structure_and_sheet")
+  kAllIce,                // every contact of ice, between floes too ("all")
+};
+
 /// The largest normal impulse (N s) of each of the manifold's points over the step `h` (s), or
-/// none (a rigid contact) if neither body is ice (world.hpp's Material kIce in the user index),
-/// if `structure_only` and neither is the structure (kStructure), or if the manifold has no point.
+/// none (a rigid contact) if neither body is a floe (world.hpp's Material kIce in the user index),
+/// if the other body is not one `scope` crushes against, or if the manifold has no point.
 std::optional<double> crushing_cap(const btPersistentManifold& manifold, const CrushingLaw& law, double h,
-                                   bool structure_only);
+                                   CrushingScope scope);
 
 }  // namespace icedem

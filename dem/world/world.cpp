@@ -198,7 +198,7 @@ int World::add_static_prism(const Polygon& outline, double bottom, double thickn
   auto body = std::make_unique<btRigidBody>(ci);
   body->setFriction(friction);
   body->setRestitution(0);
-  body->setUserIndex(kBoundary);
+  body->setUserIndex(kHeldIce);
   body->setUserIndex2(-2 - fixed_boxes_++);  // in the canonical order of fixed bodies (add_static_box)
   const int index = static_cast<int>(bodies_.size());
   body->setUserIndex3(index);

@@ -47,8 +47,10 @@ inline constexpr int kSweepAndPruneBodies = 65535;
 void require_sweep_and_prune_room(std::size_t bodies);
 
 /// What a collision object is made of; stored in btCollisionObject::userIndex
-/// and read by the friction rule.
-enum Material : int { kIce = 1, kStructure = 2, kBoundary = 3 };
+/// and read by the friction rule and the crushing law (crushing_contact.hpp). kHeldIce: a fixed body of ice
+/// (the analytic level sheet's prisms), a boundary to the floes whose edge crushes where
+/// contact.crushing_contacts says so.
+enum Material : int { kIce = 1, kStructure = 2, kBoundary = 3, kHeldIce = 4 };
 
 /// One floating rigid body: a whole rigid floe, or one element of a breakable floe.
 struct FloeBody {
@@ -149,7 +151,7 @@ class World {
   btRigidBody* add_static_box(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extents,
                               Material material, double friction);
 
-  /// Add a fixed prism of ice (kBoundary, as the mother ice): the convex `outline` (x, z; m, tank frame) from
+  /// Add a fixed prism of ice (kHeldIce): the convex `outline` (x, z; m, tank frame) from
   /// height `bottom` up by `thickness`, with `friction` against ice; a convex part of the analytic level sheet
   /// (dem/fracture/analytic_sheet.hpp). Returns its index in bodies().
   int add_static_prism(const Polygon& outline, double bottom, double thickness, double friction);

@@ -29,6 +29,7 @@
 using icedem::ContactLaw;
 using icedem::ContactSolver;
 using icedem::CrushingLaw;
+using icedem::CrushingScope;
 using icedem::SolverSettings;
 using namespace icedem::testing;
 
@@ -51,17 +52,17 @@ struct Impact {
 // a square floe of side `side`, its corner along +x, driven at kSpeed along the normal of a fixed
 // 45-degree face at step h; `heave_factor`: its response to a vertical force over its mass's
 // (1: no added mass); crushing or rigid contacts
-// `ice_edge`: the face is instead the straight vertical edge of a fixed floe (ice against ice);
-// `between_floes`: the law there too (contact.crushing_contacts = "all"), else only at the structure
+// `ice_edge`: the face is instead the straight vertical edge of a fixed body of ice, `edge` (kIce: a floe held
+// fixed; kHeldIce: the analytic level sheet's prism); `scope`: the contacts the law acts on (contact.crushing_contacts)
 Impact impact(double side, double h, double heave_factor, bool crushing, bool ice_edge = false,
-              bool between_floes = true) {
+              CrushingScope scope = CrushingScope::kAllIce, icedem::Material edge = icedem::kIce) {
   SolverSettings s = test_solver_settings();
   s.method = "apgd";
   s.merit_tolerance = s.joint_merit_tolerance = s.structure_merit_tolerance = 1e-9;
   s.method_iterations = 20000;
   ContactLaw law;
   if (crushing) law.crushing = CrushingLaw{kStrength, 0.0, kThickness * kThickness};
-  law.crushing_everywhere = between_floes;
+  law.crushing_scope = scope;
   Bench bench(std::make_unique<ContactSolver>(s, law));
   bench.world().setGravity(btVector3(0, 0, 0));
   // the face: a large fixed block whose face through the origin has the normal n (toward -x, up),
@@ -70,7 +71,7 @@ Impact impact(double side, double h, double heave_factor, bool crushing, bool ic
   btTransform block = at(0, 0, 0);
   if (!ice_edge) block.setRotation(btQuaternion(btVector3(0, 0, 1), kBeta));
   block.setOrigin(-n * (ice_edge ? 0.3 : 0.5));
-  btRigidBody* face = ice_edge ? bench.box({0.3, kThickness / 2, 0.3}, block, 0.0, 0.0, icedem::kIce)
+  btRigidBody* face = ice_edge ? bench.box({0.3, kThickness / 2, 0.3}, block, 0.0, 0.0, edge)
                                : bench.box({0.5, 0.5, 0.5}, block, 0.0, 0.0, icedem::kStructure);
   // the floe: its corner 1 mm off the face, on the face's normal through the origin
   const double mass = kIceDensity * side * side * kThickness;
@@ -183,9 +184,34 @@ TEST(CrushingImpactOnIce, ACornerIntoAStraightEdgeCrushesTheCorner) {
 // step, well above the crushing balance of the test above
 TEST(CrushingImpactOnIce, WithCrushingAtTheStructureOnlyFloesMeetRigidly) {
   const Impact rigid = impact(0.6, 0.02, 1.0, false, true);
-  const Impact at_structure = impact(0.6, 0.02, 1.0, true, true, false);
+  const Impact at_structure = impact(0.6, 0.02, 1.0, true, true, CrushingScope::kStructure);
   std::printf("0.6 m floe's corner on a floe's edge at dt: rigid %.2f N, crushing at the structure only %.2f N\n",
               rigid.peak_force, at_structure.peak_force);
   EXPECT_DOUBLE_EQ(at_structure.peak_force, rigid.peak_force);
   EXPECT_GT(rigid.peak_force, 1.5 * 22.81);
+}
+
+// The held level sheet's edge (a fixed prism of kHeldIce, as dem/fracture/analytic_sheet.cpp makes it) crushes a
+// floe's corner as a floe's edge does under contact.crushing_contacts = "structure_and_sheet": the balance of the
+// test above (22.8 N for the 0.6 m floe, the corner's section A = 2 h delta tan(45 deg) the same against either edge),
+// within its tolerance at dt/2 and dt/4; under "structure" the sheet's edge meets the floe rigidly, the rigid
+// contact's peak to the bit
+TEST(CrushingImpactOnIce, TheHeldSheetsEdgeCrushesACornerWhereTheSheetIsInTheScope) {
+  const double side = 0.6, m = kIceDensity * side * side * kThickness, k = 2 * kStrength * kThickness;
+  const double balance = kSpeed * std::sqrt(m * k);
+  const auto on_sheet = [&](double h, bool crushing, CrushingScope scope) {
+    return impact(side, h, 1.0, crushing, true, scope, icedem::kHeldIce);
+  };
+  const Impact half = on_sheet(0.01, true, CrushingScope::kStructureAndHeldIce),
+               quarter = on_sheet(0.005, true, CrushingScope::kStructureAndHeldIce);
+  const Impact rigid = on_sheet(0.02, false, CrushingScope::kStructure),
+               structure_only = on_sheet(0.02, true, CrushingScope::kStructure);
+  std::printf("0.6 m floe's corner on the held sheet's edge: balance %.2f N; crushing %.2f / %.2f N at dt/2, dt/4; "
+              "rigid %.2f N, crushing at the structure only %.2f N at dt\n",
+              balance, half.peak_force, quarter.peak_force, rigid.peak_force, structure_only.peak_force);
+  EXPECT_NEAR(half.peak_force, balance, 0.10 * balance);
+  EXPECT_NEAR(quarter.peak_force, balance, 0.10 * balance);
+  EXPECT_LT(std::abs(half.rebound), 1e-3 * kSpeed) << "a crushed contact does not push the floe back";
+  EXPECT_DOUBLE_EQ(structure_only.peak_force, rigid.peak_force);
+  EXPECT_GT(rigid.peak_force, 1.5 * balance);
 }

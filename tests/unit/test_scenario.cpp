@@ -170,6 +170,20 @@ TEST(Scenario, TheCrushingLawIsRefusedWhereItCannotBeSolvedOrDoublesAnotherModel
   EXPECT_NE(exponent.find("contact.pressure_area_exponent"), std::string::npos) << exponent;
 }
 
+TEST(Scenario, CrushingAgainstTheSheetIsRefusedWithoutTheLawOrTheSheet) {
+  // "structure_and_sheet" adds the held level sheet's edge to the structure: without the crushing law it says
+  // nothing, and without the analytic level sheet it would be "structure" under another name
+  const std::string rigid = error_of("[contact]\ncrushing_contacts = \"structure_and_sheet\"\n");
+  EXPECT_NE(rigid.find("test.toml:2"), std::string::npos) << rigid;
+  EXPECT_NE(rigid.find("contact.crushing_contacts"), std::string::npos) << rigid;
+  EXPECT_NE(rigid.find("needs contact.model = \"crushing\""), std::string::npos) << rigid;
+  const std::string floes =
+      error_of("[contact]\nmodel = \"crushing\"\ncrushing_contacts = \"structure_and_sheet\"\n");
+  EXPECT_NE(floes.find("test.toml:3"), std::string::npos) << floes;
+  EXPECT_NE(floes.find("fracture.mode = \"analytic\""), std::string::npos) << floes;
+  EXPECT_NE(floes.find("use \"structure\""), std::string::npos) << floes;
+}
+
 TEST(Scenario, AFloeOrPlateSmallerThanOneElementIsRefusedAtTheKey) {
   // 1e-300 m / 0.2 m rounds to 0, a "whole number" of elements: zero elements is none
   // (found by scripts/fuzz: the plate case passed to the lattice and failed there unnamed)
