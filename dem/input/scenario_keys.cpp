@@ -333,9 +333,9 @@ std::vector<KeySpec> make_keys() {
                      "against the structure, those between floes and with the boundaries rigid; "
                      "\"structure_and_sheet\", also a floe against the held level sheet's edge (ice.cover = "
                      "\"level\", fracture.mode = \"analytic\"; docs/model/crushing.md, \"Against the level "
-                     "sheet\"); \"all\", every contact of ice. In a locked pack the contacts between floes crush on and their "
-                     "overlap passes the ice's thickness, where it no longer stands for crushed ice: the "
-                     "floes pass through each other (docs/model/crushing.md, \"Between floes\")"));
+                     "sheet\"); \"all\", every contact of ice. In a locked pack the contacts between floes "
+                     "crush on and their overlap passes the ice's thickness, where it no longer stands for crushed "
+                     "ice: the floes pass through each other (docs/model/crushing.md, \"Between floes\")"));
   k.push_back(real("contact.pressure_area_exponent", "-", 0.0, -0.9, 0.0,
                    "contact.model = \"crushing\": ex in the crushing pressure sigma_c (A / h^2)^ex over the "
                    "nominal contact area A (Daley's pressure-area relation; 0: a constant pressure, the "

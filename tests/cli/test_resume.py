@@ -12,8 +12,9 @@ SIGKILL once it has written its checkpoint at t = 5, 15 and 25 s, resumed with
 during a checkpoint write is reproduced by what it leaves on the disk: a torn temporary
 checkpoint and a torn output file. Then a run of breakable floes killed between two groups
 of breaks, one of rigid floes that split (their pieces are bodies made mid-run), one of level ice cut by
-closed forms, a moored structure, one under the crushing contact law and floes left behind. `icedem info`
-and refusals are checked on the way, and checkpoints changed or damaged after they were written are refused.
+closed forms (and crushing against its edge), a moored structure, one under the crushing contact law and floes
+left behind. `icedem info` and refusals are checked on the way, and checkpoints changed or damaged after they were
+written are refused.
 """
 import json
 import os
@@ -210,6 +211,18 @@ with h5py.File("sheet_full.h5", "r") as f:
           f"{outlines} outlines)")
 killed_and_resumed("sheet_killed.h5", 8, sheet_scenario, sheet_options, sheet_full, "the analytic sheet's run",
                    "the sheet's breaks")
+# ... under the crushing law at the structure and the sheet's edge (contact.crushing_contacts = "structure_and_sheet"):
+# the crushed depths of the floes' contacts with the sheet's prisms are kept across checkpoints as the cone's are
+sheet_crushing = sheet_options + ["--set", 'contact.model="crushing"',
+                                  "--set", 'contact.crushing_contacts="structure_and_sheet"']
+p = run("run", sheet_scenario, "-q", "-o", "sheet_crushing_full.h5", *sheet_crushing)
+sheet_crushing_full = contents("sheet_crushing_full.h5")
+p = run("run", sheet_scenario, "-q", "-o", "sheet_crushing_no_checkpoints.h5", *sheet_crushing,
+        "--set", "output.checkpoint_interval=0")
+check(contents("sheet_crushing_no_checkpoints.h5") == sheet_crushing_full,
+      "a run crushing against the sheet's edge with checkpoints is bit for bit one without")
+killed_and_resumed("sheet_crushing_killed.h5", 8, sheet_scenario, sheet_crushing, sheet_crushing_full,
+                   "the analytic sheet's run crushing against its edge", "the sheet's breaks")
 
 # a moored structure (structure.motion = "moored"): its pose, velocities, last ice impulse and the
 # history of its mooring's load are in the checkpoint; killed in the ice after the checkpoint at 25 s,

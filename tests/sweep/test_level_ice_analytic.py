@@ -105,10 +105,16 @@ check(cap == {"by_floe": 1, "breaks": 2, "steps": float(f"{3 / 7:.4g}")},
 with_sheet = {"summary": {}, "sheet": dict(sheet, quantiles=[0.25, 0.5, 0.75], crack_distance_m=[0.1, 0.2, 0.3],
                                            piece_diameter_m=[0.1, 0.2, 0.3], area_weighted_diameter_m=0.5)}
 other = dict(with_sheet, sheet=dict(with_sheet["sheet"], overloaded=4, overloaded_no_piece=0, largest_overload=3.0,
-                                    underloaded=0, smallest_load_ratio=0.995))
+                                    underloaded=0, smallest_load_ratio=0.995, by_floe=4))
 rows = [l for l in la.sheet_table({("mu02", 0.0): {5.2: (None, with_sheet), 5.201: (None, other)}}, (0.4, 0.033))
         if l.startswith("| mu02 |")]
-check(len(rows) == 1 and rows[0].endswith("| 3.0 (0.5) | 30.0 | 0.5 (0.50) |"),
-      f"the sheet table: overloaded breaks a tow (no piece) over the starts, the largest ratio of them; those below "
-      f"their load, the smallest ratio: {rows}")
+check(len(rows) == 1 and rows[0].endswith("| 3.0 (0.5) | 30.0 | 0.5 (0.50) |")
+      and rows[0].startswith("| mu02 | 0 | 2 | ") and rows[0].split(" | ")[4] == "3",
+      f"the sheet table: breaks by floes a tow over the starts (2 and 4); overloaded breaks a tow (no piece) over the "
+      f"starts, the largest ratio of them; those below their load, the smallest ratio: {rows}")
+old = dict(other, sheet={k: v for k, v in other["sheet"].items() if k != "by_floe"})
+rows = [l for l in la.sheet_table({("mu02", 0.0): {5.2: (None, with_sheet), 5.201: (None, old)}}, (0.4, 0.033))
+        if l.startswith("| mu02 |")]
+check(len(rows) == 1 and rows[0].split(" | ")[4] == "n/a",
+      f"a start whose record has no breaks by floes: n/a, not the other start's alone: {rows}")
 finish()

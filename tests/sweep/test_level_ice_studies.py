@@ -77,6 +77,8 @@ file = "scenarios/level_ice/level_ice_analytic.toml"
 "impulse 1e-6" = ["solver.merit=\\"impulse\\"", "solver.merit_tolerance=1e-6"]
 "dt 0.01 siconos 1e-6" = ["time.dt=0.01", "solver.merit_tolerance=1e-6"]
 "siconos 1e-6 cap 5000" = ["solver.merit_tolerance=1e-6", "solver.method_iterations=5000"]
+"sheet crushing, siconos 1e-3" = ["contact.crushing_contacts=\\"structure_and_sheet\\""]
+"sheet crushing, siconos 1e-5" = ["contact.crushing_contacts=\\"structure_and_sheet\\"", "solver.merit_tolerance=1e-5"]
 """
 MEANS = {5.2: 20.0, 5.201: 22.0, 5.202: 24.0}
 
@@ -261,10 +263,12 @@ with tempfile.TemporaryDirectory() as tmp:
           and ": crushing mean;" in text, f"the ratios within the lattice's spread counted: {text}")
 
     # the ladder: the default breaks by the cone (2 of 100 by floes), each tighter rung by floes more (by the
-    # tolerance's exponent: 1e-5 40, 1e-6 60), its mean 10 % lower and half its window's steps capped
+    # tolerance's exponent: 1e-5 40, 1e-6 60), its mean 10 % lower and half its window's steps capped; with the
+    # sheet's edge crushing too, 1 and 3 of 100
     def rung(run, out):
         tol = float(spec.run_value(run, "solver.merit_tolerance"))
-        floes = {1e-3: 2, 1e-5: 40, 1e-6: 60}[tol]
+        sheet = spec.run_value(run, "contact.crushing_contacts") == "structure_and_sheet"
+        floes = ({1e-3: 1, 1e-5: 3} if sheet else {1e-3: 2, 1e-5: 40, 1e-6: 60})[tol]
         rec = record(30.0 if tol == 1e-3 else 27.0, step=float(spec.run_value(run, "time.dt")),
                      capped=0.01 if tol == 1e-3 else 0.5)
         rec["summary"]["solver"]["iterations_mean"] = 300.0
@@ -280,18 +284,24 @@ with tempfile.TemporaryDirectory() as tmp:
     execute.status = lambda run, out: execute.Status(run, "done")
     lines = ladder.section(files["ladder"], tmp, design)
     rows = [l for l in lines if l.startswith("| mu02_crushing |")]
-    check(len(rows) == 5 and rows[0] == "| mu02_crushing | 0.2 | 0.02 | siconos | 0.001 | 1000 | ipm | 100 | 2 (2 %) | "
-          "0 (0.50) | "
+    check(len(rows) == 7 and rows[0] == "| mu02_crushing | 0.2 | 0.02 | siconos | 0.001 | 1000 | ipm | structure | "
+          "100 | 2 (2 %) | 0 (0.50) | "
           "2.5 | 30.0 | 90.0 | 300.0 | 1.0 % | 1 of 2 | 300 | 0.08 |"
-          and rows[3].startswith("| mu02_crushing | 0.2 | 0.01 | siconos | 1e-06 | 1000 | ipm | 100 | 60 (60 %) | "
-                                 "15 (0.50) |")
-          and rows[4].startswith("| mu02_crushing | 0.2 | 0.02 | siconos | 1e-06 | 5000 | ipm |"),
-          f"a row per rung: step, merit, tolerance, cap, hand-over, breaks by floes, below their load, the loads: "
-          f"{rows}")
-    told = [l for l in lines if l.startswith("The default solve against the tightest at its step, merit, cap and ")]
-    check(len(told) == 1 and "from siconos 0.001 to siconos 1e-05 at 0.02 s, the breaks by floes go from 2 of 100 "
-          "to 40 of 100" in told[0] and "from 2.5 s to 12.0 s" in told[0] and "(-10.0 %, one start each)" in told[0]
-          and "50 % of the tightest's steps reached the solve's cap, and 20 of its 40 breaks by floes" in told[0],
-          f"the tightest at the default's step, merit and cap (not the halved step's 1e-6, nor the impulse merit's, "
-          f"nor the higher cap's): {told}")
+          and rows[3].startswith("| mu02_crushing | 0.2 | 0.01 | siconos | 1e-06 | 1000 | ipm | structure | 100 | "
+                                 "60 (60 %) | 15 (0.50) |")
+          and rows[4].startswith("| mu02_crushing | 0.2 | 0.02 | siconos | 1e-06 | 5000 | ipm | structure |")
+          and rows[6].startswith("| mu02_crushing | 0.2 | 0.02 | siconos | 1e-05 | 1000 | ipm | structure and sheet | "
+                                 "100 | 3 (3 %) |"),
+          f"a row per rung: step, merit, tolerance, cap, hand-over, crushing, breaks by floes, below their load, the "
+          f"loads: {rows}")
+    told = [l for l in lines
+            if l.startswith("The default solve against the tightest at its step, merit, cap, hand-over and crushing: ")]
+    check(len(told) == 1 and "mu02_crushing (mu 0.2): from siconos 0.001 to siconos 1e-05 at 0.02 s, the breaks by "
+          "floes go from 2 of 100 to 40 of 100" in told[0] and "from 2.5 s to 12.0 s" in told[0]
+          and "(-10.0 %, one start each)" in told[0]
+          and "50 % of the tightest's steps reached the solve's cap, and 20 of its 40 breaks by floes" in told[0]
+          and "mu02_crushing (mu 0.2), crushing at structure and sheet: from siconos 0.001 to siconos 1e-05 at 0.02 s, "
+              "the breaks by floes go from 1 of 100 to 3 of 100" in told[0],
+          f"the tightest at the default's step, merit, cap and crushing (not the halved step's 1e-6, nor the impulse "
+          f"merit's, nor the higher cap's; the sheet's crushing against its own default): {told}")
 finish()

@@ -98,8 +98,8 @@ with tempfile.TemporaryDirectory() as d:
           and len([k for k in spans.keys(open(page).read()) if k.startswith("mooring |")]) >= 8,
           f"docs/model/mooring.md's study is what scripts/mooring_stiffness makes from the records {p.stderr[-200:]}")
 # the level tows against ISO 19906 and Ralston (scripts/level_ice_report, from the level-ice sweeps' records, the
-# lattice's and the analytic sheet's with its halved step, crushing law, tighter solve, ladder of solves and thickness
-# and speed
+# lattice's and the analytic sheet's with its halved step, crushing law, tighter solve, crushing against the sheet's
+# edge, ladder of solves and thickness and speed
 # (their runs looked for in an empty directory: the records alone), and the build's `icedem cone-load`):
 # docs/model/level_ice.md whole
 with tempfile.TemporaryDirectory() as d:
@@ -114,6 +114,9 @@ with tempfile.TemporaryDirectory() as d:
                         "--crushing-out", os.path.join(d, "no_runs"),
                         "--solve", os.path.join(ROOT, "sweeps", "studies", "level_ice_analytic_solve.toml"),
                         "--solve-out", os.path.join(d, "no_runs"),
+                        "--sheet-crushing",
+                        os.path.join(ROOT, "sweeps", "studies", "level_ice_analytic_sheet_crushing.toml"),
+                        "--sheet-crushing-out", os.path.join(d, "no_runs"),
                         "--solve-ladder",
                         os.path.join(ROOT, "sweeps", "studies", "level_ice_analytic_solve_ladder.toml"),
                         "--solve-ladder-out", os.path.join(d, "no_runs"),

@@ -2,7 +2,8 @@
 sweep, for docs/model/level_ice.md (scripts/level_ice_report --analytic SWEEP with --step STEP_SWEEP, the step
 halved, sweeps/studies/level_ice_analytic_step.toml; --crushing CRUSHING_SWEEP, the crushing contact law,
 sweeps/studies/level_ice_analytic_crushing.toml; --solve SOLVE_SWEEP, the solve tightened,
-sweeps/studies/level_ice_analytic_solve.toml): per scenario (friction) and criterion, each ensemble's mean
+sweeps/studies/level_ice_analytic_solve.toml; --sheet-crushing SHEET_SWEEP, the floes crushing against the sheet's
+edge too, sweeps/studies/level_ice_analytic_sheet_crushing.toml): per scenario (friction) and criterion, each ensemble's mean
 over its starts, its step and its solve, and the change over the starts both ran.
 
 The tow is chaotic: a start at a halved step, or under another contact law, parts from the same start's tow
@@ -54,13 +55,21 @@ SOLVE = ("### Tightening the solve", "the same tows with their contacts solved t
          "A looser solve lowered these tows' loads (a tow solved to the impulse merit's 1e-3, not kept: why is not "
          "measured; a solve stopped short leaves part of the jam's push to the split impulse's position pass, "
          "which no load reads). The default's loads are converged only where a tighter solve leaves them.")
+SHEET_CRUSHING = ("### Crushing against the sheet's edge",
+                  "the same tows with the floes crushing against the held sheet's edge too (contact.crushing_contacts "
+                  "= \"structure_and_sheet\", docs/model/crushing.md, \"Against the level sheet\"; each against the "
+                  "tows above of its scenario's name)",
+                  "Solved further, the rubble pressed pieces against the sheet's rigid face, and their friction there "
+                  "broke the sheet the more often the tighter the solve (\"Who breaks the sheet, solve by solve\"); "
+                  "the ice's face crushes as the cone's contact does, which bounds that push. Who broke these tows' "
+                  "sheet: \"Where the changed tows' sheet broke\", its column of breaks by floes.")
 
 
 def section(bases, other, other_configs, what, base_of=lambda scenario: scenario):
     """The page's lines: each scenario's tows of the sweep file `other` (its configurations `other_configs`,
     level_ice_analytic.configurations) against the tows without leave_behind of scenario `base_of(name)` among the
-    configurations `bases` (a list, one a sweep, their scenarios' names distinct); `what` is CRUSHING, STEP or
-    SOLVE."""
+    configurations `bases` (a list, one a sweep, their scenarios' names distinct); `what` is CRUSHING, STEP, SOLVE
+    or SHEET_CRUSHING."""
     heading, text, why = what
     L = [heading, "",
          f"The tows above without leave_behind against {text} (`{os.path.relpath(other, spec.ROOT)}`). {why} The "

@@ -153,12 +153,13 @@ def sheet_table(configs, lengths, intro=True):
          f"starts. Below: the breaks a tow at less than {agg.UNDERLOAD:g} of their breaking load, and the smallest "
          "ratio of the starts (a floe the contact solve held at its patch's bound breaks the sheet after the step, "
          "where the patch its forces then make can plan a higher load: docs/model/breakage.md, \"The edge's bound "
-         "in the solve\"; n/a: records made before they were kept).", ""
+         "in the solve\"; n/a: records made before they were kept). By floes: the breaks a tow a floe's push on the "
+         "sheet's edge made, the rest the cone's crushed zone's (n/a: records made before they were kept).", ""
          ] if intro else [""]
-    L += ["| run | leave m | starts | breaks a tow | x* median m | x* / l_c | x* / h | pieces a tow | "
+    L += ["| run | leave m | starts | breaks a tow | by floes a tow | x* median m | x* / l_c | x* / h | pieces a tow | "
           "diameter median m (quartiles) | area-weighted diameter m | its / l_c | overloaded a tow (no piece) | "
           "largest load / breaking load | below a tow (smallest) |",
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for (scenario, leave), members in sorted(configs.items()):
         sheets = [rec["sheet"] for _, rec in members.values() if rec.get("sheet")]
         if not sheets:
@@ -167,8 +168,9 @@ def sheet_table(configs, lengths, intro=True):
         x = np.mean([s["crack_distance_m"][qi] for s in sheets if s["crack_distance_m"]])
         d = [np.mean([s["piece_diameter_m"][qi + k] for s in sheets if s["piece_diameter_m"]]) for k in (-1, 0, 1)]
         w = np.mean([s["area_weighted_diameter_m"] for s in sheets if s.get("area_weighted_diameter_m")])
+        by_floe = [s["by_floe"] for s in sheets if s.get("by_floe") is not None]
         L.append(f"| {scenario} | {leave:g} | {len(sheets)} | {np.mean([s['breaks'] for s in sheets]):.0f} | "
-                 f"{x:.3f} | {fmt(x / lc if lc else None, digits=2)} | {fmt(x / h if h else None, digits=1)} | "
+                 f"{f'{np.mean(by_floe):.0f}' if len(by_floe) == len(sheets) else 'n/a'} | {x:.3f} | {fmt(x / lc if lc else None, digits=2)} | {fmt(x / h if h else None, digits=1)} | "
                  f"{np.mean([s['pieces'] for s in sheets]):.0f} | {d[1]:.3f} ({d[0]:.3f}-{d[2]:.3f}) | {w:.3f} | "
                  f"{fmt(w / lc if lc else None, digits=2)} | {overload_text(sheets)} | "
                  f"{underload_text(sheets)} |")

@@ -8,19 +8,21 @@ are upper references (ISO's over-predicted 50 field events by a factor of about 
                              [--analytic SWEEP.toml [--analytic-out DIR]
                               [--step SWEEP.toml [--step-out DIR]] [--crushing SWEEP.toml [--crushing-out DIR]]
                               [--solve SWEEP.toml [--solve-out DIR]]
+                              [--sheet-crushing SWEEP.toml [--sheet-crushing-out DIR]]
                               [--solve-ladder SWEEP.toml [--solve-ladder-out DIR]]
                               [--thickness-speed SWEEP.toml [--thickness-speed-out DIR]]]
 
---out is the sweep's run directory (default sweeps/<name>); finished runs count (or their kept
-records), so it can report while the sweep runs. Without --report the page is printed. --analytic adds
-the tows of the sheet cut by closed forms over their starts (studies/level_ice_analytic.py), their runs in
---analytic-out (default sweeps/<its name>); with it, --crushing adds the same tows under the crushing contact
-law, --step the crushing tows at a halved step and --solve them solved tighter, each against the tows of its
-scenario's name (studies/level_ice_against.py), all of them also in 10 s blocks (studies/level_ice_blocks.py),
---solve-ladder the crushing tows' first 45 s over a ladder of solves, who breaks the sheet on each rung
-(studies/level_ice_solve_ladder.py), and --thickness-speed the tows over ice thickness and speed with their
-figure, written beside --report (studies/level_ice_thickness_speed.py); and the page says which model of level ice,
-the lattice or the sheet cut by closed forms, lies closer to ISO 19906, criterion by criterion."""
+--out is the sweep's run directory (default sweeps/<name>); finished runs count (or their kept records), so it
+can report while the sweep runs. Without --report the page is printed. --analytic adds the tows of the sheet
+cut by closed forms over their starts (studies/level_ice_analytic.py), their runs in --analytic-out (default
+sweeps/<its name>); with it, --crushing adds the same tows under the crushing contact law, --step the crushing
+tows at a halved step, --solve them solved tighter and --sheet-crushing them crushing against the sheet's edge
+too, each against the tows of its scenario's name (studies/level_ice_against.py), all of them also in 10 s
+blocks (studies/level_ice_blocks.py), --solve-ladder the crushing tows' first 45 s over a ladder of solves,
+who breaks the sheet on each rung (studies/level_ice_solve_ladder.py), and --thickness-speed the tows over ice
+thickness and speed with their figure, written beside --report (studies/level_ice_thickness_speed.py); and the
+page says which model of level ice, the lattice or the sheet cut by closed forms, lies closer to ISO 19906,
+criterion by criterion."""
 import os
 import tomllib
 
@@ -346,6 +348,10 @@ def main(argv=None):
         ap.add_argument("--solve", help="with --analytic: a sweep file of the crushing tows solved to a tighter merit, "
                         "its scenarios named as the crushing tows (sweeps/studies/level_ice_analytic_solve.toml)")
         ap.add_argument("--solve-out", help="its run directory (default: sweeps/<its name>)")
+        ap.add_argument("--sheet-crushing", help="with --analytic: a sweep file of the crushing tows with the floes "
+                        "crushing against the sheet's edge too, its scenarios named as the crushing tows "
+                        "(sweeps/studies/level_ice_analytic_sheet_crushing.toml)")
+        ap.add_argument("--sheet-crushing-out", help="its run directory (default: sweeps/<its name>)")
         ap.add_argument("--solve-ladder", help="with --analytic: a sweep file of the crushing tows' first 45 s over a "
                         "ladder of solves (sweeps/studies/level_ice_analytic_solve_ladder.toml)")
         ap.add_argument("--solve-ladder-out", help="its run directory (default: sweeps/<its name>)")
@@ -360,11 +366,12 @@ def main(argv=None):
         return os.path.abspath(given) if given else os.path.join(spec.ROOT, "sweeps", spec.load(sweep_file)[0])
 
     def make(sweep, out, args):
-        analytic, step, crushing, solve, ts, ladder = (os.path.abspath(f) if f else None for f in (
-            args.analytic, args.step, args.crushing, args.solve, args.thickness_speed, args.solve_ladder))
-        if not analytic and (step or crushing or solve or ts or ladder):
-            raise SystemExit("--step, --crushing, --solve, --solve-ladder and --thickness-speed compare with the "
-                             "analytic tows: give --analytic too")
+        analytic, step, crushing, solve, sheet, ts, ladder = (os.path.abspath(f) if f else None for f in (
+            args.analytic, args.step, args.crushing, args.solve, args.sheet_crushing, args.thickness_speed,
+            args.solve_ladder))
+        if not analytic and (step or crushing or solve or sheet or ts or ladder):
+            raise SystemExit("--step, --crushing, --solve, --sheet-crushing, --solve-ladder and --thickness-speed "
+                             "compare with the analytic tows: give --analytic too")
         # the crushing tows first: the halved step and the tighter solve are theirs, changed
         against = []
         if crushing:
@@ -374,6 +381,9 @@ def main(argv=None):
             against.append((step, run_dir(step, args.step_out), level_ice_against.STEP, lambda name: name))
         if solve:
             against.append((solve, run_dir(solve, args.solve_out), level_ice_against.SOLVE, lambda name: name))
+        if sheet:
+            against.append((sheet, run_dir(sheet, args.sheet_crushing_out), level_ice_against.SHEET_CRUSHING,
+                            lambda name: name))
         figure = (os.path.join(os.path.dirname(os.path.abspath(args.report)), "level_ice_thickness_speed.png")
                   if ts and args.report else None)
         return page(sweep, out, args.icedem, analytic, run_dir(analytic, args.analytic_out), against, ts,

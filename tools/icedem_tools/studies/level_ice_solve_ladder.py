@@ -1,14 +1,12 @@
 """The analytic level tow's first 45 s over a ladder of contact solves, for docs/model/level_ice.md
 (scripts/level_ice_report --solve-ladder SWEEP): each finished tow of SWEEP
 (sweeps/studies/level_ice_analytic_solve_ladder.toml: frictions as scenarios, the solves as variants) with its
-step, merit, tolerance, iteration cap and hand-over, who broke the sheet (the cone's crushed zone, or a floe's push
-on the edge), its breaks below their breaking load, the longest time the sheet went without a break, its loads over
-the window and what the solve cost; and, per friction, what going from the default solve to the tightest one at the
-default's step, merit, cap and hand-over does.
-
-One start per rung: a rung changes the path from the first breaks on (the tow is chaotic), so a rung's loads are
-one draw, not a converged value; who breaks the sheet, counted over some ninety breaks, is what the ladder
-resolves."""
+step, merit, tolerance, iteration cap, hand-over and the contacts that crush, who broke the sheet (the cone's
+crushed zone, or a floe's push on the edge), its breaks below their breaking load, the longest time the sheet went
+without a break, its loads over the window and what the solve cost; and, per friction and contacts that crush, what
+going from the default solve to the tightest one at the default's step, merit, cap and hand-over does. One start
+per rung: a rung changes the path from the first breaks on (the tow is chaotic), so a rung's loads are one draw,
+not a converged value; who breaks the sheet, counted over some ninety breaks, is what the ladder resolves."""
 import dataclasses
 import os
 
@@ -27,9 +25,11 @@ class Rung:
     tolerance: float  # solver.merit_tolerance
     cap: int          # solver.method_iterations
     handover: str     # solver.handover_method
+    crushing: str     # contact.crushing_contacts: "structure", or "structure_and_sheet" (the sheet's edge too)
 
     def same_but_tolerance(self, other):
-        return (self.step, self.merit, self.cap, self.handover) == (other.step, other.merit, other.cap, other.handover)
+        return ((self.step, self.merit, self.cap, self.handover, self.crushing)
+                == (other.step, other.merit, other.cap, other.handover, other.crushing))
 
 
 def rungs(sweep, out):
@@ -37,7 +37,7 @@ def rungs(sweep, out):
     _, runs = spec.load(sweep)
     return [Rung(r, agg.load_record(r, out), float(spec.bullet_step(r)), str(spec.run_value(r, "solver.merit")),
                  float(spec.run_value(r, "solver.merit_tolerance")), int(spec.run_value(r, "solver.method_iterations")),
-                 str(spec.run_value(r, "solver.handover_method")))
+                 str(spec.run_value(r, "solver.handover_method")), str(spec.run_value(r, "contact.crushing_contacts")))
             for r in runs if execute.status(r, out).state == "done"]
 
 
@@ -46,11 +46,12 @@ def _share(part, whole):
 
 
 def tightest_against_default(found, design):
-    """Per friction, the sentence of what the tightest solve at the default's step, merit, cap and hand-over does
-    against the default (the sweep's first rung of that scenario), from the records; none where either is missing."""
+    """Per friction and contacts that crush, the sentence of what the tightest solve at the default's step, merit, cap
+    and hand-over does against the default (the sweep's first rung of that scenario and crushing), from the records;
+    none where either is missing."""
     L = []
-    for scenario in dict.fromkeys(x.run.scenario for x in found):
-        base, *rest = [x for x in found if x.run.scenario == scenario]
+    for scenario, crushing in dict.fromkeys((x.run.scenario, x.crushing) for x in found):
+        base, *rest = [x for x in found if (x.run.scenario, x.crushing) == (scenario, crushing)]
         same = [x for x in rest if x.same_but_tolerance(base)]
         if not same:
             continue
@@ -63,6 +64,7 @@ def tightest_against_default(found, design):
         mean_b, mean_t = la._value(b, "mean_fx_N"), la._value(t, "mean_fx_N")
         cap = ts.get("at_cap")
         L.append(f"{scenario}" + (f" (mu {loads['friction']:g})" if loads else "")
+                 + (f", crushing at {crushing.replace('_', ' ')}" if crushing != "structure" else "")
                  + f": from {base.merit} {base.tolerance:g} to {tight.merit} {tight.tolerance:g} at {base.step:g} s, "
                  f"the breaks by floes go from {bs['by_floe']} of {bs['breaks']} to {ts['by_floe']} of {ts['breaks']}, "
                  f"those below {agg.UNDERLOAD:g} of their load from {bs['underloaded']} to {ts['underloaded']}, the "
@@ -81,7 +83,10 @@ def section(sweep, out, design):
          "start, at each rung of a ladder of contact solves (dem/contact/merit.hpp: Siconos' merit, the default, "
          "and the impulse merit, each to a tolerance; cap: solver.method_iterations, the gradient steps an island "
          "may take; hand-over: the method an island left at the cap above its tolerance goes on with, "
-         "solver.handover_method) and at the halved step. Who broke the sheet: the cone's crushed zone, or a floe's "
+         "solver.handover_method) and at the halved step; crushing: the contacts the crushing law acts on, the "
+         "structure's, or the structure's and the held sheet's edge's (contact.crushing_contacts = "
+         "\"structure_and_sheet\", docs/model/crushing.md, \"Against the level sheet\"). "
+         "Who broke the sheet: the cone's crushed zone, or a floe's "
          "push on the edge (a piece pressed against it by the rubble between the edge and the cone, "
          "docs/model/breakage.md, \"The edge's bound in the solve\"); below: the breaks under "
          f"{agg.UNDERLOAD:g} of their breaking load (the smallest ratio in brackets); without a break: the longest "
@@ -94,10 +99,11 @@ def section(sweep, out, design):
     found = rungs(sweep, out)
     if not found:
         return L + ["No finished run yet.", ""]
-    L += ["| run | mu | step s | merit | tolerance | cap | hand-over | breaks | by floes | below (smallest) | "
+    L += ["| run | mu | step s | merit | tolerance | cap | hand-over | crushing | breaks | by floes | "
+          "below (smallest) | "
           "without a break s | mean | p99 | max 5 Hz | steps at the cap | floes' at the cap | iterations a step | "
           "real time (CPU) |",
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for x in found:
         rec = x.record
         s, sheet = rec["summary"], rec.get("sheet") or {}
@@ -110,6 +116,7 @@ def section(sweep, out, design):
         floes = "n/a" if not cap or sheet.get("by_floe") is None else f"{cap['by_floe']} of {sheet['by_floe']}"
         mu = f"{loads['friction']:g}" if loads else "n/a"
         L.append(f"| {x.run.scenario} | {mu} | {x.step:g} | {x.merit} | {x.tolerance:g} | {x.cap} | {x.handover} | "
+                 f"{x.crushing.replace('_', ' ')} | "
                  f"{sheet.get('breaks', 'n/a')} | {_share(sheet.get('by_floe'), sheet.get('breaks'))} | {below} | "
                  f"{fmt(sheet.get('longest_without_break_s'))} | {fmt(la._value(rec, 'mean_fx_N'))} | "
                  f"{fmt(la._value(rec, 'p99_fx_N'))} | {fmt(la._value(rec, la.LOWPASS))} | "
@@ -117,5 +124,6 @@ def section(sweep, out, design):
                  f"{fmt(s['sim_time_s'] / cpu if cpu else None, digits=2)} |")
     told = tightest_against_default(found, design)
     if told:
-        L += ["", "The default solve against the tightest at its step, merit, cap and hand-over: " + " ".join(told)]
+        L += ["", "The default solve against the tightest at its step, merit, cap, hand-over and crushing: "
+              + " ".join(told)]
     return L + [""]
