@@ -3,8 +3,8 @@ sweep, for docs/model/level_ice.md (scripts/level_ice_report --analytic SWEEP wi
 halved, sweeps/studies/level_ice_analytic_step.toml; --crushing CRUSHING_SWEEP, the crushing contact law,
 sweeps/studies/level_ice_analytic_crushing.toml; --solve SOLVE_SWEEP, the solve tightened,
 sweeps/studies/level_ice_analytic_solve.toml; --sheet-crushing SHEET_SWEEP, the floes crushing against the sheet's
-edge too, sweeps/studies/level_ice_analytic_sheet_crushing.toml): per scenario (friction) and criterion, each ensemble's mean
-over its starts, its step and its solve, and the change over the starts both ran.
+edge too, sweeps/studies/level_ice_analytic_sheet_crushing.toml): per scenario (friction) and criterion, each
+ensemble's mean over its starts, its step and its solve, and the change over the starts both ran.
 
 The tow is chaotic: a start at a halved step, or under another contact law, parts from the same start's tow
 within the first breaks, so the two are not one path but two draws. The change is still taken over the starts

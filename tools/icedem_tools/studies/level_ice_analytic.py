@@ -169,8 +169,10 @@ def sheet_table(configs, lengths, intro=True):
         d = [np.mean([s["piece_diameter_m"][qi + k] for s in sheets if s["piece_diameter_m"]]) for k in (-1, 0, 1)]
         w = np.mean([s["area_weighted_diameter_m"] for s in sheets if s.get("area_weighted_diameter_m")])
         by_floe = [s["by_floe"] for s in sheets if s.get("by_floe") is not None]
+        by_floe_text = f"{np.mean(by_floe):.0f}" if len(by_floe) == len(sheets) else "n/a"
         L.append(f"| {scenario} | {leave:g} | {len(sheets)} | {np.mean([s['breaks'] for s in sheets]):.0f} | "
-                 f"{f'{np.mean(by_floe):.0f}' if len(by_floe) == len(sheets) else 'n/a'} | {x:.3f} | {fmt(x / lc if lc else None, digits=2)} | {fmt(x / h if h else None, digits=1)} | "
+                 f"{by_floe_text} | {x:.3f} | {fmt(x / lc if lc else None, digits=2)} | "
+                 f"{fmt(x / h if h else None, digits=1)} | "
                  f"{np.mean([s['pieces'] for s in sheets]):.0f} | {d[1]:.3f} ({d[0]:.3f}-{d[2]:.3f}) | {w:.3f} | "
                  f"{fmt(w / lc if lc else None, digits=2)} | {overload_text(sheets)} | "
                  f"{underload_text(sheets)} |")
