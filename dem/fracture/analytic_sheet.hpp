@@ -3,7 +3,7 @@
 // of elements (docs/model/breakage.md, "Level ice cut by closed forms").
 //
 // The sheet is held where it lies, as the lattice's sheet is beyond its radius: an obstacle for the floes in
-// Bullet, as fixed convex prisms (kBoundary, like the mother ice): the sheet within each square cell of
+// Bullet, as fixed convex prisms (kHeldIce, world.hpp): the sheet within each square cell of
 // kTileSize, as its fewest convex parts. Each Bullet step, after the load cell has read the contacts:
 //   1. the hull's crushed zones at the sheet's edge and their loads (sheet_contact.hpp); the crushing force
 //      is an impulse on the structure that no Bullet contact carries, added to the load cell;
